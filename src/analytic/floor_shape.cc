@@ -1,0 +1,74 @@
+#include <analytic/floor_shape.h>
+
+#include <common/input_error.h>
+
+#include <cmath>
+#include <string>
+
+namespace FloorBlock
+{
+  namespace Analytic
+  {
+    namespace
+    {
+      void
+      require_positive(const double       value,
+                       const std::string &name,
+                       const std::string &units)
+      {
+        if (!(std::isfinite(value) && value > 0.))
+          throw InputError(name, std::to_string(value), "> 0 " + units);
+      }
+    } // namespace
+
+    std::vector<double>
+    parabolic_inclinations(const std::size_t n_blocks,
+                           const double      block_width,
+                           const double      curvature_length)
+    {
+      if (n_blocks == 0)
+        throw InputError("Number of blocks", "0", ">= 1");
+      require_positive(block_width, "Block width", "m");
+      require_positive(curvature_length, "Floor curvature length k", "m");
+      std::vector<double> inclinations;
+      for (std::size_t block = 0; block < n_blocks; ++block)
+        {
+          // Whole block widths between block (index) and the face.
+          const double blocks_from_face =
+            static_cast<double>(n_blocks - 1 - block);
+          inclinations.push_back(std::atan(
+            (2. * blocks_from_face + 1.) * block_width / curvature_length));
+        }
+      return inclinations;
+    }
+
+    double
+    joint_floor_lift(const double inclination_away_side,
+                     const double inclination_face_side,
+                     const double block_width)
+    {
+      return block_width *
+             std::tan(inclination_away_side - inclination_face_side);
+    }
+
+    double
+    youngs_modulus_from_bulk_shear(const double bulk_modulus,
+                                   const double shear_modulus)
+    {
+      require_positive(bulk_modulus, "Bulk modulus", "Pa");
+      require_positive(shear_modulus, "Shear modulus", "Pa");
+      return 9. * bulk_modulus * shear_modulus /
+             (3. * bulk_modulus + shear_modulus);
+    }
+
+    double
+    poisson_ratio_from_bulk_shear(const double bulk_modulus,
+                                  const double shear_modulus)
+    {
+      require_positive(bulk_modulus, "Bulk modulus", "Pa");
+      require_positive(shear_modulus, "Shear modulus", "Pa");
+      return (3. * bulk_modulus - 2. * shear_modulus) /
+             (2. * (3. * bulk_modulus + shear_modulus));
+    }
+  } // namespace Analytic
+} // namespace FloorBlock
