@@ -1,0 +1,39 @@
+#pragma once
+
+#include <parameters/scenario_parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock::App
+{
+  /** What every subcommand takes from the command line. */
+  struct CommandOptions
+  {
+    std::string              scene_path = "params/default.prm";
+    std::vector<std::string> overrides;        ///< "Subsection/Entry=value"
+    std::string              output_directory; ///< empty: results/<scene>/
+    bool                     print_ids = false; ///< mesh: print the id scheme
+    bool                     with_fem  = false; ///< sweep: also run the FEM
+  };
+
+  /** @brief Reads the scene with its overrides (throws InputError). */
+  Parameters::ScenarioParameters
+  read_scene(const CommandOptions &options);
+
+  /** @brief --output if given, otherwise results/<scene name>. */
+  std::string
+  output_directory(const CommandOptions &                options,
+                   const Parameters::ScenarioParameters &scene);
+
+  int
+  print_parameters_command(const CommandOptions &options);
+  int
+  analytic_command(const CommandOptions &options);
+  int
+  sweep_command(const CommandOptions &options);
+  int
+  mesh_command(const CommandOptions &options);
+  int
+  run_command(const CommandOptions &options);
+} // namespace FloorBlock::App

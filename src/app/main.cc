@@ -1,0 +1,112 @@
+#include <app/command_options.h>
+#include <common/input_error.h>
+#include <common/interrupt.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <iostream>
+#include <map>
+
+using namespace FloorBlock;
+
+namespace
+{
+  using Command = std::function<int(const App::CommandOptions &)>;
+
+  /** Adds one subcommand with the options every subcommand shares. */
+  CLI::App *
+  add_subcommand(CLI::App &               cli,
+                 const std::string &      name,
+                 const std::string &      description,
+                 App::CommandOptions &    options)
+  {
+    CLI::App *sub = cli.add_subcommand(name, description);
+    sub->add_option("scene", options.scene_path,
+                    "Scene parameter file (.prm or .json)")
+      ->capture_default_str();
+    sub->add_option("--set", options.overrides,
+                    "Override a parameter: \"Subsection/Entry name=value\" "
+                    "(repeatable)")
+      ->allow_extra_args(false);
+    sub->add_option("--output", options.output_directory,
+                    "Output folder (default: results/<scene>/)");
+    return sub;
+  }
+
+  int
+  run_guarded(const Command &command, const App::CommandOptions &options)
+  {
+    try
+      {
+        return command(options);
+      }
+    catch (const InputError &error)
+      {
+        std::cerr << "floorblock: error: " << error.what() << std::endl;
+        return exit_code::bad_input;
+      }
+    catch (const Interrupted &)
+      {
+        std::cerr << "floorblock: interrupted; finished results were kept, "
+                     "the unfinished one was discarded"
+                  << std::endl;
+        return exit_code::interrupted;
+      }
+    catch (const std::exception &error)
+      {
+        std::cerr << "floorblock: failed: " << error.what() << std::endl;
+        return exit_code::failure;
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  install_interrupt_handlers();
+
+  CLI::App cli{"FloorBlock: FEM cross-check of the multiple sliding block "
+               "model of longwall floor failure"};
+  cli.require_subcommand(1);
+  App::CommandOptions options;
+
+  const std::map<std::string, std::pair<std::string, Command>> commands = {
+    {"print-parameters",
+     {"Print every parameter with default, range, unit and meaning",
+      App::print_parameters_command}},
+    {"analytic",
+     {"Evaluate every closed-form case of the chapter for a scene",
+      App::analytic_command}},
+    {"sweep",
+     {"Evaluate the chapter's figure grids (6.5-6.7, 6.10/6.11)",
+      App::sweep_command}},
+    {"mesh", {"Mesh the block assembly with Gmsh", App::mesh_command}},
+    {"run", {"The main job: mesh, solve, compare", App::run_command}}};
+
+  std::map<CLI::App *, Command> dispatch;
+  for (const auto &[name, entry] : commands)
+    dispatch[add_subcommand(cli, name, entry.first, options)] = entry.second;
+  cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
+                                       "Print the material/boundary id scheme");
+  cli.get_subcommand("sweep")->add_flag("--fem", options.with_fem,
+                                        "Also run the FEM for every case");
+
+  try
+    {
+      cli.parse(argc, argv);
+    }
+  catch (const CLI::ParseError &error)
+    {
+      const int code = cli.exit(error);
+      return code == 0 ? exit_code::success : exit_code::bad_input;
+    }
+
+  for (const auto &[sub, command] : dispatch)
+    if (sub->parsed())
+      return run_guarded(command, options);
+  return exit_code::bad_input;
+}

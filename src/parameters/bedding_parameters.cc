@@ -1,0 +1,39 @@
+#include <common/units.h>
+#include <parameters/sections.h>
+
+namespace FloorBlock::Parameters
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Selection;
+
+  void
+  BeddingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Bedding");
+    prm.declare_entry("Shape", "planar", Selection("planar|parabolic"),
+                      "Shape of the failed bedding plane: planar (constant "
+                      "inclination) or parabolic y = x^2/k with x measured "
+                      "from the face. Units: none.");
+    prm.declare_entry("Inclination", "10", Double(-60, 60),
+                      "Inclination alpha of a planar bedding, positive when the "
+                      "bedding rises away from the face (the chapter's sense: "
+                      "the base pushes the blocks toward the face). "
+                      "Units: degrees.");
+    prm.declare_entry("Curvature", "400", Double(1, 1.0e6),
+                      "Parameter k of a parabolic bedding y = x^2/k (the "
+                      "chapter uses 400, 200, 100, 50). Units: m.");
+    prm.leave_subsection();
+  }
+
+  void
+  BeddingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Bedding");
+    shape = prm.get("Shape") == "planar" ? BeddingShape::planar :
+                                           BeddingShape::parabolic;
+    inclination = Units::degrees_to_radians(prm.get_double("Inclination"));
+    curvature   = prm.get_double("Curvature");
+    prm.leave_subsection();
+  }
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,66 @@
+#include <common/input_error.h>
+#include <common/units.h>
+#include <parameters/sections.h>
+
+#include <set>
+
+namespace FloorBlock::Parameters
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
+
+  namespace
+  {
+    constexpr unsigned int largest_block_count = 99;
+  }
+
+  void
+  LoadingParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    prm.declare_entry("Gravity", "9.81", Double(0, 100),
+                      "Gravitational acceleration acting on the rock. "
+                      "Units: m/s^2.");
+    prm.declare_entry("Support load", "650", Double(0, 1.0e5),
+                      "Total load of one powered support (chapter: 650 t), "
+                      "spread evenly over the loaded blocks and over the "
+                      "support width b. Converted with standard gravity "
+                      "9.80665 m/s^2. Units: t (tonnes-force).");
+    prm.declare_entry("Loaded blocks", "4,5,6",
+                      List(Integer(1, largest_block_count), 0,
+                           largest_block_count, ","),
+                      "Blocks under the support, counted from the face "
+                      "(1 = the block next to the face block); comma-separated, "
+                      "may be empty. Units: none.");
+    prm.declare_entry("Floor lift", "0.05", Double(0, 10),
+                      "Floor lift y: how far the bedding is moved up (FEM) "
+                      "and the y of Eq. 6.51. Units: m.");
+    prm.leave_subsection();
+  }
+
+  void
+  LoadingParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Loading");
+    gravity = prm.get_double("Gravity");
+    support_load =
+      Units::tonnes_force_to_newtons(prm.get_double("Support load"));
+    const std::string loaded = prm.get("Loaded blocks");
+    floor_lift               = prm.get_double("Floor lift");
+    prm.leave_subsection();
+
+    loaded_blocks_from_face.clear();
+    std::set<unsigned int> seen;
+    for (const std::string &entry :
+         dealii::Utilities::split_string_list(loaded, ','))
+      {
+        const unsigned int block = dealii::Utilities::string_to_int(entry);
+        if (!seen.insert(block).second)
+          throw InputError("Loading/Loaded blocks", loaded,
+                           "each block may appear only once");
+        loaded_blocks_from_face.push_back(block);
+      }
+  }
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,44 @@
+#include <common/input_error.h>
+#include <parameters/sections.h>
+
+namespace FloorBlock::Parameters
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Bool;
+  using dealii::Patterns::Double;
+
+  void
+  MeshParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Corner size", "0.02", Double(1.0e-5, 10),
+                      "Target element size at the block corners, where "
+                      "contact concentrates. Units: m.");
+    prm.declare_entry("Far size", "0.25", Double(1.0e-4, 100),
+                      "Element size far from the corners. Units: m.");
+    prm.declare_entry("Growth rate", "1.3", Double(1.01, 3),
+                      "Ratio between the sizes of neighbouring elements on "
+                      "the way from a corner to the far field. Units: none.");
+    prm.declare_entry("Matching joints", "true", Bool(),
+                      "Whether both sides of every joint get the same nodes "
+                      "(node-to-node contact); false allows non-matching "
+                      "sides. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void
+  MeshParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    corner_size     = prm.get_double("Corner size");
+    far_size        = prm.get_double("Far size");
+    growth_rate     = prm.get_double("Growth rate");
+    matching_joints = prm.get_bool("Matching joints");
+    prm.leave_subsection();
+
+    if (corner_size > far_size)
+      throw InputError("Mesh/Corner size", std::to_string(corner_size),
+                       "must not exceed Mesh/Far size = " +
+                         std::to_string(far_size) + " m");
+  }
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,141 @@
+#include <common/input_error.h>
+#include <parameters/parameter_error_text.h>
+#include <parameters/scenario_parameters.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace FloorBlock::Parameters
+{
+  using dealii::ParameterHandler;
+
+  void
+  ScenarioParameters::declare_parameters(ParameterHandler &prm)
+  {
+    GeometryParameters::declare_parameters(prm);
+    BeddingParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    JointParameters::declare_parameters(prm);
+    LoadingParameters::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
+  }
+
+  void
+  ScenarioParameters::parse_parameters(ParameterHandler &prm)
+  {
+    geometry.parse_parameters(prm);
+    bedding.parse_parameters(prm);
+    material.parse_parameters(prm);
+    joints.parse_parameters(prm);
+    loading.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+
+    for (const unsigned int from_face : loading.loaded_blocks_from_face)
+      if (from_face > geometry.n_blocks)
+        throw InputError("Loading/Loaded blocks",
+                         std::to_string(from_face),
+                         "each loaded block must be between 1 and "
+                         "Geometry/Number of blocks = " +
+                           std::to_string(geometry.n_blocks));
+  }
+
+  std::vector<unsigned int>
+  ScenarioParameters::loaded_blocks() const
+  {
+    // Counted from the face: 1 is block n, n is block 1.
+    std::vector<unsigned int> blocks;
+    for (const unsigned int from_face : loading.loaded_blocks_from_face)
+      blocks.push_back(geometry.n_blocks + 1 - from_face);
+    return blocks;
+  }
+
+  namespace
+  {
+    std::string
+    read_text(const std::string &path)
+    {
+      if (!std::filesystem::is_regular_file(path))
+        throw InputError("scene file '" + path +
+                         "' does not exist or is not a regular file");
+      std::ifstream in(path);
+      std::stringstream text;
+      text << in.rdbuf();
+      if (!in)
+        throw InputError("scene file '" + path + "' cannot be read");
+      return text.str();
+    }
+
+    /// Splits "Joints/Bedding friction angle=20" into path and value and sets it.
+    void
+    apply_override(ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto equals = assignment.find('=');
+      const auto slash  = assignment.rfind('/', equals);
+      if (equals == std::string::npos || slash == std::string::npos)
+        throw InputError("--set '" + assignment +
+                         "': expected \"Subsection/Entry name=value\"");
+
+      const std::string path  = dealii::Utilities::trim(assignment.substr(0, equals));
+      const std::string value = dealii::Utilities::trim(assignment.substr(equals + 1));
+      const std::vector<std::string> levels =
+        dealii::Utilities::split_string_list(path, '/');
+
+      for (unsigned int level = 0; level + 1 < levels.size(); ++level)
+        prm.enter_subsection(levels[level]);
+      try
+        {
+          prm.set(levels.back(), value);
+        }
+      catch (const dealii::ExceptionBase &error)
+        {
+          throw InputError("--set '" + assignment +
+                           "': " + parameter_error_text(error, path, value));
+        }
+      for (unsigned int level = 0; level + 1 < levels.size(); ++level)
+        prm.leave_subsection();
+    }
+  } // namespace
+
+  ScenarioParameters
+  read_scenario(const std::string &             path,
+                const std::vector<std::string> &overrides)
+  {
+    ParameterHandler prm;
+    ScenarioParameters::declare_parameters(prm);
+
+    ScenarioParameters scenario;
+    scenario.original_text = read_text(path);
+    scenario.scene_name    = std::filesystem::path(path).stem().string();
+
+    try
+      {
+        // Files name their format by extension (.prm, .json, .xml).
+        prm.parse_input(path, "", false, true);
+      }
+    catch (const dealii::ExceptionBase &error)
+      {
+        throw InputError(path + ": " + parameter_error_text(error, "", ""));
+      }
+
+    for (const std::string &assignment : overrides)
+      apply_override(prm, assignment);
+
+    scenario.parse_parameters(prm);
+
+    std::ostringstream expanded;
+    prm.print_parameters(expanded, ParameterHandler::ShortPRM);
+    scenario.expanded_text = expanded.str();
+    return scenario;
+  }
+
+  std::string
+  describe_all_parameters()
+  {
+    ParameterHandler prm;
+    ScenarioParameters::declare_parameters(prm);
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::PRM);
+    return text.str();
+  }
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <parameters/sections.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock::Parameters
+{
+  /**
+   * @brief Every subsection of a scene file, parsed into SI values.
+   *
+   * Aggregated as members (not by inheritance) so each subsection stays an
+   * independent, testable value.
+   */
+  struct ScenarioParameters
+  {
+    GeometryParameters geometry;
+    BeddingParameters  bedding;
+    MaterialParameters material;
+    JointParameters    joints;
+    LoadingParameters  loading;
+    MeshParameters     mesh;
+
+    /// Name of the scene: the file's stem ("default" for params/default.prm).
+    std::string scene_name;
+    /// The input exactly as read, echoed into results/ as original.prm.
+    std::string original_text;
+    /// Every parameter after overrides, echoed into results/ as parameters.prm.
+    std::string expanded_text;
+
+    /** Declares every subsection's entries. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Reads every subsection and runs the checks that span subsections. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief The block numbers (chapter numbering: 1 = free end, n = next to
+     * the face block) of the loaded blocks.
+     */
+    std::vector<unsigned int>
+    loaded_blocks() const;
+  };
+
+  /**
+   * @brief Reads a scene file (.prm or .json) and applies command-line
+   * overrides of the form "Subsection/Entry name=value".
+   *
+   * @throws InputError naming the file and line where known, the parameter,
+   * the value and what is allowed: for a missing or unreadable file, an
+   * unknown name, a value outside its pattern, or an impossible scene.
+   */
+  ScenarioParameters
+  read_scenario(const std::string &             path,
+                const std::vector<std::string> &overrides);
+
+  /** @brief Every parameter with default, pattern, units and meaning. */
+  std::string
+  describe_all_parameters();
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,125 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+/**
+ * One struct per subsection of a scene file. Each struct declares its entries
+ * (with bounded patterns and "Units: ..." in the documentation) and parses
+ * them, converting to SI once, here: angles to radians, tonnes-force to
+ * newtons. Solver and analytic code receive these structs, never the
+ * ParameterHandler.
+ */
+namespace FloorBlock::Parameters
+{
+  /** Subsection "Geometry": the block assembly. */
+  struct GeometryParameters
+  {
+    unsigned int n_blocks;
+    double       block_width;             ///< L (m), perpendicular to the face
+    double       block_height;            ///< H (m)
+    double       support_width;           ///< b (m), along the face
+    double       face_block_width;        ///< m
+    double       base_thickness;          ///< m, the bedding layer below the blocks
+    double       corner_rounding_radius;  ///< m, 0 = sharp corners
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  enum class BeddingShape
+  {
+    planar,
+    parabolic
+  };
+
+  /** Subsection "Bedding": the failed bedding plane the blocks slide on. */
+  struct BeddingParameters
+  {
+    BeddingShape shape;
+    double       inclination; ///< rad, planar; positive when rising away from the face
+    double       curvature;   ///< k (m) in y = x^2/k, parabolic
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection "Material": intact rock of blocks, face block and base. */
+  struct MaterialParameters
+  {
+    double bulk_modulus;  ///< K (Pa)
+    double shear_modulus; ///< G (Pa)
+    double density;       ///< kg/m^3
+
+    /** E = 9KG/(3K+G) (Pa). */
+    double
+    youngs_modulus() const;
+    /** nu = (3K-2G)/(2(3K+G)). */
+    double
+    poissons_ratio() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  enum class JointLaw
+  {
+    compliant,
+    rigid
+  };
+
+  /** Subsection "Joints": vertical fractures and the bedding plane. */
+  struct JointParameters
+  {
+    double   bedding_friction_angle;  ///< phi_h (rad)
+    double   vertical_friction_angle; ///< phi_v (rad)
+    double   cohesion;                ///< Pa
+    double   tensile_strength;        ///< Pa
+    double   normal_stiffness;        ///< kn (Pa/m)
+    double   shear_stiffness;         ///< ks (Pa/m)
+    JointLaw law;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection "Loading". */
+  struct LoadingParameters
+  {
+    double gravity;      ///< m/s^2
+    double support_load; ///< N, total load of one powered support
+    /// Loaded blocks counted from the face (1 = next to the face block), as
+    /// the user wrote them; Scene converts to the chapter's numbering.
+    std::vector<unsigned int> loaded_blocks_from_face;
+    double                    floor_lift; ///< m
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection "Mesh": element sizes for the Gmsh block assembly. */
+  struct MeshParameters
+  {
+    double corner_size;  ///< m, target element size at joint corners
+    double far_size;     ///< m, element size far from the corners
+    double growth_rate;  ///< size ratio between neighbouring elements, > 1
+    bool   matching_joints;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,153 @@
+#include <common/input_error.h>
+#include <common/units.h>
+#include <parameters/scenario_parameters.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace FloorBlock;
+using Parameters::read_scenario;
+
+namespace
+{
+  const std::string default_scene =
+    std::string(FLOORBLOCK_SOURCE_DIR) + "/params/default.prm";
+
+  std::string
+  write_scene(const std::string &name, const std::string &text)
+  {
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("floorblock_" + std::to_string(::getpid()) + "_" + name);
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  /// The InputError message for a scene read, or "" if it was accepted.
+  std::string
+  error_of(const std::string &path, const std::vector<std::string> &overrides)
+  {
+    try
+      {
+        read_scenario(path, overrides);
+      }
+    catch (const InputError &error)
+      {
+        return error.what();
+      }
+    return "";
+  }
+} // namespace
+
+// The tool shall declare every parameter name that other scripts depend on.
+TEST(ScenarioParameters, DeclaresEveryRequiredName)
+{
+  const std::string all = Parameters::describe_all_parameters();
+  for (const char *name :
+       {"Number of blocks", "Block width", "Block height", "Support width",
+        "Shape", "Inclination", "Curvature", "Bulk modulus", "Shear modulus",
+        "Density", "Bedding friction angle", "Vertical friction angle",
+        "Cohesion", "Normal stiffness", "Shear stiffness", "Gravity",
+        "Support load", "Loaded blocks", "Floor lift",
+        "Corner rounding radius", "Corner size", "Far size", "Growth rate"})
+    EXPECT_NE(all.find(std::string("set ") + name), std::string::npos) << name;
+  for (const char *section :
+       {"Geometry", "Bedding", "Material", "Joints", "Loading", "Mesh"})
+    EXPECT_NE(all.find(std::string("subsection ") + section), std::string::npos);
+}
+
+// The tool shall read the chapter's UDEC scene into SI units.
+TEST(ScenarioParameters, DefaultSceneInSiUnits)
+{
+  const auto scene = read_scenario(default_scene, {});
+  EXPECT_EQ(scene.scene_name, "default");
+  EXPECT_EQ(scene.geometry.n_blocks, 6u);
+  EXPECT_DOUBLE_EQ(scene.geometry.block_width, 1.0);
+  EXPECT_DOUBLE_EQ(scene.geometry.block_height, 2.0);
+  EXPECT_DOUBLE_EQ(scene.joints.bedding_friction_angle,
+                   Units::degrees_to_radians(30.0));
+  EXPECT_DOUBLE_EQ(scene.loading.support_load, 650.0 * 1000.0 * 9.80665);
+  // 4th, 5th, 6th from the face are blocks 3, 2, 1 in the chapter's numbering.
+  EXPECT_EQ(scene.loaded_blocks(), (std::vector<unsigned int>{3, 2, 1}));
+  // E = 9KG/(3K+G) for K = 9 GPa, G = 6.7 GPa, by hand: 542.7e18/33.7e9.
+  EXPECT_NEAR(scene.material.youngs_modulus(), 16.1038575667e9, 1e3);
+  EXPECT_NEAR(scene.material.poissons_ratio(), 0.2017804154, 1e-9);
+}
+
+// The tool shall let a command-line override change the parsed value.
+TEST(ScenarioParameters, OverrideChangesValue)
+{
+  const auto scene =
+    read_scenario(default_scene, {"Joints/Bedding friction angle=20",
+                                  "Geometry/Number of blocks = 7"});
+  EXPECT_DOUBLE_EQ(scene.joints.bedding_friction_angle,
+                   Units::degrees_to_radians(20.0));
+  EXPECT_EQ(scene.geometry.n_blocks, 7u);
+  EXPECT_NE(scene.expanded_text.find("Bedding friction angle = 20"),
+            std::string::npos);
+}
+
+// The tool shall name the parameter, the value and the range of a bad override.
+TEST(ScenarioParameters, OutOfRangeOverrideNamesParameterValueAndRange)
+{
+  const std::string message =
+    error_of(default_scene, {"Joints/Bedding friction angle=95"});
+  EXPECT_NE(message.find("Joints/Bedding friction angle"), std::string::npos);
+  EXPECT_NE(message.find("95"), std::string::npos);
+  EXPECT_NE(message.find("89.9"), std::string::npos) << message;
+}
+
+// The tool shall refuse a negative size in a file, naming file line and range.
+TEST(ScenarioParameters, NegativeWidthInFileIsRefusedWithLine)
+{
+  const std::string path = write_scene(
+    "negative.prm", "subsection Geometry\n  set Block width = -1\nend\n");
+  const std::string message = error_of(path, {});
+  EXPECT_NE(message.find("Block width"), std::string::npos) << message;
+  EXPECT_NE(message.find("-1"), std::string::npos);
+  EXPECT_NE(message.find("Line <2>"), std::string::npos) << message;
+  std::filesystem::remove(path);
+}
+
+// The tool shall refuse unknown parameter names, in files and overrides.
+TEST(ScenarioParameters, UnknownNamesAreRefused)
+{
+  const std::string path = write_scene(
+    "unknown.prm", "subsection Joints\n  set Bedding fricton angle = 20\nend\n");
+  EXPECT_NE(error_of(path, {}).find("Bedding fricton angle"), std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Joints/Frobnication=1"})
+              .find("Frobnication"),
+            std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"no equals sign"}).find("expected"),
+            std::string::npos);
+  std::filesystem::remove(path);
+}
+
+// The tool shall refuse a missing file and scenes that contradict themselves.
+TEST(ScenarioParameters, MissingFileAndInconsistentScenes)
+{
+  EXPECT_NE(error_of("/nonexistent/scene.prm", {}).find("does not exist"),
+            std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Geometry/Number of blocks=2"})
+              .find("Loading/Loaded blocks"),
+            std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Loading/Loaded blocks=1,1"})
+              .find("only once"),
+            std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Geometry/Corner rounding radius=0.3"})
+              .find("quarter"),
+            std::string::npos);
+}
+
+// The tool shall accept scenes written as JSON too.
+TEST(ScenarioParameters, JsonSceneIsAccepted)
+{
+  const std::string path = write_scene(
+    "scene.json",
+    R"({"Geometry": {"Number of blocks": "4"}, "Loading": {"Loaded blocks": "1,2"}})");
+  const auto scene = read_scenario(path, {});
+  EXPECT_EQ(scene.geometry.n_blocks, 4u);
+  EXPECT_EQ(scene.loaded_blocks(), (std::vector<unsigned int>{4, 3}));
+  std::filesystem::remove(path);
+}
