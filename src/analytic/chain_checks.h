@@ -9,6 +9,13 @@ namespace FloorBlock
     namespace Internal
     {
       /**
+       * Denominators (1 - a c, 1 - tan phi_h tan phi_v, (L - H tan phi_h)/L)
+       * at or below this dimensionless value count as vanished: closer to
+       * zero, Q exceeds 1e12 times the block weight and carries no meaning.
+       */
+      constexpr double singular_denominator = 1e-12;
+
+      /**
        * @brief A result with empty vectors and @p status, for a closed form
        * that has no finite value.
        * @param[in] block_number Chapter (1-based) number of the block where

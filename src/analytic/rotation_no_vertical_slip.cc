@@ -34,7 +34,8 @@ namespace FloorBlock
       // Lever of N_i minus lever of the base friction about the top corner.
       const double rotation_denominator =
         chain.block_width - chain.block_height * tan_bedding;
-      if (rotation_denominator <= 0.)
+      if (rotation_denominator <=
+          Internal::singular_denominator * chain.block_width)
         return Internal::no_finite_answer(
           Status::rotation_denominator_nonpositive, 1);
 

@@ -35,7 +35,7 @@ namespace FloorBlock
       const double tan_bedding  = std::tan(chain.bedding_friction);
       const double tan_vertical = std::tan(chain.vertical_friction);
       const double locking      = 1. - tan_bedding * tan_vertical; // 6.41
-      if (locking <= 0.)
+      if (locking <= Internal::singular_denominator)
         return Internal::no_finite_answer(Status::self_locking, 1);
 
       const double width  = chain.block_width;

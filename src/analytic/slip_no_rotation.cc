@@ -32,7 +32,7 @@ namespace FloorBlock
           // 6.5 written as a/(1 - a c) rather than 1/(1/a - c): finite at
           // a = 0 (alpha = -phi_h), singular only at self-locking.
           const double locking = 1. - a * c;
-          if (locking <= 0.)
+          if (locking <= Internal::singular_denominator)
             return Internal::no_finite_answer(Status::self_locking, block + 1);
 
           const double increment = vertical_load * cos_alpha * a / locking;
