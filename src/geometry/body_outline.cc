@@ -1,0 +1,457 @@
+#include <common/input_error.h>
+
+#include <geometry/bedding_profile.h>
+#include <geometry/body_outline.h>
+#include <geometry/ids.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace FloorBlock::Geometry
+{
+  namespace
+  {
+    /**
+     * A block corner: where the vertical side and the bedding-following
+     * curve (bottom or top) meet, possibly replaced by a fillet arc tangent
+     * to both. Without rounding, side_point == curve_point is the corner.
+     */
+    struct Corner
+    {
+      Point2 side_point;
+      Point2 curve_point;
+      Point2 centre;
+      bool   rounded;
+    };
+
+    /** The four corners of one body, as seen from inside it. */
+    struct BodyCorners
+    {
+      Corner bottom_left;
+      Corner bottom_right;
+      Corner top_right;
+      Corner top_left;
+    };
+
+    /** Horizontal extent and ids of one block or of the face block. */
+    struct BlockFrame
+    {
+      double                     x_left;
+      double                     x_right;
+      dealii::types::material_id material_id;
+      dealii::types::boundary_id bottom_id;
+      dealii::types::boundary_id top_id;
+      dealii::types::boundary_id left_id;
+      dealii::types::boundary_id right_id;
+    };
+
+    Point2
+    point_on(const BeddingProfile &profile, const double x, const double shift)
+    {
+      return {x, profile.height(x) + shift};
+    }
+
+    /**
+     * Fillet of radius r in the corner between the vertical line x = x_side
+     * and the curve y = profile(x) + shift. The body lies towards
+     * inward_x (+1: x > x_side) and inward_y (+1: above the curve).
+     * The circle centre is (x_side + inward_x r, .) and, seen from the
+     * tangent point x_t on the curve, lies r along the inward unit normal
+     * inward_y (-y', 1)/sqrt(1 + y'^2). Equating the x components gives
+     * f(x_t) = x_t - inward_y r s(x_t) - x_side - inward_x r = 0 with
+     * s = y'/sqrt(1 + y'^2), |s| < 1, so f changes sign on
+     * [x_side, x_side + 2 r inward_x]: bisection finds x_t to round-off.
+     */
+    Corner
+    corner(const BeddingProfile &profile,
+           const double          x_side,
+           const double          inward_x,
+           const double          inward_y,
+           const double          shift,
+           const double          radius)
+    {
+      const Point2 sharp = point_on(profile, x_side, shift);
+      if (radius == 0.0)
+        return {sharp, sharp, sharp, false};
+
+      const auto sine_of_slope = [&](const double x) {
+        const double slope = profile.slope(x);
+        return slope / std::sqrt(1.0 + slope * slope);
+      };
+      const auto mismatch = [&](const double x) {
+        return x - inward_y * radius * sine_of_slope(x) - x_side -
+               inward_x * radius;
+      };
+      // 200 halvings shrink the bracket far below one ulp of x.
+      constexpr unsigned int max_bisections = 200;
+      double toward_side = x_side;
+      double away        = x_side + 2.0 * radius * inward_x;
+      for (unsigned int step = 0; step < max_bisections; ++step)
+        {
+          const double middle = (toward_side + away) / 2.0;
+          if (middle == toward_side || middle == away)
+            break;
+          if ((mismatch(middle) > 0.0) == (inward_x > 0.0))
+            away = middle;
+          else
+            toward_side = middle;
+        }
+      const double x_tangent = (toward_side + away) / 2.0;
+      const double slope     = profile.slope(x_tangent);
+      const double centre_y  = profile.height(x_tangent) + shift +
+                              inward_y * radius / std::sqrt(1.0 + slope * slope);
+      return {{x_side, centre_y},
+              point_on(profile, x_tangent, shift),
+              {x_side + inward_x * radius, centre_y},
+              true};
+    }
+
+    BodyCorners
+    body_corners(const BeddingProfile &profile,
+                 const BlockFrame     &frame,
+                 const double          height,
+                 const double          radius)
+    {
+      return {corner(profile, frame.x_left, +1.0, +1.0, 0.0, radius),
+              corner(profile, frame.x_right, -1.0, +1.0, 0.0, radius),
+              corner(profile, frame.x_right, -1.0, -1.0, height, radius),
+              corner(profile, frame.x_left, +1.0, -1.0, height, radius)};
+    }
+
+    Segment
+    curve_piece(const BeddingProfile            &profile,
+                const double                      x_start,
+                const double                      x_end,
+                const double                      shift,
+                const dealii::types::boundary_id id)
+    {
+      const bool straight = profile.is_straight(x_start, x_end);
+      return {straight ? SegmentKind::line : SegmentKind::quadratic,
+              point_on(profile, x_start, shift),
+              point_on(profile, x_end, shift),
+              {(x_start + x_end) / 2.0,
+               profile.bezier_control_height(x_start, x_end, shift)},
+              id};
+    }
+
+    void
+    add_fillet(const Corner                    &corner,
+               const bool                        from_side,
+               const dealii::types::boundary_id id,
+               std::vector<Segment>             &segments)
+    {
+      if (!corner.rounded)
+        return;
+      segments.push_back({SegmentKind::arc,
+                          from_side ? corner.side_point : corner.curve_point,
+                          from_side ? corner.curve_point : corner.side_point,
+                          corner.centre,
+                          id});
+    }
+
+    /**
+     * Vertical segments at x from y_start to y_end, split at the given
+     * heights that lie strictly between: the ends of the neighbour's
+     * straight side, so that the common part is one segment on both sides.
+     */
+    void
+    add_vertical_side(const double                      x,
+                      const double                      y_start,
+                      const double                      y_end,
+                      std::vector<double>               breaks,
+                      const dealii::types::boundary_id id,
+                      std::vector<Segment>             &segments)
+    {
+      const double y_low  = std::min(y_start, y_end);
+      const double y_high = std::max(y_start, y_end);
+      breaks.erase(std::remove_if(breaks.begin(),
+                                  breaks.end(),
+                                  [&](const double y) {
+                                    return !(y > y_low && y < y_high);
+                                  }),
+                   breaks.end());
+      std::sort(breaks.begin(), breaks.end());
+      if (y_start > y_end)
+        std::reverse(breaks.begin(), breaks.end());
+      double y_previous = y_start;
+      for (const double y : breaks)
+        {
+          segments.push_back({SegmentKind::line,
+                              {x, y_previous},
+                              {x, y},
+                              {x, y},
+                              id});
+          y_previous = y;
+        }
+      segments.push_back(
+        {SegmentKind::line, {x, y_previous}, {x, y_end}, {x, y_end}, id});
+    }
+
+    [[noreturn]] void
+    refuse_rounding(const AssemblyDescription &description,
+                    const std::string         &where)
+    {
+      std::ostringstream value;
+      value << description.corner_rounding_radius;
+      throw InputError("Geometry/Corner rounding radius",
+                       value.str() + " m",
+                       "the corner fillets do not fit " + where +
+                         "; use 0 (sharp) or a radius well below half the "
+                         "smallest block side (units: m)");
+    }
+
+    std::vector<BlockFrame>
+    block_frames(const AssemblyDescription &description)
+    {
+      const unsigned int n_blocks = description.n_blocks;
+      const double       width    = description.block_width;
+      std::vector<BlockFrame> frames;
+      for (unsigned int block = 1; block <= n_blocks; ++block)
+        {
+          const double x_left = (n_blocks - block) * width;
+          frames.push_back(
+            {x_left,
+             (n_blocks - block + 1) * width,
+             Ids::block_material(block),
+             Ids::bedding_block_side(block),
+             Ids::floor_surface(block),
+             Ids::vertical_joint_free_side(block),
+             block == 1 ? Ids::free_side_of_block_1 :
+                          Ids::vertical_joint_face_side(block - 1)});
+        }
+      frames.push_back({-description.face_block_width,
+                        0.0,
+                        Ids::face_block_material,
+                        Ids::bedding_block_side(Ids::face_block_index),
+                        Ids::floor_surface(Ids::face_block_index),
+                        Ids::face_block_outer_side,
+                        Ids::vertical_joint_face_side(n_blocks)});
+      return frames;
+    }
+
+    /** Midpoint of a fillet arc, or the sharp corner itself. */
+    Point2
+    corner_middle(const Corner &corner, const double radius)
+    {
+      if (!corner.rounded)
+        return corner.side_point;
+      const double to_side_x  = corner.side_point.x - corner.centre.x;
+      const double to_side_y  = corner.side_point.y - corner.centre.y;
+      const double to_curve_x = corner.curve_point.x - corner.centre.x;
+      const double to_curve_y = corner.curve_point.y - corner.centre.y;
+      const double sum_x      = to_side_x + to_curve_x;
+      const double sum_y      = to_side_y + to_curve_y;
+      const double norm       = std::hypot(sum_x, sum_y);
+      return {corner.centre.x + radius * sum_x / norm,
+              corner.centre.y + radius * sum_y / norm};
+    }
+  } // namespace
+
+  AssemblyOutline
+  build_outline(const AssemblyDescription &description)
+  {
+    const BeddingProfile profile = BeddingProfile::geometry_profile(description);
+    const double         height  = description.block_height;
+    const double         radius  = description.corner_rounding_radius;
+    const std::vector<BlockFrame> frames = block_frames(description);
+    // frames[0..n-1] = blocks 1..n, frames[n] = face block; the left
+    // neighbour of frame f (towards the face) is frame f+1.
+    std::vector<BodyCorners> corners;
+    for (const BlockFrame &frame : frames)
+      corners.push_back(body_corners(profile, frame, height, radius));
+
+    AssemblyOutline outline;
+    for (unsigned int index = 0; index < frames.size(); ++index)
+      {
+        const BlockFrame  &frame = frames[index];
+        const BodyCorners &own   = corners[index];
+        const std::string  where = "on " + Ids::material_name(frame.material_id);
+        if (!(own.bottom_left.curve_point.x < own.bottom_right.curve_point.x &&
+              own.top_left.curve_point.x < own.top_right.curve_point.x &&
+              own.bottom_left.side_point.y < own.top_left.side_point.y &&
+              own.bottom_right.side_point.y < own.top_right.side_point.y))
+          refuse_rounding(description, where);
+
+        std::vector<double> right_breaks;
+        if (index > 0)
+          right_breaks = {corners[index - 1].bottom_left.side_point.y,
+                          corners[index - 1].top_left.side_point.y};
+        std::vector<double> left_breaks;
+        if (index + 1 < frames.size())
+          left_breaks = {corners[index + 1].bottom_right.side_point.y,
+                         corners[index + 1].top_right.side_point.y};
+
+        BodyOutline body{frame.material_id, {}};
+        std::vector<Segment> &segments = body.segments;
+        segments.push_back(curve_piece(profile,
+                                       own.bottom_left.curve_point.x,
+                                       own.bottom_right.curve_point.x,
+                                       0.0,
+                                       frame.bottom_id));
+        add_fillet(own.bottom_right, false, frame.bottom_id, segments);
+        add_vertical_side(frame.x_right,
+                          own.bottom_right.side_point.y,
+                          own.top_right.side_point.y,
+                          right_breaks,
+                          frame.right_id,
+                          segments);
+        add_fillet(own.top_right, true, frame.right_id, segments);
+        segments.push_back(curve_piece(profile,
+                                       own.top_right.curve_point.x,
+                                       own.top_left.curve_point.x,
+                                       height,
+                                       frame.top_id));
+        add_fillet(own.top_left, false, frame.left_id, segments);
+        add_vertical_side(frame.x_left,
+                          own.top_left.side_point.y,
+                          own.bottom_left.side_point.y,
+                          left_breaks,
+                          frame.left_id,
+                          segments);
+        add_fillet(own.bottom_left, true, frame.bottom_id, segments);
+        outline.bodies.push_back(body);
+      }
+
+    // Base: bedding shifted down by its thickness, from the outer side of
+    // the face block to the free side of block 1; the top is split under
+    // every fillet tangent point so that the contact part of each bedding
+    // joint is a single segment on both sides.
+    const double thickness = description.base_thickness;
+    const double x_face    = frames.back().x_left;
+    const double x_free    = frames.front().x_right;
+    BodyOutline  base{Ids::base_material, {}};
+    base.segments.push_back(
+      curve_piece(profile, x_face, 0.0, -thickness, Ids::base_bottom));
+    base.segments.push_back(
+      curve_piece(profile, 0.0, x_free, -thickness, Ids::base_bottom));
+    base.segments.push_back({SegmentKind::line,
+                             point_on(profile, x_free, -thickness),
+                             point_on(profile, x_free, 0.0),
+                             {},
+                             Ids::base_end_free_side});
+    for (unsigned int index = 0; index < frames.size(); ++index)
+      {
+        const BlockFrame  &frame = frames[index];
+        const BodyCorners &own   = corners[index];
+        const dealii::types::boundary_id id =
+          Ids::bedding_base_side(frame.bottom_id - Ids::bedding_block_side(0));
+        const std::array<double, 4> stations = {frame.x_right,
+                                                own.bottom_right.curve_point.x,
+                                                own.bottom_left.curve_point.x,
+                                                frame.x_left};
+        for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
+          if (stations[piece] != stations[piece + 1])
+            base.segments.push_back(curve_piece(
+              profile, stations[piece], stations[piece + 1], 0.0, id));
+      }
+    base.segments.push_back({SegmentKind::line,
+                             point_on(profile, x_face, 0.0),
+                             point_on(profile, x_face, -thickness),
+                             {},
+                             Ids::base_end_face_side});
+    outline.bodies.push_back(base);
+
+    for (unsigned int first = 0; first < outline.bodies.size(); ++first)
+      for (unsigned int second = first + 1; second < outline.bodies.size();
+           ++second)
+        for (unsigned int a = 0; a < outline.bodies[first].segments.size(); ++a)
+          for (unsigned int b = 0; b < outline.bodies[second].segments.size();
+               ++b)
+            if (same_geometry(outline.bodies[first].segments[a],
+                              outline.bodies[second].segments[b]))
+              outline.joint_pairs.push_back({{first, a}, {second, b}});
+
+    // Contact corners: every corner on a vertical joint (both bodies) and
+    // every block corner on the bedding; not the free top corner of block 1
+    // nor the outer corners of the face block, where nothing presses.
+    const unsigned int face_index = frames.size() - 1;
+    for (unsigned int index = 0; index < frames.size(); ++index)
+      {
+        const BodyCorners &own = corners[index];
+        std::vector<const Corner *> contact = {&own.bottom_right};
+        if (index != 0)
+          contact.push_back(&own.top_right);
+        if (index != face_index)
+          {
+            contact.push_back(&own.bottom_left);
+            contact.push_back(&own.top_left);
+          }
+        for (const Corner *corner : contact)
+          outline.refinement_points.push_back(corner_middle(*corner, radius));
+      }
+    return outline;
+  }
+
+  double
+  outline_area(const BodyOutline &body)
+  {
+    // Green: area = 1/2 closed integral of (x y' - y x') dt.
+    const auto cross = [](const Point2 &first, const Point2 &second) {
+      return first.x * second.y - first.y * second.x;
+    };
+    double twice_area = 0.0;
+    for (const Segment &segment : body.segments)
+      switch (segment.kind)
+        {
+          case SegmentKind::line:
+            twice_area += cross(segment.start, segment.end);
+            break;
+          case SegmentKind::quadratic:
+            {
+              // B x B' is a cubic in t: 2-point Gauss-Legendre is exact.
+              const double offset = 0.5 / std::sqrt(3.0);
+              for (const double t : {0.5 - offset, 0.5 + offset})
+                {
+                  const Point2 &p0 = segment.start;
+                  const Point2 &p1 = segment.control;
+                  const Point2 &p2 = segment.end;
+                  const double  s  = 1.0 - t;
+                  const Point2  position{s * s * p0.x + 2 * s * t * p1.x +
+                                          t * t * p2.x,
+                                        s * s * p0.y + 2 * s * t * p1.y +
+                                          t * t * p2.y};
+                  const Point2 tangent{2 * s * (p1.x - p0.x) +
+                                         2 * t * (p2.x - p1.x),
+                                       2 * s * (p1.y - p0.y) +
+                                         2 * t * (p2.y - p1.y)};
+                  twice_area += 0.5 * cross(position, tangent);
+                }
+              break;
+            }
+          case SegmentKind::arc:
+            {
+              // x = c + r (cos th, sin th): x y' - y x' = r^2 + r (cx cos th + cy sin th).
+              const Point2 &centre = segment.control;
+              const Point2  from{segment.start.x - centre.x,
+                                segment.start.y - centre.y};
+              const Point2  to{segment.end.x - centre.x, segment.end.y - centre.y};
+              const double  radius_squared = from.x * from.x + from.y * from.y;
+              const double  sweep =
+                std::atan2(cross(from, to), from.x * to.x + from.y * to.y);
+              twice_area += radius_squared * sweep +
+                            centre.x * (to.y - from.y) -
+                            centre.y * (to.x - from.x);
+              break;
+            }
+        }
+    return twice_area / 2.0;
+  }
+
+  bool
+  same_geometry(const Segment &first, const Segment &second)
+  {
+    const auto equal = [](const Point2 &a, const Point2 &b) {
+      return a.x == b.x && a.y == b.y;
+    };
+    if (first.kind != second.kind)
+      return false;
+    const bool same_ends =
+      (equal(first.start, second.start) && equal(first.end, second.end)) ||
+      (equal(first.start, second.end) && equal(first.end, second.start));
+    return same_ends &&
+           (first.kind == SegmentKind::line ||
+            equal(first.control, second.control));
+  }
+} // namespace FloorBlock::Geometry

@@ -1,0 +1,197 @@
+#include <deal.II/grid/tria.h>
+
+#include <common/atomic_file.h>
+
+#include <geometry/ids.h>
+#include <output/mesh_picture.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace FloorBlock::Output
+{
+  namespace
+  {
+    namespace Ids = Geometry::Ids;
+
+    /** Fill colour of a body: neighbouring blocks alternate, face block grey, base sand. */
+    std::string
+    body_colour(const dealii::types::material_id material)
+    {
+      if (material == Ids::face_block_material)
+        return "#a0a0a0";
+      if (material == Ids::base_material)
+        return "#e3cf9a";
+      constexpr std::array<const char *, 3> block_colours = {"#8fb8de",
+                                                             "#a8d5a2",
+                                                             "#f2b880"};
+      return block_colours[material % block_colours.size()];
+    }
+
+    /** Cell outlines as closed polygons, one gnuplot data block per body. */
+    std::map<dealii::types::material_id, std::string>
+    cell_polygons(const dealii::Triangulation<2> &triangulation)
+    {
+      // deal.II vertex order is lexicographic; this visits them around the cell.
+      constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
+      std::map<dealii::types::material_id, std::ostringstream> streams;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          std::ostringstream &stream = streams[cell->material_id()];
+          for (const unsigned int vertex : around)
+            stream << cell->vertex(vertex)[0] << ' ' << cell->vertex(vertex)[1]
+                   << '\n';
+          stream << '\n';
+        }
+      std::map<dealii::types::material_id, std::string> polygons;
+      for (const auto &[material, stream] : streams)
+        polygons[material] = stream.str();
+      return polygons;
+    }
+
+    /** Boundary faces for which @p wanted is true, as separate line segments. */
+    template <typename Predicate>
+    std::string
+    boundary_segments(const dealii::Triangulation<2> &triangulation,
+                      const Predicate                &wanted)
+    {
+      std::ostringstream stream;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && wanted(face->boundary_id()))
+            stream << face->vertex(0)[0] << ' ' << face->vertex(0)[1] << '\n'
+                   << face->vertex(1)[0] << ' ' << face->vertex(1)[1]
+                   << "\n\n";
+      // gnuplot refuses an empty data file: a lone point far off-screen is not drawn.
+      const std::string text = stream.str();
+      return text.empty() ? std::string("NaN NaN\n") : text;
+    }
+
+    void
+    write_text(const std::filesystem::path &path, const std::string &text)
+    {
+      std::ofstream file(path);
+      file << text;
+      if (!file)
+        throw std::runtime_error("cannot write " + path.string());
+    }
+
+    /** Removes the scratch folder however the function is left. */
+    struct ScratchFolder
+    {
+      std::filesystem::path path;
+      ~ScratchFolder()
+      {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+      }
+    };
+
+    std::string
+    quoted(const std::string &text)
+    {
+      std::string result = "'";
+      for (const char character : text)
+        result += character == '\'' ? std::string("''") : std::string(1, character);
+      return result + "'";
+    }
+  } // namespace
+
+  void
+  write_mesh_picture(const dealii::Triangulation<2> &triangulation,
+                     const std::string              &png_path,
+                     const MeshPictureOptions       &options)
+  {
+    if (triangulation.n_active_cells() == 0)
+      throw std::runtime_error("cannot draw an empty mesh");
+    const ScratchFolder scratch{
+      std::filesystem::temp_directory_path() /
+      ("floorblock_mesh_picture_" + std::to_string(::getpid()))};
+    std::filesystem::create_directories(scratch.path);
+
+    const auto polygons = cell_polygons(triangulation);
+    std::ostringstream plot;
+    unsigned int       block_index = 0;
+    std::string        cells_text;
+    for (const auto &[material, text] : polygons)
+      {
+        cells_text += text + "\n\n";
+        plot << (block_index == 0 ? "plot " : ", \\\n     ")
+             << "'cells.dat' index " << block_index
+             << " with filledcurves closed fc rgb '" << body_colour(material)
+             << "' fs solid 1.0 noborder, \\\n     'cells.dat' index "
+             << block_index << " with lines lc rgb '#505050' lw 0.4";
+        ++block_index;
+      }
+    write_text(scratch.path / "cells.dat", cells_text);
+    write_text(scratch.path / "joints.dat",
+               boundary_segments(triangulation, Ids::is_joint_side));
+    write_text(scratch.path / "floor.dat",
+               boundary_segments(triangulation,
+                                 [](const dealii::types::boundary_id id) {
+                                   return Ids::boundary_kind(id) ==
+                                          Ids::BoundaryKind::floor_surface;
+                                 }));
+    plot << ", \\\n     'joints.dat' with lines lc rgb '#d01010' lw 2.5"
+         << ", \\\n     'floor.dat' with lines lc rgb '#1030d0' lw 2.5\n";
+
+    // Picture size follows the mesh extent so cells are not distorted.
+    double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
+    for (const auto &vertex : triangulation.get_vertices())
+      {
+        x_min = std::min(x_min, vertex[0]);
+        x_max = std::max(x_max, vertex[0]);
+        y_min = std::min(y_min, vertex[1]);
+        y_max = std::max(y_max, vertex[1]);
+      }
+    const double       margin = 0.03 * std::max(x_max - x_min, y_max - y_min);
+    const unsigned int height =
+      options.height_pixels > 0 ?
+        options.height_pixels :
+        static_cast<unsigned int>(options.width_pixels *
+                                  (y_max - y_min + 2 * margin) /
+                                  (x_max - x_min + 2 * margin)) +
+          (options.title.empty() ? 0 : 60);
+
+    const std::string temporary = temporary_name_for(png_path) + ".png";
+    std::ostringstream script;
+    script.precision(17);
+    script << "set terminal pngcairo size " << options.width_pixels << ','
+           << height << " font 'sans,12'\n"
+           << "set output " << quoted(temporary) << '\n'
+           << "set title " << quoted(options.title) << '\n'
+           << "unset key\nset size ratio -1\nset xlabel 'x (m)'\n"
+           << "set ylabel 'y (m)'\n"
+           << "set xrange [" << x_min - margin << ':' << x_max + margin
+           << "]\nset yrange [" << y_min - margin << ':' << y_max + margin
+           << "]\ncd " << quoted(scratch.path.string()) << '\n'
+           << plot.str();
+    write_text(scratch.path / "mesh.gp", script.str());
+
+    const std::string command = "gnuplot " +
+                                quoted((scratch.path / "mesh.gp").string()) +
+                                " > " + quoted((scratch.path / "log").string()) +
+                                " 2>&1";
+    const int status = std::system(command.c_str());
+    if (status != 0 || !std::filesystem::exists(temporary))
+      {
+        std::ifstream     log(scratch.path / "log");
+        std::stringstream message;
+        message << log.rdbuf();
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error("gnuplot could not draw " + png_path +
+                                 " (is gnuplot-nox installed?): " +
+                                 message.str());
+      }
+    commit_temporary_file(temporary, png_path);
+  }
+} // namespace FloorBlock::Output

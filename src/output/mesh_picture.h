@@ -1,0 +1,37 @@
+#pragma once
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+
+namespace FloorBlock::Output
+{
+  /** @brief Size and caption of a mesh picture. */
+  struct MeshPictureOptions
+  {
+    /** Image width. Units: pixels. */
+    unsigned int width_pixels = 1600;
+    /** Image height; 0 = from the aspect ratio of the mesh. Units: pixels. */
+    unsigned int height_pixels = 0;
+    /** Caption printed above the mesh (may be empty). */
+    std::string title;
+  };
+
+  /**
+   * @brief Draw a block-assembly mesh as a PNG with gnuplot: cells filled
+   * with one colour per body (material id), cell edges thin, joint sides
+   * (ids.h: vertical and bedding joints) thick red, the floor surface blue.
+   *
+   * gnuplot (Debian package gnuplot-nox, pngcairo terminal) must be on the
+   * PATH. The PNG appears atomically (temporary name, then rename).
+   *
+   * @param[in] triangulation Mesh read by Geometry::read_triangulation().
+   * @param[in] png_path Output file.
+   * @param[in] options Image size and caption.
+   * @throws std::runtime_error if gnuplot fails or is missing.
+   */
+  void
+  write_mesh_picture(const dealii::Triangulation<2> &triangulation,
+                     const std::string              &png_path,
+                     const MeshPictureOptions       &options = {});
+} // namespace FloorBlock::Output
