@@ -1,0 +1,50 @@
+#include <app/command_options.h>
+#include <common/input_error.h>
+#include <common/units.h>
+#include <output/gnuplot.h>
+#include <output/result_folder.h>
+#include <output/sweep_report.h>
+#include <scene/chapter_figures.h>
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+namespace FloorBlock::App
+{
+  int
+  sweep_command(const CommandOptions &options)
+  {
+    if (options.with_fem)
+      throw InputError("sweep --fem: the FEM sweep is not part of this build "
+                       "yet; run the closed-form sweep without --fem");
+    const auto scene = read_scene(options);
+    const Output::ResultFolder folder(output_directory(options, scene));
+    folder.write_inputs(scene);
+
+    const auto lateral = Scene::lateral_force_figures(scene);
+    folder.write("sweep_fig6_5_6_7.csv", Output::sweep_csv(lateral));
+    for (const auto &[figure, title] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"fig6_5",
+            fmt::format("Figure 6.5: Q at the face, planar bedding {:.1f} deg",
+                        Units::radians_to_degrees(scene.bedding.inclination))},
+           {"fig6_6", "Figure 6.6: Q at the face, y = x^2/400"},
+           {"fig6_7", "Figure 6.7: Q at the face, y = x^2/200"}})
+      Output::render_png(Output::lateral_force_plot(lateral, figure, title),
+                         folder.path_of("sweep_" + figure + ".png"), 1500, 500);
+
+    const auto stress = Scene::floor_stress_figures(scene);
+    folder.write("sweep_fig6_10_11.csv", Output::sweep_csv(stress));
+    for (const double curvature : {400.0, 200.0, 100.0, 50.0})
+      Output::render_png(Output::floor_stress_plot(stress, curvature),
+                         folder.path_of(fmt::format(
+                           "sweep_fig6_10_11_k{:.0f}.png", curvature)),
+                         1500, 500);
+
+    std::cout << "evaluated " << lateral.size() + stress.size()
+              << " closed-form points; wrote sweep_*.csv and sweep_*.png to "
+              << output_directory(options, scene) << std::endl;
+    return 0;
+  }
+} // namespace FloorBlock::App

@@ -1,0 +1,178 @@
+#include <common/units.h>
+#include <output/numbering_note.h>
+#include <output/sweep_report.h>
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <optional>
+#include <map>
+
+namespace FloorBlock::Output
+{
+  namespace
+  {
+    constexpr double kN  = Units::newtons_per_kilonewton;
+    constexpr double MPa = Units::pascals_per_megapascal;
+
+    bool
+    has_face_force(const Scene::MechanismResult &entry)
+    {
+      return !entry.forces.lateral_force.empty();
+    }
+
+    using PointValue =
+      std::function<std::optional<double>(const Scene::FigurePoint &,
+                                          const Scene::MechanismResult &)>;
+    using PointKey = std::function<double(const Scene::FigurePoint &)>;
+
+    /**
+     * A multiplot with one panel per mechanism and one curve per value of
+     * @p curve_key; x is the bedding friction in degrees. Points without a
+     * finite value are left out of their curve.
+     */
+    std::string
+    panels_by_mechanism(const std::vector<const Scene::FigurePoint *> &points,
+                        const std::string &                            title,
+                        const std::string &                            y_label,
+                        const PointKey &                               curve_key,
+                        const std::string &curve_label_format,
+                        const PointValue & value)
+    {
+      std::string script = fmt::format(
+        "set multiplot layout 1,3 title '{}'\nset grid\nset key top left\n"
+        "set xlabel 'bedding friction angle (deg)'\nset ylabel '{}'\n"
+        "set xrange [10:35]\n",
+        title, y_label);
+      const auto &mechanisms = points.front()->closed_forms.mechanisms;
+      for (std::size_t m = 0; m < mechanisms.size(); ++m)
+        {
+          std::map<double, std::string> curves;
+          for (const Scene::FigurePoint *point : points)
+            if (const auto y = value(*point, point->closed_forms.mechanisms[m]))
+              curves[curve_key(*point)] += fmt::format(
+                "{} {}\n", Units::radians_to_degrees(point->bedding_friction),
+                *y);
+          script += fmt::format("set title '{}'\n",
+                                Scene::to_string(mechanisms[m].mechanism));
+          if (curves.empty())
+            {
+              script += "set label 1 'no finite answer' at graph 0.3,0.5\n"
+                        "plot [10:35] NaN notitle\nunset label 1\n";
+              continue;
+            }
+          std::string plot = "plot ";
+          std::string data;
+          unsigned int index = 0;
+          for (const auto &[key, rows] : curves)
+            {
+              data += fmt::format("$c{}_{} << EOD\n{}EOD\n", m, index, rows);
+              plot += fmt::format("{}$c{}_{} with linespoints title '{}'",
+                                  index == 0 ? "" : ", ", m, index,
+                                  fmt::format(curve_label_format, key));
+              ++index;
+            }
+          script += data + plot + "\n";
+        }
+      return script + "unset multiplot\n";
+    }
+
+    std::vector<const Scene::FigurePoint *>
+    select(const std::vector<Scene::FigurePoint> &                  points,
+           const std::function<bool(const Scene::FigurePoint &)> &keep)
+    {
+      std::vector<const Scene::FigurePoint *> selected;
+      for (const auto &point : points)
+        if (keep(point))
+          selected.push_back(&point);
+      return selected;
+    }
+  } // namespace
+
+  std::string
+  sweep_csv(const std::vector<Scene::FigurePoint> &points)
+  {
+    std::string csv = fmt::format(
+      "# {}\n# Q_face: Q_n between block n and the face block. Empty cells: "
+      "no finite answer (see the status column).\n",
+      numbering_note);
+    csv += "figure,k_m,phi_h_deg,phi_v_deg,support_load_t,y_m";
+    for (const auto &entry : points.front().closed_forms.mechanisms)
+      csv += fmt::format(
+        ",{0}_status,{0}_Q_face_N_per_m,{0}_Q_face_N_over_b,{0}_A_m2,"
+        "{0}_sigma_max_Pa,{0}_contact_status",
+        Scene::to_string(entry.mechanism));
+    csv += "\n";
+
+    for (const auto &point : points)
+      {
+        csv += fmt::format(
+          "{},{},{:.3f},{:.3f},{:.3f},{:.9e}", point.figure, point.curvature,
+          Units::radians_to_degrees(point.bedding_friction),
+          Units::radians_to_degrees(point.vertical_friction),
+          point.support_load / Units::tonnes_force_to_newtons(1.0),
+          point.closed_forms.floor_lift);
+        for (const auto &entry : point.closed_forms.mechanisms)
+          {
+            csv += "," + Analytic::to_string(entry.forces.status);
+            if (has_face_force(entry))
+              csv += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e},{}",
+                                 entry.forces.lateral_force.back(),
+                                 entry.face_force_over_width,
+                                 entry.contact.contact_area,
+                                 entry.contact.max_stress,
+                                 Analytic::to_string(entry.contact.status));
+            else
+              csv += ",,,,," + Analytic::to_string(entry.contact.status);
+          }
+        csv += "\n";
+      }
+    return csv;
+  }
+
+  std::string
+  lateral_force_plot(const std::vector<Scene::FigurePoint> &points,
+                     const std::string &                    figure,
+                     const std::string &                    title)
+  {
+    return panels_by_mechanism(
+      select(points,
+             [&](const Scene::FigurePoint &p) { return p.figure == figure; }),
+      title, "Q at the face over b (kN)",
+      [](const Scene::FigurePoint &p) {
+        return Units::radians_to_degrees(p.vertical_friction);
+      },
+      "phi_v = {:.0f} deg",
+      [](const Scene::FigurePoint &, const Scene::MechanismResult &entry)
+        -> std::optional<double> {
+        if (!has_face_force(entry))
+          return std::nullopt;
+        return entry.face_force_over_width / kN;
+      });
+  }
+
+  std::string
+  floor_stress_plot(const std::vector<Scene::FigurePoint> &points,
+                    const double                           curvature)
+  {
+    return panels_by_mechanism(
+      select(points,
+             [&](const Scene::FigurePoint &p) {
+               return p.curvature == curvature;
+             }),
+      fmt::format("sigma_max at the face (Eq. 6.53), y = x^2/{:.0f}",
+                  curvature),
+      "sigma_max (MPa)",
+      [](const Scene::FigurePoint &p) {
+        return p.support_load / Units::tonnes_force_to_newtons(1.0);
+      },
+      "{:.0f} t",
+      [](const Scene::FigurePoint &, const Scene::MechanismResult &entry)
+        -> std::optional<double> {
+        if (!has_face_force(entry) ||
+            entry.contact.status != Analytic::Status::ok)
+          return std::nullopt;
+        return entry.contact.max_stress / MPa;
+      });
+  }
+} // namespace FloorBlock::Output
