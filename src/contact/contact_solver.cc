@@ -1,0 +1,508 @@
+#include <common/input_error.h>
+#include <contact/contact_assembly.h>
+#include <contact/contact_solver.h>
+#include <contact/joint_pairing.h>
+#include <contact/joint_report.h>
+#include <contact/newton_driver.h>
+#include <contact/uplift.h>
+#include <fem/dirichlet_constraints.h>
+#include <fem/elastic_assembly.h>
+#include <fem/rigid_motion.h>
+#include <fem/sparsity.h>
+#include <fem/vtu_writer.h>
+#include <solver/linear_solver.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace FloorBlock
+{
+  namespace Contact
+  {
+    namespace
+    {
+      /**
+       * Displacement scale floor (m) of the rigid-law stopping test, so that
+       * a state with no motion at all does not divide by zero.
+       */
+      constexpr double displacement_scale_floor = 1e-30;
+
+      const char *
+      stage_name(const LoadStage stage)
+      {
+        switch (stage)
+          {
+            case LoadStage::gravity:
+              return "gravity";
+            case LoadStage::support_pressure:
+              return "support pressure";
+            case LoadStage::uplift:
+              return "uplift";
+          }
+        return "";
+      }
+
+      std::vector<JointState>
+      states_of(const std::vector<JointResponse<2>> &responses)
+      {
+        std::vector<JointState> states;
+        states.reserve(responses.size());
+        for (const auto &response : responses)
+          states.push_back(response.state);
+        return states;
+      }
+    } // namespace
+
+    ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
+                                 const SceneDefinition<2>       &scene,
+                                 const ContactSolverSettings    &settings)
+      : scene(scene)
+      , settings(settings)
+      , fe_space(triangulation, settings.fe_degree)
+      , console(std::cout, settings.verbose)
+      , timer(console,
+              dealii::TimerOutput::never,
+              dealii::TimerOutput::wall_times)
+    {
+      dealii::TimerOutput::Scope scope(timer, "Contact: setup");
+      setup_contact();
+      dealii::IndexSet unused;
+      std::vector<Fem::DirichletCondition<2>> zero_conditions;
+      for (const auto &support : scene.supports)
+        zero_conditions.push_back({support.boundary_id,
+                                   support.constrained_components,
+                                   [](const dealii::Point<2> &) {
+                                     return dealii::Tensor<1, 2>();
+                                   }});
+      homogeneous_constraints =
+        Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
+      Fem::make_sparsity(fe_space,
+                         homogeneous_constraints,
+                         pair_dof_groups(nodes),
+                         pattern);
+      matrix.reinit(pattern);
+      const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
+      current_solution.reinit(owned, MPI_COMM_WORLD);
+      committed_solution.reinit(owned, MPI_COMM_WORLD);
+      newton_base.reinit(owned, MPI_COMM_WORLD);
+      update.reinit(owned, MPI_COMM_WORLD);
+      residual.reinit(owned, MPI_COMM_WORLD);
+
+      const auto &fe = fe_space.fe();
+      dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
+      std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            dof_component[dofs[i]] = fe.system_to_component_index(i).first;
+        }
+    }
+
+    void
+    ContactSolver::setup_contact()
+    {
+      double largest_modulus = 0.;
+      for (const auto &entry : scene.model.laws)
+        largest_modulus =
+          std::max(largest_modulus, entry.second.youngs_modulus());
+      // Augmentation of the rigid law: stiff enough that the Uzawa updates
+      // contract fast, soft enough to keep the tangent well conditioned.
+      const double augmentation = settings.rigid_penalty_factor *
+                                  largest_modulus /
+                                  fe_space.minimal_cell_diameter();
+      for (unsigned int j = 0; j < scene.joints.size(); ++j)
+        {
+          const JointDefinition<2> &joint      = scene.joints[j];
+          JointParameters           parameters = joint.parameters;
+          if (joint.law == JointLawKind::rigid)
+            {
+              parameters.normal_stiffness = augmentation;
+              parameters.shear_stiffness  = augmentation;
+            }
+          else if (!(parameters.normal_stiffness > 0.) ||
+                   !(parameters.shear_stiffness > 0.))
+            throw InputError("joint '" + joint.name +
+                             "': compliant law needs kn > 0 and ks > 0 Pa/m");
+          joint_laws.push_back(std::make_unique<CoulombJoint<2>>(parameters));
+          const std::vector<ContactNode<2>> joint_nodes =
+            joint.against_rigid_plane ?
+              pair_nodes_with_plane(fe_space,
+                                    joint.side_a,
+                                    joint.plane_point,
+                                    joint.plane_normal,
+                                    j) :
+              pair_joint_nodes(fe_space, joint.side_a, joint.side_b, j);
+          for (const auto &node : joint_nodes)
+            {
+              nodes.push_back(node);
+              pair_laws.push_back(joint_laws.back().get());
+              pair_is_rigid.push_back(joint.law == JointLawKind::rigid);
+            }
+        }
+      committed_history.assign(nodes.size(), JointHistory<2>());
+      working_history = committed_history;
+    }
+
+    Fem::ElasticModel<2>
+    ContactSolver::scaled_model(const LoadFactors &factors) const
+    {
+      Fem::ElasticModel<2> model = scene.model;
+      model.gravity *= factors.gravity;
+      for (auto &entry : model.pressures)
+        entry.second *= factors.pressure;
+      return model;
+    }
+
+    dealii::AffineConstraints<double>
+    ContactSolver::constraints_at(const double uplift_factor)
+    {
+      std::vector<Fem::DirichletCondition<2>> conditions;
+      const UpliftSettings uplift = scene.uplift;
+      for (const auto &support : scene.supports)
+        {
+          const bool moves = support.moves_with_uplift;
+          conditions.push_back(
+            {support.boundary_id,
+             support.constrained_components,
+             [uplift, uplift_factor, moves](const dealii::Point<2> &point) {
+               return moves ?
+                        uplift_displacement(uplift, uplift_factor, point) :
+                        dealii::Tensor<1, 2>();
+             }});
+        }
+      return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
+    }
+
+    double
+    ContactSolver::load_norm(const Fem::ElasticModel<2> &model)
+    {
+      dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
+      zero     = 0.;
+      residual = 0.;
+      Fem::ElasticAssemblyTargets<2> targets;
+      targets.residual = &residual;
+      Fem::assemble_elastic_system(
+        fe_space, model, zero, homogeneous_constraints, targets);
+      return residual.l2_norm();
+    }
+
+    bool
+    ContactSolver::update_multipliers(
+      const std::vector<JointResponse<2>> &responses)
+    {
+      const double scale = std::max(current_solution.linfty_norm(),
+                                    displacement_scale_floor);
+      double violation = 0.;
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        {
+          if (!pair_is_rigid[p])
+            continue;
+          const JointResponse<2> &response = responses[p];
+          if (response.state != JointState::open)
+            violation = std::max(violation, std::abs(response.gap));
+          if (response.state == JointState::stick)
+            violation =
+              std::max(violation,
+                       (response.slip - working_history[p].reference_slip)
+                         .norm());
+        }
+      if (violation <= settings.rigid_constraint_tolerance * scale)
+        return true;
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        if (pair_is_rigid[p])
+          {
+            working_history[p].normal_base = responses[p].normal_traction;
+            working_history[p].tangential_base =
+              responses[p].tangential_traction;
+          }
+      return false;
+    }
+
+    bool
+    ContactSolver::solve_load_state(const LoadFactors &factors,
+                                    IncrementResult   &increment,
+                                    std::string       &failure_reason)
+    {
+      const Fem::ElasticModel<2> model = scaled_model(factors);
+      {
+        dealii::TimerOutput::Scope scope(timer, "Contact: constraints");
+        const dealii::AffineConstraints<double> constraints =
+          constraints_at(factors.uplift);
+        constraints.distribute(current_solution);
+      }
+      const double reference_load = load_norm(model);
+
+      NewtonCallbacks callbacks;
+      callbacks.assemble = [&]() {
+        dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
+        const std::vector<JointResponse<2>> responses = evaluate_contact(
+          nodes, pair_laws, working_history, current_solution);
+        matrix   = 0.;
+        residual = 0.;
+        Fem::ElasticAssemblyTargets<2> targets;
+        targets.matrix   = &matrix;
+        targets.residual = &residual;
+        Fem::assemble_elastic_system(
+          fe_space, model, current_solution, homogeneous_constraints, targets);
+        assemble_contact(
+          nodes, responses, homogeneous_constraints, &matrix, &residual);
+        active_set.update(states_of(responses));
+        NewtonIterate iterate;
+        iterate.residual_norm = residual.l2_norm();
+        iterate.set_signature = active_set.signature();
+        iterate.counts        = active_set.counts();
+        last_iterate_counts   = iterate.counts;
+        return iterate;
+      };
+      callbacks.solve_update = [&](std::string &message) {
+        dealii::TimerOutput::Scope scope(timer, "Contact: linear solve");
+        dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
+        right_hand_side *= -1.;
+        update = 0.;
+        const Solver::LinearSolveInfo info =
+          Solver::solve_linear_system(settings.linear,
+                                      matrix,
+                                      right_hand_side,
+                                      fe_space.constant_modes(),
+                                      update);
+        message = info.message;
+        homogeneous_constraints.distribute(update);
+        newton_base = current_solution;
+        return info.success;
+      };
+      callbacks.set_step = [&](const double step) {
+        current_solution = newton_base;
+        current_solution.add(step, update);
+      };
+
+      const bool any_rigid =
+        std::find(pair_is_rigid.begin(), pair_is_rigid.end(), true) !=
+        pair_is_rigid.end();
+      const unsigned int max_updates =
+        any_rigid ? settings.max_multiplier_updates : 1;
+      for (unsigned int round = 1; round <= max_updates; ++round)
+        {
+          const NewtonReport report =
+            solve_newton(settings.newton, reference_load, callbacks);
+          increment.n_newton_iterations += report.n_iterations;
+          increment.n_multiplier_updates = round;
+          increment.relative_residual    = report.relative_residual;
+          if (!report.converged)
+            {
+              failure_reason = report.failure_reason;
+              return false;
+            }
+          if (!any_rigid)
+            return true;
+          dealii::TimerOutput::Scope scope(timer, "Contact: multipliers");
+          if (update_multipliers(evaluate_contact(
+                nodes, pair_laws, working_history, current_solution)))
+            return true;
+        }
+      failure_reason = "augmented Lagrangian did not reach the constraint "
+                       "tolerance within the multiplier-update limit";
+      return false;
+    }
+
+    void
+    ContactSolver::commit(const std::vector<JointResponse<2>> &responses)
+    {
+      committed_solution  = current_solution;
+      committed_responses = responses;
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        {
+          const JointResponse<2> &response = responses[p];
+          JointHistory<2>        &history  = committed_history[p];
+          history.normal_base     = pair_is_rigid[p] ? response.normal_traction : 0.;
+          history.tangential_base = response.tangential_traction;
+          history.reference_slip  = response.slip;
+          // UDEC convention: cohesion and tensile strength are lost for good
+          // once the pair slips or opens.
+          history.intact = history.intact && response.state == JointState::stick;
+        }
+      working_history = committed_history;
+    }
+
+    ForceBalance
+    ContactSolver::force_balance(const Fem::ElasticModel<2>          &model,
+                                 const std::vector<JointResponse<2>> &responses)
+    {
+      dealii::AffineConstraints<double> no_constraints;
+      no_constraints.close();
+      dealii::TrilinosWrappers::MPI::Vector raw(residual);
+      raw = 0.;
+      ForceBalance                   balance;
+      Fem::ElasticAssemblyTargets<2> targets;
+      targets.residual           = &raw;
+      targets.applied_load_total = &balance.applied_load;
+      Fem::assemble_elastic_system(
+        fe_space, model, current_solution, no_constraints, targets);
+      assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
+      double reaction_magnitude = 0.;
+      for (const auto dof : dirichlet_dofs)
+        {
+          balance.support_reaction[dof_component[dof]] += raw(dof);
+          reaction_magnitude += std::abs(raw(dof));
+        }
+      const double scale = balance.applied_load.norm() + reaction_magnitude;
+      balance.relative_imbalance =
+        scale > 0. ?
+          (balance.applied_load + balance.support_reaction).norm() / scale :
+          0.;
+      return balance;
+    }
+
+    void
+    ContactSolver::run_stage(const LoadStage    stage,
+                             const unsigned int n_increments,
+                             SolveResult       &result)
+    {
+      if (n_increments == 0)
+        return;
+      const double nominal_step = 1. / n_increments;
+      double       reached      = 0.;
+      double       step         = nominal_step;
+      unsigned int n_failed     = 0;
+      while (reached < 1.)
+        {
+          const bool   last   = reached + step >= 1.;
+          const double target = last ? 1. : reached + step;
+          LoadFactors  factors = committed_factors;
+          switch (stage)
+            {
+              case LoadStage::gravity:
+                factors = {target, 0., 0.};
+                break;
+              case LoadStage::support_pressure:
+                factors = {1., target, 0.};
+                break;
+              case LoadStage::uplift:
+                factors = {1., 1., target};
+                break;
+            }
+          dealii::Timer   clock;
+          IncrementResult increment;
+          std::string     reason;
+          if (solve_load_state(factors, increment, reason))
+            {
+              dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
+              const std::vector<JointResponse<2>> responses = evaluate_contact(
+                nodes, pair_laws, working_history, current_solution);
+              increment.stage        = stage;
+              increment.stage_factor = target;
+              increment.n_cutbacks   = n_failed;
+              increment.counts       = count_states(states_of(responses));
+              increment.balance = force_balance(scaled_model(factors), responses);
+              std::vector<std::string> names;
+              for (const auto &joint : scene.joints)
+                names.push_back(joint.name);
+              increment.joints = make_joint_reports(
+                nodes, responses, names, settings.averaging_length);
+              increment.motions =
+                Fem::fit_rigid_motions(fe_space, current_solution);
+              commit(responses);
+              committed_factors = factors;
+              reached           = target;
+              n_failed          = 0;
+              step              = std::min(nominal_step, 2. * step);
+              increment.wall_time = clock.wall_time();
+              console << "  " << stage_name(stage) << " " << target
+                      << ": newton " << increment.n_newton_iterations
+                      << ", updates " << increment.n_multiplier_updates
+                      << ", stick/slip/open " << increment.counts.n_stick
+                      << "/" << increment.counts.n_slip << "/"
+                      << increment.counts.n_open << ", residual "
+                      << increment.relative_residual << ", imbalance "
+                      << increment.balance.relative_imbalance << std::endl;
+              if (!settings.output_directory.empty())
+                write_output(responses);
+              result.increments.push_back(increment);
+              continue;
+            }
+          std::ostringstream attempt;
+          attempt << stage_name(stage) << " factor " << target << " (step "
+                  << step << "): " << reason;
+          failed_attempts.push_back(attempt.str());
+          console << "  failed: " << attempt.str() << std::endl;
+          current_solution = committed_solution;
+          working_history  = committed_history;
+          if (++n_failed > settings.max_cutbacks)
+            throw ContactSolveFailure(
+              std::string("contact solve failed in stage '") +
+                stage_name(stage) + "' after " +
+                std::to_string(settings.max_cutbacks) + " cutbacks: " + reason,
+              failed_attempts,
+              result.increments.empty() ?
+                std::nullopt :
+                std::optional<IncrementResult>(result.increments.back()),
+              last_iterate_counts);
+          step /= 2.;
+        }
+    }
+
+    SolveResult
+    ContactSolver::run()
+    {
+      SolveResult result;
+      result.n_dofs          = fe_space.dof_handler().n_dofs();
+      result.n_contact_pairs = nodes.size();
+      current_solution       = 0.;
+      committed_solution     = 0.;
+      run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
+      run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
+      run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
+      result.wall_times =
+        timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+      return result;
+    }
+
+    void
+    ContactSolver::write_output(const std::vector<JointResponse<2>> &responses)
+    {
+      dealii::TimerOutput::Scope scope(timer, "Contact: output");
+      std::vector<double> node_states(nodes.size());
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        node_states[p] = static_cast<double>(responses[p].state);
+      std::vector<dealii::types::global_dof_index> state_dofs;
+      for (const auto &node : nodes)
+        state_dofs.push_back(node.dofs_a[0]);
+      Fem::write_vtu_increment(fe_space,
+                               scene.model,
+                               current_solution,
+                               state_dofs,
+                               node_states,
+                               settings.output_directory,
+                               output_records);
+    }
+
+    const dealii::TrilinosWrappers::MPI::Vector &
+    ContactSolver::solution() const
+    {
+      return committed_solution;
+    }
+
+    const Fem::FeSpace<2> &
+    ContactSolver::space() const
+    {
+      return fe_space;
+    }
+
+    const std::vector<ContactNode<2>> &
+    ContactSolver::contact_nodes() const
+    {
+      return nodes;
+    }
+
+    std::vector<JointResponse<2>>
+    ContactSolver::responses_at_solution() const
+    {
+      return committed_responses;
+    }
+  } // namespace Contact
+} // namespace FloorBlock

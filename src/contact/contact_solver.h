@@ -1,0 +1,137 @@
+#pragma once
+
+#include <contact/active_set.h>
+#include <contact/contact_node.h>
+#include <contact/joint_law.h>
+#include <contact/results.h>
+#include <contact/scene.h>
+#include <fem/fe_space.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FloorBlock
+{
+  namespace Contact
+  {
+    /**
+     * @brief Quasi-static frictional multi-body contact in 2D plane strain:
+     * follows the loading path gravity -> support pressure -> floor uplift
+     * in increments, each a converged equilibrium, with automatic cutback.
+     *
+     * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
+     * the joints from CoulombJoint through evaluate_contact/assemble_contact,
+     * the iteration from solve_newton, the linear algebra from
+     * Solver::solve_linear_system.
+     */
+    class ContactSolver
+    {
+    public:
+      /**
+       * @param[in] triangulation Mesh with the agreed material and boundary
+       *   ids; must outlive the solver.
+       * @param[in] scene Physics and loading path.
+       * @param[in] settings Numerics.
+       * Throws InputError if a joint's sides do not match or a material has
+       * no law.
+       */
+      ContactSolver(const dealii::Triangulation<2> &triangulation,
+                    const SceneDefinition<2>       &scene,
+                    const ContactSolverSettings    &settings);
+
+      /**
+       * @brief Runs all stages.
+       * @return Every converged increment with its joint tables.
+       * Throws ContactSolveFailure if an increment fails after all cutbacks;
+       * solution() then holds the last converged state.
+       */
+      SolveResult
+      run();
+
+      /** @brief Displacement of the last converged increment (m). */
+      const dealii::TrilinosWrappers::MPI::Vector &
+      solution() const;
+
+      const Fem::FeSpace<2> &
+      space() const;
+
+      const std::vector<ContactNode<2>> &
+      contact_nodes() const;
+
+      /** @brief Joint law evaluations at solution(). */
+      std::vector<JointResponse<2>>
+      responses_at_solution() const;
+
+    private:
+      struct LoadFactors
+      {
+        double gravity  = 0.;
+        double pressure = 0.;
+        double uplift   = 0.;
+      };
+
+      void
+      setup_contact();
+      void
+      run_stage(const LoadStage    stage,
+                const unsigned int n_increments,
+                SolveResult       &result);
+      bool
+      solve_load_state(const LoadFactors &factors,
+                       IncrementResult   &increment,
+                       std::string       &failure_reason);
+      bool
+      update_multipliers(const std::vector<JointResponse<2>> &responses);
+      Fem::ElasticModel<2>
+      scaled_model(const LoadFactors &factors) const;
+      dealii::AffineConstraints<double>
+      constraints_at(const double uplift_factor);
+      double
+      load_norm(const Fem::ElasticModel<2> &model);
+      void
+      commit(const std::vector<JointResponse<2>> &responses);
+      ForceBalance
+      force_balance(const Fem::ElasticModel<2>          &model,
+                    const std::vector<JointResponse<2>> &responses);
+      void
+      write_output(const std::vector<JointResponse<2>> &responses);
+
+      const SceneDefinition<2>      scene;
+      const ContactSolverSettings   settings;
+      const Fem::FeSpace<2>         fe_space;
+      std::vector<ContactNode<2>>   nodes;
+      std::vector<std::unique_ptr<CoulombJoint<2>>> joint_laws;
+      std::vector<const CoulombJoint<2> *>           pair_laws;
+      std::vector<bool>                              pair_is_rigid;
+      std::vector<JointHistory<2>>  committed_history;
+      std::vector<JointHistory<2>>  working_history;
+      std::vector<JointResponse<2>> committed_responses;
+      dealii::AffineConstraints<double> homogeneous_constraints;
+      dealii::IndexSet                  dirichlet_dofs;
+      std::vector<unsigned int>         dof_component;
+      dealii::TrilinosWrappers::SparsityPattern pattern;
+      dealii::TrilinosWrappers::SparseMatrix    matrix;
+      dealii::TrilinosWrappers::MPI::Vector     current_solution;
+      dealii::TrilinosWrappers::MPI::Vector     committed_solution;
+      dealii::TrilinosWrappers::MPI::Vector     newton_base;
+      dealii::TrilinosWrappers::MPI::Vector     update;
+      dealii::TrilinosWrappers::MPI::Vector     residual;
+      LoadFactors                               committed_factors;
+      ActiveSet                                 active_set;
+      StateCounts                               last_iterate_counts;
+      std::vector<std::string>                  failed_attempts;
+      std::vector<std::pair<double, std::string>> output_records;
+      dealii::ConditionalOStream                console;
+      dealii::TimerOutput                       timer;
+    };
+  } // namespace Contact
+} // namespace FloorBlock

@@ -1,0 +1,109 @@
+#include <contact/joint_report.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace FloorBlock
+{
+  namespace Contact
+  {
+    namespace
+    {
+      /** Rotates the normal by +90 degrees: the 2D joint tangent. */
+      dealii::Tensor<1, 2>
+      tangent_of(const dealii::Tensor<1, 2> &normal)
+      {
+        dealii::Tensor<1, 2> tangent;
+        tangent[0] = -normal[1];
+        tangent[1] = normal[0];
+        return tangent;
+      }
+
+      void
+      add_peaks(JointReport &report, const std::vector<double> &weights)
+      {
+        const auto &profile = report.profile;
+        for (unsigned int centre = 0; centre < profile.size(); ++centre)
+          {
+            if (profile[centre].normal_traction > report.peak_normal_stress)
+              {
+                report.peak_normal_stress = profile[centre].normal_traction;
+                report.peak_position      = profile[centre].position;
+              }
+            double force = 0., length = 0.;
+            for (unsigned int k = 0; k < profile.size(); ++k)
+              if (std::abs(profile[k].arc_position -
+                           profile[centre].arc_position) <=
+                  report.averaging_length / 2.)
+                {
+                  force += weights[k] * profile[k].normal_traction;
+                  length += weights[k];
+                }
+            if (length > 0.)
+              report.averaged_peak_normal_stress =
+                std::max(report.averaged_peak_normal_stress, force / length);
+          }
+      }
+    } // namespace
+
+    std::vector<JointReport>
+    make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
+                       const std::vector<JointResponse<2>> &responses,
+                       const std::vector<std::string>      &names,
+                       const double                         averaging_length)
+    {
+      std::vector<JointReport> reports(names.size());
+      std::vector<std::vector<unsigned int>> members(names.size());
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        members[nodes[p].joint].push_back(p);
+
+      for (unsigned int j = 0; j < names.size(); ++j)
+        {
+          JointReport &report     = reports[j];
+          report.name             = names[j];
+          report.averaging_length = averaging_length;
+          if (members[j].empty())
+            continue;
+          const ContactNode<2> &first = nodes[members[j].front()];
+          const dealii::Tensor<1, 2> tangent = tangent_of(first.normal);
+          std::sort(members[j].begin(),
+                    members[j].end(),
+                    [&](const unsigned int a, const unsigned int b) {
+                      return (nodes[a].position - first.position) * tangent <
+                             (nodes[b].position - first.position) * tangent;
+                    });
+          const dealii::Point<2> origin = nodes[members[j].front()].position;
+          std::vector<double>    weights;
+          for (const unsigned int p : members[j])
+            {
+              const JointResponse<2> &response = responses[p];
+              const double            weight   = nodes[p].weight;
+              JointNodeSample         sample;
+              sample.arc_position    = (nodes[p].position - origin) * tangent;
+              sample.position        = nodes[p].position;
+              sample.normal_traction = response.normal_traction;
+              sample.tangential_traction =
+                response.tangential_traction * tangent_of(nodes[p].normal);
+              sample.gap   = response.gap;
+              sample.state = response.state;
+              report.profile.push_back(sample);
+              weights.push_back(weight);
+              report.normal_force += weight * sample.normal_traction;
+              report.shear_force += weight * sample.tangential_traction;
+              if (response.state != JointState::open)
+                report.closed_length += weight;
+            }
+          std::vector<JointState> states;
+          for (const auto &sample : report.profile)
+            states.push_back(sample.state);
+          report.counts = count_states(states);
+          report.mean_normal_stress =
+            report.closed_length > 0. ?
+              report.normal_force / report.closed_length :
+              0.;
+          add_peaks(report, weights);
+        }
+      return reports;
+    }
+  } // namespace Contact
+} // namespace FloorBlock

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <contact/contact_node.h>
+#include <contact/joint_law.h>
+#include <contact/results.h>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock
+{
+  namespace Contact
+  {
+    /**
+     * @brief Per-joint forces, closed length, peak and mean normal stress.
+     *
+     * Nodal tractions are the pair tractions; forces integrate them with the
+     * lumped weights. The averaged peak is the largest weighted mean of
+     * \f$t_n\f$ over a window of length @p averaging_length centred on a
+     * node: the pointwise peak at a sharp corner grows without bound under
+     * refinement, the averaged one converges.
+     *
+     * @param[in] nodes All contact pairs.
+     * @param[in] responses Law evaluations of the converged state.
+     * @param[in] names One name per joint; pairs refer to it by index.
+     * @param[in] averaging_length Window length (m).
+     */
+    std::vector<JointReport>
+    make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
+                       const std::vector<JointResponse<2>> &responses,
+                       const std::vector<std::string>      &names,
+                       const double                         averaging_length);
+  } // namespace Contact
+} // namespace FloorBlock

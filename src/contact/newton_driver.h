@@ -1,0 +1,85 @@
+#pragma once
+
+#include <contact/active_set.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace FloorBlock
+{
+  namespace Contact
+  {
+    /** @brief Plain settings of the semi-smooth Newton iteration. */
+    struct NewtonSettings
+    {
+      /**
+       * Converged when the l2 norm of the condensed residual (N) is below
+       * this fraction of the reference force (the larger of the applied
+       * load norm and the first residual of the increment) ...
+       */
+      double relative_tolerance = 1e-10;
+      /** ... and the open/stick/slip set did not change in the last step. */
+      unsigned int max_iterations = 40;
+      /** Backtracking halvings tried before a full step is forced. */
+      unsigned int max_line_search_steps = 6;
+      /** Step length factor per backtracking step (-). */
+      double line_search_reduction = 0.5;
+      /** Armijo constant: accept if |R| <= (1 - c step)|R0| (-). */
+      double sufficient_decrease = 1e-4;
+      /** A set revisited this often (not consecutively) counts as cycling. */
+      unsigned int cycling_limit = 3;
+    };
+
+    /** @brief What the physics reports about the current iterate. */
+    struct NewtonIterate
+    {
+      /** l2 norm of the condensed residual (N). */
+      double residual_norm = 0.;
+      /** Hash of the open/stick/slip set. */
+      std::uint64_t set_signature = 0;
+      StateCounts   counts;
+    };
+
+    /**
+     * @brief The physics as seen by the Newton driver (Lethe-style
+     * callbacks): the driver never touches matrices or vectors.
+     */
+    struct NewtonCallbacks
+    {
+      /** Assemble matrix and residual at the current iterate. */
+      std::function<NewtonIterate()> assemble;
+      /** Solve for the Newton update; false (with a message) on failure. */
+      std::function<bool(std::string &message)> solve_update;
+      /** Set iterate = iterate at the last solve + step * update. */
+      std::function<void(double step)> set_step;
+    };
+
+    /** @brief Outcome of one Newton solve. */
+    struct NewtonReport
+    {
+      bool         converged    = false;
+      unsigned int n_iterations = 0;
+      /** Final residual over the reference force (-). */
+      double relative_residual = 0.;
+      /** Counts of the last evaluated iterate (converged or not). */
+      StateCounts counts;
+      /** Why it failed; empty on success. */
+      std::string failure_reason;
+    };
+
+    /**
+     * @brief Semi-smooth Newton with backtracking line search on the
+     * residual norm and a guard against active-set cycling.
+     *
+     * @param[in] settings Iteration controls.
+     * @param[in] load_norm Norm of the applied load vector (N), part of the
+     *   reference force.
+     * @param[in] callbacks The physics.
+     */
+    NewtonReport
+    solve_newton(const NewtonSettings  &settings,
+                 const double           load_norm,
+                 const NewtonCallbacks &callbacks);
+  } // namespace Contact
+} // namespace FloorBlock

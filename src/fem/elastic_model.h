@@ -1,0 +1,32 @@
+#pragma once
+
+#include <material/elastic_law.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <map>
+
+namespace FloorBlock
+{
+  namespace Fem
+  {
+    /**
+     * @brief Bulk physics of one load state: the elastic law and density of
+     * every material id, the gravity acceleration and the pressures on
+     * boundary ids. The load stepper scales gravity and pressures.
+     */
+    template <int dim>
+    struct ElasticModel
+    {
+      /** Elastic law per material id. */
+      std::map<dealii::types::material_id, Material::ElasticLaw<dim>> laws;
+      /** Mass density per material id (kg/m^3). */
+      std::map<dealii::types::material_id, double> densities;
+      /** Gravity acceleration vector (m/s^2), e.g. (0, -9.81). */
+      dealii::Tensor<1, dim> gravity;
+      /** Pressure on a boundary id (Pa), positive pushing into the body. */
+      std::map<dealii::types::boundary_id, double> pressures;
+    };
+  } // namespace Fem
+} // namespace FloorBlock

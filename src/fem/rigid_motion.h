@@ -1,0 +1,37 @@
+#pragma once
+
+#include <fem/fe_space.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <map>
+
+namespace FloorBlock
+{
+  namespace Fem
+  {
+    /** @brief Best-fit rigid motion of one body. */
+    template <int dim>
+    struct RigidMotion
+    {
+      /** Mean displacement of the body's vertices (m). */
+      dealii::Tensor<1, dim> translation;
+      /** Rotation about the vertex centroid, counter-clockwise (rad, 2D). */
+      double rotation = 0.;
+    };
+
+    /**
+     * @brief Least-squares rigid motion of each material id: translation is
+     * the mean vertex displacement, rotation
+     * \f$\theta = \sum r \times u / \sum |r|^2\f$ with \f$r\f$ the vertex
+     * position relative to the centroid (small rotations).
+     * @param[in] space FE space (2D).
+     * @param[in] solution Displacement (m).
+     * @return One entry per material id present in the mesh.
+     */
+    std::map<dealii::types::material_id, RigidMotion<2>>
+    fit_rigid_motions(const FeSpace<2>                            &space,
+                      const dealii::TrilinosWrappers::MPI::Vector &solution);
+  } // namespace Fem
+} // namespace FloorBlock

@@ -1,0 +1,41 @@
+#include <fem/sparsity.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <mpi.h>
+
+namespace FloorBlock
+{
+  namespace Fem
+  {
+    template <int dim>
+    void
+    make_sparsity(
+      const FeSpace<dim>                      &space,
+      const dealii::AffineConstraints<double> &constraints,
+      const std::vector<std::vector<dealii::types::global_dof_index>>
+                                                &coupled_groups,
+      dealii::TrilinosWrappers::SparsityPattern &pattern)
+    {
+      dealii::DynamicSparsityPattern dynamic(space.locally_relevant_dofs());
+      dealii::DoFTools::make_sparsity_pattern(space.dof_handler(),
+                                              dynamic,
+                                              constraints,
+                                              false);
+      for (const auto &group : coupled_groups)
+        constraints.add_entries_local_to_global(group, dynamic, false);
+      pattern.reinit(space.locally_owned_dofs(),
+                     space.locally_owned_dofs(),
+                     dynamic,
+                     MPI_COMM_WORLD);
+      pattern.compress();
+    }
+
+    template void
+    make_sparsity(const FeSpace<2> &,
+                  const dealii::AffineConstraints<double> &,
+                  const std::vector<std::vector<dealii::types::global_dof_index>> &,
+                  dealii::TrilinosWrappers::SparsityPattern &);
+  } // namespace Fem
+} // namespace FloorBlock

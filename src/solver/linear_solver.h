@@ -1,0 +1,66 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock
+{
+  namespace Solver
+  {
+    /** How the linear system of a Newton step is solved. */
+    enum class LinearSolverKind
+    {
+      automatic, ///< direct up to LinearSolverSettings::max_direct_dofs
+      direct,    ///< Amesos (KLU or UMFPACK)
+      iterative  ///< GMRES preconditioned by ML algebraic multigrid
+    };
+
+    /** @brief Plain settings of the linear solver (no ParameterHandler). */
+    struct LinearSolverSettings
+    {
+      LinearSolverKind kind = LinearSolverKind::automatic;
+      /** Largest system (number of DoFs) that `automatic` solves directly. */
+      unsigned int max_direct_dofs = 60000;
+      /** Amesos package: "Amesos_Klu" or "Amesos_Umfpack". */
+      std::string direct_package = "Amesos_Klu";
+      /** GMRES stop: residual below this fraction of the right-hand side. */
+      double relative_tolerance = 1e-10;
+      /** GMRES iteration cap. */
+      unsigned int max_iterations = 2000;
+    };
+
+    /** @brief What one linear solve did. */
+    struct LinearSolveInfo
+    {
+      bool         success       = false;
+      bool         used_direct   = false;
+      unsigned int n_iterations  = 0;
+      std::string  message;
+    };
+
+    /**
+     * @brief Solves \f$A x = b\f$ for a general (non-symmetric, because of
+     * friction) sparse matrix.
+     *
+     * @param[in] settings Which solver to use.
+     * @param[in] matrix The system matrix; constrained rows must carry a
+     *   non-zero diagonal.
+     * @param[in] rhs Right-hand side.
+     * @param[in] constant_modes Rigid translations per component (from
+     *   DoFTools::extract_constant_modes), used by ML; may be empty.
+     * @param[out] solution The solution; unchanged on failure.
+     * @return Success flag, which solver ran and its iteration count. A
+     *   failure never throws and never leaves NaN in @p solution.
+     */
+    LinearSolveInfo
+    solve_linear_system(
+      const LinearSolverSettings                  &settings,
+      const dealii::TrilinosWrappers::SparseMatrix &matrix,
+      const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+      const std::vector<std::vector<bool>>         &constant_modes,
+      dealii::TrilinosWrappers::MPI::Vector        &solution);
+  } // namespace Solver
+} // namespace FloorBlock
