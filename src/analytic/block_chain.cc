@@ -42,8 +42,7 @@ namespace FloorBlock
         }
       const bool sizes_ok = std::isfinite(chain.block_width) &&
                             std::isfinite(chain.block_height) &&
-                            chain.block_width > 0. &&
-                            chain.block_height > 0.;
+                            chain.block_width > 0. && chain.block_height > 0.;
       const bool position_ok = std::isfinite(chain.support_load_position) &&
                                chain.support_load_position >= 0. &&
                                chain.support_load_position <= 1.;

@@ -7,7 +7,7 @@ namespace FloorBlock
   namespace Analytic
   {
     CentroidHeights
-    centroid_heights(const BlockChain &chain,
+    centroid_heights(const BlockChain          &chain,
                      const std::vector<double> &lateral_force)
     {
       CentroidHeights result;

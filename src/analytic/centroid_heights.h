@@ -51,7 +51,7 @@ namespace FloorBlock
      * Q_i <= 0, invalid_input on bad inputs or a length mismatch.
      */
     CentroidHeights
-    centroid_heights(const BlockChain &chain,
+    centroid_heights(const BlockChain          &chain,
                      const std::vector<double> &lateral_force);
   } // namespace Analytic
 } // namespace FloorBlock

@@ -37,5 +37,5 @@ namespace FloorBlock
       bool
       all_finite(const ChainForces &forces);
     } // namespace Internal
-  } // namespace Analytic
+  }   // namespace Analytic
 } // namespace FloorBlock

@@ -24,13 +24,11 @@ namespace FloorBlock
                    const double block_height)
     {
       CornerContact contact;
-      const bool    inputs_ok = std::isfinite(lateral_force_over_width) &&
-                             lateral_force_over_width >= 0. &&
-                             std::isfinite(floor_lift) &&
-                             is_positive(youngs_modulus) &&
-                             is_positive(support_width) &&
-                             is_positive(block_width) &&
-                             is_positive(block_height);
+      const bool    inputs_ok =
+        std::isfinite(lateral_force_over_width) &&
+        lateral_force_over_width >= 0. && std::isfinite(floor_lift) &&
+        is_positive(youngs_modulus) && is_positive(support_width) &&
+        is_positive(block_width) && is_positive(block_height);
       if (!inputs_ok)
         {
           contact.status = Status::invalid_input;

@@ -36,8 +36,8 @@ namespace FloorBlock
           // Whole block widths between block (index) and the face.
           const double blocks_from_face =
             static_cast<double>(n_blocks - 1 - block);
-          inclinations.push_back(std::atan(
-            (2. * blocks_from_face + 1.) * block_width / curvature_length));
+          inclinations.push_back(std::atan((2. * blocks_from_face + 1.) *
+                                           block_width / curvature_length));
         }
       return inclinations;
     }
@@ -47,8 +47,14 @@ namespace FloorBlock
                      const double inclination_face_side,
                      const double block_width)
     {
-      return block_width *
-             std::tan(inclination_away_side - inclination_face_side);
+      require_positive(block_width, "Block width", "m");
+      const double relative_rotation =
+        inclination_away_side - inclination_face_side;
+      if (!(std::abs(relative_rotation) < M_PI_2))
+        throw InputError("Relative rotation of the joint faces",
+                         std::to_string(relative_rotation),
+                         "finite, between -pi/2 and pi/2 rad");
+      return block_width * std::tan(relative_rotation);
     }
 
     double

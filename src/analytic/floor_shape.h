@@ -44,6 +44,8 @@ namespace FloorBlock
      * @param[in] block_width L (m).
      * @return y (m); zero or negative means the joint does not close at the
      * top, which corner_contact() reports as zero_floor_lift.
+     * @throw FloorBlock::InputError for L <= 0 or a non-finite relative
+     * rotation, or one of 90 degrees or more.
      */
     double
     joint_floor_lift(const double inclination_away_side,

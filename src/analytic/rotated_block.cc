@@ -42,5 +42,5 @@ namespace FloorBlock
                chain.support_load[block] * support_arm;
       }
     } // namespace Internal
-  } // namespace Analytic
+  }   // namespace Analytic
 } // namespace FloorBlock

@@ -50,5 +50,5 @@ namespace FloorBlock
       load_moment_about_top_corner(const BlockChain &chain,
                                    const std::size_t block);
     } // namespace Internal
-  } // namespace Analytic
+  }   // namespace Analytic
 } // namespace FloorBlock

@@ -15,8 +15,7 @@ namespace FloorBlock
       first_block_exceeding_friction(const ChainForces &forces,
                                      const double       tan_vertical)
       {
-        for (std::size_t block = 0; block < forces.joint_shear.size();
-             ++block)
+        for (std::size_t block = 0; block < forces.joint_shear.size(); ++block)
           if (std::abs(forces.joint_shear[block]) >
               forces.lateral_force[block] * tan_vertical)
             return block + 1;
@@ -71,8 +70,9 @@ namespace FloorBlock
       Internal::check_no_tension(forces);
       if (forces.status != Status::ok)
         return forces;
-      const std::size_t slipping_block = first_block_exceeding_friction(
-        forces, std::tan(chain.vertical_friction));
+      const std::size_t slipping_block =
+        first_block_exceeding_friction(forces,
+                                       std::tan(chain.vertical_friction));
       if (slipping_block != 0)
         {
           forces.status        = Status::vertical_friction_exceeded;

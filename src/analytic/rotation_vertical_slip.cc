@@ -14,8 +14,7 @@ namespace FloorBlock
       std::size_t
       first_block_off_base(const ChainForces &forces, const double width)
       {
-        for (std::size_t block = 0;
-             block < forces.normal_force_offset.size();
+        for (std::size_t block = 0; block < forces.normal_force_offset.size();
              ++block)
           {
             const double offset = forces.normal_force_offset[block];
@@ -67,8 +66,7 @@ namespace FloorBlock
           const double lever_from_face_side =
             normal_force > 0. ?
               (Internal::load_moment_about_top_corner(chain, block) +
-               height * tan_bedding * normal_force -
-               width * incoming.normal) /
+               height * tan_bedding * normal_force - width * incoming.normal) /
                 normal_force :
               0.;
           forces.lateral_force.push_back(lateral_force);

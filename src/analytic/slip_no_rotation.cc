@@ -35,7 +35,7 @@ namespace FloorBlock
           if (locking <= Internal::singular_denominator)
             return Internal::no_finite_answer(Status::self_locking, block + 1);
 
-          const double increment = vertical_load * cos_alpha * a / locking;
+          const double increment     = vertical_load * cos_alpha * a / locking;
           const double lateral_force = previous_lateral_force + increment;
           forces.lateral_force.push_back(lateral_force);
           forces.normal_force.push_back(vertical_load * cos_alpha +

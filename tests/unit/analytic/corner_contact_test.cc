@@ -31,18 +31,21 @@ TEST(CornerContact, ShallReproduceTheHandComputedExample)
   EXPECT_NEAR(contact.max_stress / 1e6, 8.944272, hand_tolerance);
 }
 
-TEST(CornerContact, ShallSatisfyEquilibriumAndCompatibilityOfTheTriangularStress)
+TEST(CornerContact,
+     ShallSatisfyEquilibriumAndCompatibilityOfTheTriangularStress)
 {
   const CornerContact contact =
     corner_contact(force, lift, modulus, support_width, width, height);
   // Equilibrium: the triangle of height sigma_max over c carries Q.
-  EXPECT_NEAR(0.5 * contact.max_stress * contact.contact_length * support_width /
-                force,
-              1., 1e-12);
+  EXPECT_NEAR(0.5 * contact.max_stress * contact.contact_length *
+                support_width / force,
+              1.,
+              1e-12);
   // Compatibility: sigma_max = E * overlap / L, overlap = (y / L) c.
   EXPECT_NEAR(modulus * (lift / width) * contact.contact_length / width /
                 contact.max_stress,
-              1., 1e-12);
+              1.,
+              1e-12);
 }
 
 TEST(CornerContact, ShallScaleStressWithTheRootOfForceLiftAndModulus)
@@ -85,12 +88,14 @@ TEST(CornerContact, ShallGiveZeroStressForZeroForceAndRejectBadInput)
     corner_contact(0., lift, modulus, support_width, width, height);
   EXPECT_EQ(unloaded.status, Status::ok);
   EXPECT_EQ(unloaded.max_stress, 0.);
-  EXPECT_EQ(corner_contact(-1., lift, modulus, support_width, width, height).status,
-            Status::invalid_input);
-  EXPECT_EQ(corner_contact(force, lift, 0., support_width, width, height).status,
-            Status::invalid_input);
-  EXPECT_EQ(corner_contact(force, std::nan(""), modulus, support_width, width,
-                           height)
-              .status,
-            Status::invalid_input);
+  EXPECT_EQ(
+    corner_contact(-1., lift, modulus, support_width, width, height).status,
+    Status::invalid_input);
+  EXPECT_EQ(
+    corner_contact(force, lift, 0., support_width, width, height).status,
+    Status::invalid_input);
+  EXPECT_EQ(
+    corner_contact(force, std::nan(""), modulus, support_width, width, height)
+      .status,
+    Status::invalid_input);
 }

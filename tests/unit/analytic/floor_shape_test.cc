@@ -13,8 +13,8 @@ using namespace FloorBlock::Analytic;
 
 TEST(FloorShape, ShallGiveEachBlockTheChordSlopeOfTheParabola)
 {
-  const double       width = 1., curvature = 200.;
-  const std::size_t  n_blocks = 6;
+  const double              width = 1., curvature = 200.;
+  const std::size_t         n_blocks = 6;
   const std::vector<double> inclinations =
     parabolic_inclinations(n_blocks, width, curvature);
   ASSERT_EQ(inclinations.size(), n_blocks);
@@ -31,11 +31,12 @@ TEST(FloorShape, ShallGiveEachBlockTheChordSlopeOfTheParabola)
 
 TEST(FloorShape, ShallGiveTheFloorElevationAtXEqualLAsLiftAtTheFace)
 {
-  const double width = 1., curvature = 400.;
+  const double              width = 1., curvature = 400.;
   const std::vector<double> inclinations =
     parabolic_inclinations(3, width, curvature);
   EXPECT_NEAR(joint_floor_lift(inclinations.back(), 0., width),
-              width * width / curvature, 1e-15);
+              width * width / curvature,
+              1e-15);
   EXPECT_LT(joint_floor_lift(0., 0.01, width), 0.);
 }
 
@@ -55,4 +56,6 @@ TEST(FloorShape, ShallRejectNonPositiveSizesAsInputErrors)
   EXPECT_THROW(parabolic_inclinations(0, 1., 100.), InputError);
   EXPECT_THROW(parabolic_inclinations(3, 1., 0.), InputError);
   EXPECT_THROW(youngs_modulus_from_bulk_shear(-1., 1.), InputError);
+  EXPECT_THROW(joint_floor_lift(std::nan(""), 0., 1.), InputError);
+  EXPECT_THROW(joint_floor_lift(0.1, 0., 0.), InputError);
 }

@@ -72,7 +72,8 @@ namespace FloorBlock
         corners.away_top    = width * axes.along;
         corners.uphill_base = width * axes.along + (-height) * axes.normal;
         corners.face_base   = (-height) * axes.normal;
-        corners.centroid = (width / 2.) * axes.along + (-height / 2.) * axes.normal;
+        corners.centroid =
+          (width / 2.) * axes.along + (-height / 2.) * axes.normal;
         corners.support_point =
           ((1. - chain.support_load_position) * width) * axes.along;
         return corners;
@@ -107,17 +108,15 @@ namespace FloorBlock
                 const BlockPoints          &corners,
                 const Vector2               moment_point)
       {
-        const Vector2 weight = {0., -chain.weight[block]};
+        const Vector2 weight  = {0., -chain.weight[block]};
         const Vector2 support = {0., -chain.support_load[block]};
         system.add_rhs(first_row, -(weight.x + support.x));
         system.add_rhs(first_row + 1, -(weight.y + support.y));
         if (n_rows == 3)
-          system.add_rhs(first_row + 2,
-                         -(moment(corners.centroid + (-1.) * moment_point,
-                                  weight) +
-                           moment(corners.support_point +
-                                    (-1.) * moment_point,
-                                  support)));
+          system.add_rhs(
+            first_row + 2,
+            -(moment(corners.centroid + (-1.) * moment_point, weight) +
+              moment(corners.support_point + (-1.) * moment_point, support)));
       }
     } // namespace
 
@@ -130,29 +129,41 @@ namespace FloorBlock
       DenseSystem system(3 * n_blocks);
       for (unsigned int block = 0; block < n_blocks; ++block)
         {
-          const unsigned int row  = 3 * block;
-          const BlockFrame   axes = frame(chain.inclination[block]);
-          const BlockPoints  corners = points(chain, axes);
-          const Vector2      pivot   = corners.uphill_base;
+          const unsigned int row         = 3 * block;
+          const BlockFrame   axes        = frame(chain.inclination[block]);
+          const BlockPoints  corners     = points(chain, axes);
+          const Vector2      pivot       = corners.uphill_base;
           const Vector2      at_face_top = (-1.) * pivot;
           // Joint i on block i at T: +Q along, -V normal (own frame).
           add_force(system, row, 3, block, axes.along, at_face_top);
-          add_force(system, row, 3, n_blocks + block, (-1.) * axes.normal,
-                    at_face_top);
+          add_force(
+            system, row, 3, n_blocks + block, (-1.) * axes.normal, at_face_top);
           if (block > 0)
             {
               // Joint i-1, in the frame of block i-1, reversed, at the
               // away-side top corner of block i.
               const BlockFrame away_axes = frame(chain.inclination[block - 1]);
               const Vector2    at_away_top = corners.away_top + (-1.) * pivot;
-              add_force(system, row, 3, block - 1, (-1.) * away_axes.along,
+              add_force(system,
+                        row,
+                        3,
+                        block - 1,
+                        (-1.) * away_axes.along,
                         at_away_top);
-              add_force(system, row, 3, n_blocks + block - 1,
-                        away_axes.normal, at_away_top);
+              add_force(system,
+                        row,
+                        3,
+                        n_blocks + block - 1,
+                        away_axes.normal,
+                        at_away_top);
             }
           // Base: normal plus friction towards the face, through the pivot.
-          add_force(system, row, 3, 2 * n_blocks + block,
-                    axes.normal + (-tan_bedding) * axes.along, {0., 0.});
+          add_force(system,
+                    row,
+                    3,
+                    2 * n_blocks + block,
+                    axes.normal + (-tan_bedding) * axes.along,
+                    {0., 0.});
           add_loads(system, row, 3, chain, block, corners, pivot);
         }
       const std::vector<double> unknowns = system.solve();
@@ -177,21 +188,32 @@ namespace FloorBlock
       DenseSystem system(2 * n_blocks);
       for (unsigned int block = 0; block < n_blocks; ++block)
         {
-          const unsigned int row  = 2 * block;
-          const BlockFrame   axes = frame(chain.inclination[block]);
+          const unsigned int row     = 2 * block;
+          const BlockFrame   axes    = frame(chain.inclination[block]);
           const BlockPoints  corners = points(chain, axes);
-          add_force(system, row, 2, block,
-                    axes.along + (-tan_vertical) * axes.normal, {0., 0.});
+          add_force(system,
+                    row,
+                    2,
+                    block,
+                    axes.along + (-tan_vertical) * axes.normal,
+                    {0., 0.});
           if (block > 0)
             {
               const BlockFrame away_axes = frame(chain.inclination[block - 1]);
-              add_force(system, row, 2, block - 1,
+              add_force(system,
+                        row,
+                        2,
+                        block - 1,
                         (-1.) * away_axes.along +
                           tan_vertical * away_axes.normal,
                         {0., 0.});
             }
-          add_force(system, row, 2, n_blocks + block,
-                    axes.normal + (-tan_bedding) * axes.along, {0., 0.});
+          add_force(system,
+                    row,
+                    2,
+                    n_blocks + block,
+                    axes.normal + (-tan_bedding) * axes.along,
+                    {0., 0.});
           add_loads(system, row, 2, chain, block, corners, {0., 0.});
         }
       const std::vector<double> unknowns = system.solve();

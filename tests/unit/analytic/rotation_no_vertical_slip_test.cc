@@ -17,7 +17,8 @@ using namespace FloorBlock::AnalyticTest;
 namespace
 {
   void
-  expect_same_forces(const ChainForces &forces, const RotatedChainSolution &solution)
+  expect_same_forces(const ChainForces          &forces,
+                     const RotatedChainSolution &solution)
   {
     ASSERT_EQ(forces.lateral_force.size(), solution.lateral_force.size());
     for (std::size_t block = 0; block < forces.lateral_force.size(); ++block)
@@ -31,17 +32,19 @@ namespace
                                       solution.normal_force[block]),
                   solve_tolerance);
         EXPECT_LT(std::abs(forces.joint_shear[block] -
-                           solution.joint_shear[block]) / scale,
+                           solution.joint_shear[block]) /
+                    scale,
                   solve_tolerance);
       }
   }
 } // namespace
 
-TEST(RotationNoVerticalSlip, ShallMatchIndependentEquilibriumSolveOnCurvedBedding)
+TEST(RotationNoVerticalSlip,
+     ShallMatchIndependentEquilibriumSolveOnCurvedBedding)
 {
   // Stubby blocks (H tan phi_h well below L) so the recursion is stable.
-  BlockChain chain   = irregular_chain();
-  chain.block_height = 1.5;
+  BlockChain chain         = irregular_chain();
+  chain.block_height       = 1.5;
   const ChainForces forces = rotation_no_vertical_slip(chain);
   expect_same_forces(forces, solve_rotated_chain_without_joint_slip(chain));
 }
@@ -53,9 +56,9 @@ TEST(RotationNoVerticalSlip, ShallGiveQnEqualSumNTanPhiOnLevelBedding)
   BlockChain chain = irregular_chain();
   chain.inclination.assign(chain.n_blocks(), 0.);
   const ChainForces forces = rotation_no_vertical_slip(chain);
-  const double      sum_normal = std::accumulate(forces.normal_force.begin(),
-                                            forces.normal_force.end(), 0.);
-  const double      sum_loads =
+  const double      sum_normal =
+    std::accumulate(forces.normal_force.begin(), forces.normal_force.end(), 0.);
+  const double sum_loads =
     std::accumulate(chain.weight.begin(), chain.weight.end(), 0.) +
     std::accumulate(chain.support_load.begin(), chain.support_load.end(), 0.);
   EXPECT_LT(relative_difference(forces.lateral_force.back(),
@@ -66,36 +69,40 @@ TEST(RotationNoVerticalSlip, ShallGiveQnEqualSumNTanPhiOnLevelBedding)
             solve_tolerance);
 }
 
-TEST(RotationNoVerticalSlip, ShallGiveEquation6_30bForTheFirstBlockOnLevelBedding)
+TEST(RotationNoVerticalSlip,
+     ShallGiveEquation6_30bForTheFirstBlockOnLevelBedding)
 {
   // 6.29/6.30b: N_1 = 0.5 L (W + P) / (L - H tan phi_h), Q_1 = N_1 tan phi_h.
-  const double weight = 49.05e3, support = 20.e3, width = 1., height = 2.;
-  const double phi_h  = degrees(12.);
+  const double      weight = 49.05e3, support = 20.e3, width = 1., height = 2.;
+  const double      phi_h  = degrees(12.);
   const ChainForces forces = rotation_no_vertical_slip(
     uniform_chain(1, weight, support, 0., width, height, phi_h, degrees(40.)));
-  const double normal = 0.5 * width * (weight + support) /
-                        (width - height * std::tan(phi_h));
-  EXPECT_LT(relative_difference(forces.normal_force[0], normal), solve_tolerance);
+  const double normal =
+    0.5 * width * (weight + support) / (width - height * std::tan(phi_h));
+  EXPECT_LT(relative_difference(forces.normal_force[0], normal),
+            solve_tolerance);
   EXPECT_LT(relative_difference(forces.lateral_force[0],
                                 normal * std::tan(phi_h)),
             solve_tolerance);
 }
 
-TEST(RotationNoVerticalSlip, ShallReportTheSingularityOf6_29ForTheChaptersBlocks)
+TEST(RotationNoVerticalSlip,
+     ShallReportTheSingularityOf6_29ForTheChaptersBlocks)
 {
   // H = 2 m, L = 1 m: L - H tan(phi_h) <= 0 from phi_h = atan(1/2) = 26.57 deg.
   for (const double phi_h : {std::atan(0.5), degrees(30.), degrees(35.)})
     {
-      const ChainForces forces = rotation_no_vertical_slip(
-        uniform_chain(6, 49.05e3, 0., degrees(2.), 1., 2., phi_h, degrees(30.)));
+      const ChainForces forces = rotation_no_vertical_slip(uniform_chain(
+        6, 49.05e3, 0., degrees(2.), 1., 2., phi_h, degrees(30.)));
       EXPECT_EQ(forces.status, Status::rotation_denominator_nonpositive);
       EXPECT_TRUE(forces.lateral_force.empty());
     }
-  EXPECT_NE(rotation_no_vertical_slip(
-              uniform_chain(6, 49.05e3, 0., degrees(2.), 1., 2., degrees(26.),
-                            degrees(30.)))
-              .status,
-            Status::rotation_denominator_nonpositive);
+  EXPECT_NE(
+    rotation_no_vertical_slip(
+      uniform_chain(
+        6, 49.05e3, 0., degrees(2.), 1., 2., degrees(26.), degrees(30.)))
+      .status,
+    Status::rotation_denominator_nonpositive);
 }
 
 TEST(RotationNoVerticalSlip, ShallReportWhenJointFrictionCannotHoldTheShear)

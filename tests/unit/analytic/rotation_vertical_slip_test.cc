@@ -15,9 +15,10 @@ using namespace FloorBlock::AnalyticTest;
 
 TEST(RotationVerticalSlip, ShallMatchIndependentEquilibriumSolveOnCurvedBedding)
 {
-  const BlockChain           chain    = irregular_chain();
-  const ChainForces          forces   = rotation_vertical_slip(chain);
-  const RotatedChainSolution solution = solve_rotated_chain_with_joint_slip(chain);
+  const BlockChain           chain  = irregular_chain();
+  const ChainForces          forces = rotation_vertical_slip(chain);
+  const RotatedChainSolution solution =
+    solve_rotated_chain_with_joint_slip(chain);
   for (std::size_t block = 0; block < chain.n_blocks(); ++block)
     {
       EXPECT_LT(relative_difference(forces.lateral_force[block],
@@ -35,12 +36,12 @@ TEST(RotationVerticalSlip, ShallMatchIndependentEquilibriumSolveOnCurvedBedding)
 
 TEST(RotationVerticalSlip, ShallReduceToEquation6_46OnPlanarBedding)
 {
-  BlockChain chain = irregular_chain();
+  BlockChain   chain = irregular_chain();
   const double alpha = degrees(7.);
   chain.inclination.assign(chain.n_blocks(), alpha);
-  const ChainForces forces = rotation_vertical_slip(chain);
-  const double      tan_h  = std::tan(chain.bedding_friction);
-  const double      tan_v  = std::tan(chain.vertical_friction);
+  const ChainForces forces   = rotation_vertical_slip(chain);
+  const double      tan_h    = std::tan(chain.bedding_friction);
+  const double      tan_v    = std::tan(chain.vertical_friction);
   double            expected = 0.;
   for (std::size_t block = 0; block < chain.n_blocks(); ++block)
     {
@@ -67,8 +68,8 @@ TEST(RotationVerticalSlip, ShallCoincideWithSlipWithoutRotationOnLevelBedding)
 
 TEST(RotationVerticalSlip, ShallReportSelfLockingWhenTheFrictionAnglesSumTo90)
 {
-  const ChainForces forces = rotation_vertical_slip(
-    uniform_chain(3, 49.05e3, 0., degrees(3.), 1., 2., degrees(45.), degrees(45.)));
+  const ChainForces forces = rotation_vertical_slip(uniform_chain(
+    3, 49.05e3, 0., degrees(3.), 1., 2., degrees(45.), degrees(45.)));
   EXPECT_EQ(forces.status, Status::self_locking);
   EXPECT_TRUE(forces.lateral_force.empty());
 }

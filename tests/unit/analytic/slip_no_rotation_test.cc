@@ -133,8 +133,8 @@ TEST(SlipNoRotation, ShallScaleLinearlyWithLoadsAndNotWithBlockSize)
 TEST(SlipNoRotation, ShallReportSelfLockingInsteadOfInfiniteThrust)
 {
   // a c = (sin 30 + tan 45 cos 30)^2 = 1.87 > 1: no finite Q slides the chain.
-  const ChainForces forces = slip_no_rotation(
-    uniform_chain(3, 50.e3, 0., degrees(30.), 1., 2., degrees(45.), degrees(45.)));
+  const ChainForces forces = slip_no_rotation(uniform_chain(
+    3, 50.e3, 0., degrees(30.), 1., 2., degrees(45.), degrees(45.)));
   EXPECT_EQ(forces.status, Status::self_locking);
   EXPECT_EQ(forces.failing_block, 1u);
   EXPECT_TRUE(forces.lateral_force.empty());
@@ -144,8 +144,8 @@ TEST(SlipNoRotation, ShallReportOpeningJointsOnBeddingDippingToTheFace)
 {
   // alpha = -30 deg < -phi_h: the blocks slide away from the face by
   // themselves, the joints would need tension.
-  const ChainForces forces = slip_no_rotation(
-    uniform_chain(3, 50.e3, 0., degrees(-30.), 1., 2., degrees(10.), degrees(20.)));
+  const ChainForces forces = slip_no_rotation(uniform_chain(
+    3, 50.e3, 0., degrees(-30.), 1., 2., degrees(10.), degrees(20.)));
   EXPECT_EQ(forces.status, Status::joint_opens);
   EXPECT_EQ(forces.failing_block, 1u);
   ASSERT_EQ(forces.lateral_force.size(), 3u);
@@ -158,13 +158,15 @@ TEST(SlipNoRotation, ShallRejectInvalidInputsWithAStatus)
   negative_weight.weight[2]  = -1.;
   BlockChain short_vector    = irregular_chain();
   short_vector.inclination.pop_back();
-  BlockChain vertical_friction  = irregular_chain();
+  BlockChain vertical_friction        = irregular_chain();
   vertical_friction.vertical_friction = M_PI_2;
-  BlockChain not_a_number       = irregular_chain();
-  not_a_number.block_height     = std::nan("");
-  for (const BlockChain &chain :
-       {negative_weight, short_vector, vertical_friction, not_a_number,
-        BlockChain()})
+  BlockChain not_a_number             = irregular_chain();
+  not_a_number.block_height           = std::nan("");
+  for (const BlockChain &chain : {negative_weight,
+                                  short_vector,
+                                  vertical_friction,
+                                  not_a_number,
+                                  BlockChain()})
     {
       EXPECT_EQ(slip_no_rotation(chain).status, Status::invalid_input);
       EXPECT_TRUE(slip_no_rotation(chain).lateral_force.empty());
@@ -174,8 +176,8 @@ TEST(SlipNoRotation, ShallRejectInvalidInputsWithAStatus)
 TEST(CentroidHeights, ShallReproduceEquation6_20ForEqualUnloadedBlocks)
 {
   const double alpha = degrees(6.), phi_h = degrees(18.), phi_v = degrees(28.);
-  const double width       = 1.;
-  const BlockChain chain   =
+  const double width = 1.;
+  const BlockChain chain =
     uniform_chain(6, 49.05e3, 0., alpha, width, 2., phi_h, phi_v);
   const CentroidHeights heights =
     centroid_heights(chain, slip_no_rotation(chain).lateral_force);
@@ -213,10 +215,10 @@ TEST(CentroidHeights, ShallReproduceCorrected6_25WithLoadAtTheFaceSideEdge)
   for (std::size_t block = 0; block < chain.n_blocks(); ++block)
     {
       const double chapter_i = block + 1.;
-      const double expected =
-        width * (support_load + weight / 2.) * denominator /
-          ((weight + support_load) * std::cos(alpha)) +
-        (chapter_i + 1.) * width * std::tan(phi_v) / 2.;
+      const double expected  = width * (support_load + weight / 2.) *
+                                denominator /
+                                ((weight + support_load) * std::cos(alpha)) +
+                              (chapter_i + 1.) * width * std::tan(phi_v) / 2.;
       EXPECT_LT(relative_difference(heights.centroid_height[block], expected),
                 solve_tolerance);
     }
@@ -235,7 +237,7 @@ TEST(CentroidHeights, ShallSatisfyTheMomentBalanceAboutTheBlockCentre)
   const double          tan_h = std::tan(chain.bedding_friction);
   for (std::size_t block = 1; block < chain.n_blocks(); ++block)
     {
-      const double q_own = forces.lateral_force[block];
+      const double q_own  = forces.lateral_force[block];
       const double q_away = forces.lateral_force[block - 1];
       const double normal = forces.normal_force[block];
       const double left =
@@ -244,8 +246,7 @@ TEST(CentroidHeights, ShallSatisfyTheMomentBalanceAboutTheBlockCentre)
       const double right =
         (q_own + q_away) * width / 2. * tan_v + normal * width / 2. +
         q_away * (heights.centroid_height[block - 1] - height / 2.) +
-        chain.support_load[block] *
-          (chain.support_load_position - 0.5) * width;
+        chain.support_load[block] * (chain.support_load_position - 0.5) * width;
       EXPECT_LT(relative_difference(left, right), solve_tolerance);
     }
 }
@@ -275,7 +276,7 @@ TEST(CentroidHeights, ShallFlagRotationWhenTheResultantRisesAboveTheBlock)
 
 TEST(CentroidHeights, ShallReportAZeroLateralForceInsteadOfDividingByIt)
 {
-  const BlockChain chain = uniform_chain(2, 50.e3, 0., 0., 1., 2., 0., 0.);
+  const BlockChain      chain = uniform_chain(2, 50.e3, 0., 0., 1., 2., 0., 0.);
   const CentroidHeights heights =
     centroid_heights(chain, slip_no_rotation(chain).lateral_force);
   EXPECT_EQ(heights.status, Status::joint_opens);

@@ -10,16 +10,16 @@ using namespace FloorBlock::Analytic;
 
 TEST(Status, ShallDescribeEveryStatusInWordsWithADistinctName)
 {
-  const Status all[] = {Status::ok,
-                        Status::invalid_input,
-                        Status::self_locking,
-                        Status::rotation_denominator_nonpositive,
-                        Status::vertical_friction_exceeded,
-                        Status::joint_opens,
-                        Status::base_lifts_off,
-                        Status::normal_force_outside_base,
-                        Status::zero_floor_lift,
-                        Status::contact_longer_than_block};
+  const Status          all[] = {Status::ok,
+                                 Status::invalid_input,
+                                 Status::self_locking,
+                                 Status::rotation_denominator_nonpositive,
+                                 Status::vertical_friction_exceeded,
+                                 Status::joint_opens,
+                                 Status::base_lifts_off,
+                                 Status::normal_force_outside_base,
+                                 Status::zero_floor_lift,
+                                 Status::contact_longer_than_block};
   std::set<std::string> names;
   for (const Status status : all)
     {

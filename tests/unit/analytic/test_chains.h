@@ -26,10 +26,10 @@ namespace FloorBlock
       Analytic::BlockChain chain;
       chain.weight       = {41.e3, 55.e3, 47.e3, 60.e3, 52.e3};
       chain.support_load = {300.e3, 0., 150.e3, 0., 80.e3};
-      chain.inclination  = {degrees(9.), degrees(7.5), degrees(5.), degrees(3.),
-                            degrees(1.)};
-      chain.block_width  = 1.2;
-      chain.block_height = 2.;
+      chain.inclination  = {
+         degrees(9.), degrees(7.5), degrees(5.), degrees(3.), degrees(1.)};
+      chain.block_width           = 1.2;
+      chain.block_height          = 2.;
       chain.bedding_friction      = degrees(12.);
       chain.vertical_friction     = degrees(30.);
       chain.support_load_position = 0.3;
