@@ -11,14 +11,15 @@ namespace FloorBlock::Parameters
   BeddingParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Bedding");
-    prm.declare_entry("Shape", "planar", Selection("planar|parabolic"),
+    prm.declare_entry("Shape", "parabolic", Selection("planar|parabolic"),
                       "Shape of the failed bedding plane: planar (constant "
                       "inclination) or parabolic y = x^2/k with x measured "
                       "from the face. Units: none.");
-    prm.declare_entry("Inclination", "10", Double(-60, 60),
+    prm.declare_entry("Inclination", "1", Double(-60, 60),
                       "Inclination alpha of a planar bedding, positive when the "
                       "bedding rises away from the face (the chapter's sense: "
-                      "the base pushes the blocks toward the face). "
+                      "the base pushes the blocks toward the face). The "
+                      "chapter's planar quotes imply a nearly level bed. "
                       "Units: degrees.");
     prm.declare_entry("Curvature", "400", Double(1, 1.0e6),
                       "Parameter k of a parabolic bedding y = x^2/k (the "

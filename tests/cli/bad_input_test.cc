@@ -1,0 +1,121 @@
+#include "process.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace FloorBlockTest;
+
+namespace
+{
+  /**
+   * One bad input: either a scene file text (written to a temporary .prm or
+   * .json) or overrides of the default scene, and a phrase the error message
+   * must contain (the parameter, or what is wrong).
+   */
+  struct BadInput
+  {
+    std::string name;
+    std::string scene_text;     ///< empty: params/default.prm
+    std::string scene_extension;
+    std::string arguments;      ///< extra command-line arguments
+    std::string must_mention;
+  };
+
+  std::ostream &
+  operator<<(std::ostream &out, const BadInput &input)
+  {
+    return out << input.name;
+  }
+
+  const BadInput bad_inputs[] = {
+    {"friction_95_deg", "", "", "--set 'Joints/Bedding friction angle=95'",
+     "Joints/Bedding friction angle"},
+    {"friction_exactly_90_deg", "", "",
+     "--set 'Joints/Vertical friction angle=90'", "89.9"},
+    {"negative_block_width", "", "", "--set 'Geometry/Block width=-1'",
+     "Geometry/Block width"},
+    {"zero_block_height", "", "", "--set 'Geometry/Block height=0'",
+     "Geometry/Block height"},
+    {"zero_blocks", "", "", "--set 'Geometry/Number of blocks=0'",
+     "Number of blocks"},
+    {"too_many_blocks", "", "", "--set 'Geometry/Number of blocks=100'",
+     "Number of blocks"},
+    {"unknown_entry_override", "", "", "--set 'Joints/Friction=20'",
+     "Friction"},
+    {"unknown_subsection_override", "", "", "--set 'Rock/Density=20'",
+     "Density"},
+    {"override_without_equals", "", "", "--set 'Joints/Cohesion'",
+     "Subsection/Entry name=value"},
+    {"not_a_number", "", "", "--set 'Material/Density=heavy'", "heavy"},
+    {"negative_support_load", "", "", "--set 'Loading/Support load=-5'",
+     "Support load"},
+    {"negative_bulk_modulus", "", "", "--set 'Material/Bulk modulus=-9e9'",
+     "Bulk modulus"},
+    {"unknown_bedding_shape", "", "", "--set 'Bedding/Shape=curved'",
+     "curved"},
+    {"malformed_loaded_list", "", "", "--set 'Loading/Loaded blocks=4,x'",
+     "Loaded blocks"},
+    {"loaded_block_beyond_n", "", "",
+     "--set 'Geometry/Number of blocks=3' --set 'Loading/Loaded blocks=4'",
+     "Loading/Loaded blocks"},
+    {"duplicate_loaded_block", "", "", "--set 'Loading/Loaded blocks=2,2'",
+     "only once"},
+    {"corner_radius_too_large", "", "",
+     "--set 'Geometry/Corner rounding radius=0.4'", "Corner rounding radius"},
+    {"corner_size_above_far_size", "", "",
+     "--set 'Mesh/Corner size=0.5' --set 'Mesh/Far size=0.3'", "Corner size"},
+    {"unknown_entry_in_file",
+     "subsection Joints\n  set Bedding fricton angle = 20\nend\n", ".prm", "",
+     "Bedding fricton angle"},
+    {"unknown_subsection_in_file", "subsection Jonts\nend\n", ".prm", "",
+     "Jonts"},
+    {"out_of_range_in_file_names_line",
+     "\nsubsection Geometry\n  set Block width = -2\nend\n", ".prm", "",
+     "Line <3>"},
+    {"unbalanced_subsection_in_file", "subsection Geometry\n", ".prm", "",
+     "subsection"},
+    {"malformed_json", "{\"Geometry\": {", ".json", "", ".json"},
+    {"missing_scene_file", "", "", "", "does not exist"},
+    {"unknown_command_line_option", "", "", "--frobnicate", "frobnicate"},
+  };
+
+  class BadInputTest : public ::testing::TestWithParam<BadInput>
+  {};
+} // namespace
+
+// The tool shall refuse each bad input with exit code 2, one message naming
+// what is wrong, and no results folder.
+TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
+{
+  const BadInput &input  = GetParam();
+  const std::string output = fresh_output_folder(input.name);
+
+  std::string scene = "params/default.prm";
+  if (!input.scene_text.empty())
+    {
+      scene = output + "_scene" + input.scene_extension;
+      std::ofstream(scene) << input.scene_text;
+    }
+  else if (input.name == "missing_scene_file")
+    scene = "params/no_such_scene.prm";
+
+  const ProcessResult result =
+    run_floorblock("analytic " + shell_quoted(scene) + " " + input.arguments +
+                   " --output " + shell_quoted(output));
+
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(input.must_mention), std::string::npos)
+    << "message does not mention '" << input.must_mention
+    << "':\n" << result.output;
+  EXPECT_FALSE(std::filesystem::exists(output)) << "a results folder was written";
+  if (!input.scene_text.empty())
+    std::filesystem::remove(scene);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  EveryDocumentedCase,
+  BadInputTest,
+  ::testing::ValuesIn(bad_inputs),
+  [](const ::testing::TestParamInfo<BadInput> &info) { return info.param.name; });

@@ -1,0 +1,45 @@
+#include "process.h"
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace FloorBlockTest
+{
+  ProcessResult
+  run_floorblock(const std::string &arguments)
+  {
+    const std::string command = std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
+                                " && " + FLOORBLOCK_EXECUTABLE + " " +
+                                arguments + " 2>&1";
+    FILE *pipe = ::popen(command.c_str(), "r");
+    std::string           output;
+    std::array<char, 4096> buffer;
+    while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+      output.append(buffer.data(), n);
+    const int status = ::pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  }
+
+  std::string
+  fresh_output_folder(const std::string &name)
+  {
+    const auto folder = std::filesystem::temp_directory_path() /
+                        ("floorblock_cli_" + std::to_string(::getpid()) + "_" +
+                         name);
+    std::filesystem::remove_all(folder);
+    return folder.string();
+  }
+
+  std::string
+  shell_quoted(const std::string &text)
+  {
+    std::string result = "'";
+    for (const char c : text)
+      result += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return result + "'";
+  }
+} // namespace FloorBlockTest
