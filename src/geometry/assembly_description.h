@@ -60,7 +60,14 @@ namespace FloorBlock::Geometry
     double curvature = 400.0;
     FloorUplift floor_uplift = FloorUplift::inclined_bedding;
 
-    /** Radius of the corner fillets; 0 = sharp corners. Units: m. */
+    /**
+     * Corner rounding (Geometry/Corner rounding radius): each fillet starts
+     * this far from the corner along the vertical side, as UDEC's corner
+     * rounding length does, so both sides of a vertical joint keep the same
+     * straight part. It is the arc radius at a right-angled corner; at an
+     * interior angle theta the arc radius is r tan(theta/2). 0 = sharp.
+     * Units: m.
+     */
     double corner_rounding_radius = 0.0;
 
     /** Target cell size at the contact corners. Units: m. */

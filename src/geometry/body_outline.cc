@@ -54,15 +54,27 @@ namespace FloorBlock::Geometry
     }
 
     /**
-     * Fillet of radius r in the corner between the vertical line x = x_side
-     * and the curve y = profile(x) + shift. The body lies towards
-     * inward_x (+1: x > x_side) and inward_y (+1: above the curve).
-     * The circle centre is (x_side + inward_x r, .) and, seen from the
-     * tangent point x_t on the curve, lies r along the inward unit normal
-     * inward_y (-y', 1)/sqrt(1 + y'^2). Equating the x components gives
-     * f(x_t) = x_t - inward_y r s(x_t) - x_side - inward_x r = 0 with
-     * s = y'/sqrt(1 + y'^2), |s| < 1, so f changes sign on
-     * [x_side, x_side + 2 r inward_x]: bisection finds x_t to round-off.
+     * Fillet in the corner between the vertical line x = x_side and the
+     * curve y = profile(x) + shift, starting at the distance d (the
+     * rounding length, as UDEC defines its corner rounding) from the corner
+     * along the vertical side. The body lies towards inward_x (+1: x >
+     * x_side) and inward_y (+1: above the curve).
+     *
+     * Because both bodies of a vertical joint start their fillets at the
+     * same height, the straight parts of the two joint sides coincide. The
+     * arc radius follows from tangency: on a flat bedding it is d; at an
+     * interior angle theta between straight edges it is d tan(theta/2).
+     *
+     * Unknowns: the tangent point x_t on the curve and the radius rho. The
+     * centre is (x_side + inward_x rho, y_s) seen from the side and
+     * (x_t, y(x_t)) + rho inward_y (-y', 1)/sqrt(1 + y'^2) seen from the
+     * curve. The x components give rho(x_t) = (x_t - x_side) /
+     * (inward_x + inward_y s(x_t)) with s = y'/sqrt(1 + y'^2), |s| < 1; the
+     * y components leave g(x_t) = y(x_t) + inward_y rho(x_t) / sqrt(1 +
+     * y'^2) - y_s, which is -inward_y d at x_t = x_side and changes sign
+     * once the circle reaches y_s. Bisection finds x_t to round-off.
+     * Returns rounded = false with no fillet when no sign change occurs
+     * within @p reach (the fillet does not fit).
      */
     Corner
     corner(const BeddingProfile &profile,
@@ -70,41 +82,49 @@ namespace FloorBlock::Geometry
            const double          inward_x,
            const double          inward_y,
            const double          shift,
-           const double          radius)
+           const double          rounding_length,
+           const double          reach,
+           bool                 &fits)
     {
       const Point2 sharp = point_on(profile, x_side, shift);
-      if (radius == 0.0)
+      if (rounding_length == 0.0)
         return {sharp, sharp, sharp, false};
 
-      const auto sine_of_slope = [&](const double x) {
-        const double slope = profile.slope(x);
-        return slope / std::sqrt(1.0 + slope * slope);
+      const double side_y = sharp.y + inward_y * rounding_length;
+      const auto   radius_at = [&](const double x_tangent) {
+        const double slope = profile.slope(x_tangent);
+        const double sine  = slope / std::sqrt(1.0 + slope * slope);
+        return (x_tangent - x_side) / (inward_x + inward_y * sine);
       };
-      const auto mismatch = [&](const double x) {
-        return x - inward_y * radius * sine_of_slope(x) - x_side -
-               inward_x * radius;
+      const auto mismatch = [&](const double x_tangent) {
+        const double slope = profile.slope(x_tangent);
+        return profile.height(x_tangent) + shift +
+               inward_y * radius_at(x_tangent) / std::sqrt(1.0 + slope * slope) -
+               side_y;
       };
+      double toward_side = x_side;
+      double away        = x_side + inward_x * reach;
+      if ((mismatch(away) > 0.0) != (inward_y > 0.0))
+        {
+          fits = false;
+          return {sharp, sharp, sharp, false};
+        }
       // 200 halvings shrink the bracket far below one ulp of x.
       constexpr unsigned int max_bisections = 200;
-      double toward_side = x_side;
-      double away        = x_side + 2.0 * radius * inward_x;
       for (unsigned int step = 0; step < max_bisections; ++step)
         {
           const double middle = (toward_side + away) / 2.0;
           if (middle == toward_side || middle == away)
             break;
-          if ((mismatch(middle) > 0.0) == (inward_x > 0.0))
+          if ((mismatch(middle) > 0.0) == (inward_y > 0.0))
             away = middle;
           else
             toward_side = middle;
         }
       const double x_tangent = (toward_side + away) / 2.0;
-      const double slope     = profile.slope(x_tangent);
-      const double centre_y  = profile.height(x_tangent) + shift +
-                              inward_y * radius / std::sqrt(1.0 + slope * slope);
-      return {{x_side, centre_y},
+      return {{x_side, side_y},
               point_on(profile, x_tangent, shift),
-              {x_side + inward_x * radius, centre_y},
+              {x_side + inward_x * radius_at(x_tangent), side_y},
               true};
     }
 
@@ -112,12 +132,15 @@ namespace FloorBlock::Geometry
     body_corners(const BeddingProfile &profile,
                  const BlockFrame     &frame,
                  const double          height,
-                 const double          radius)
+                 const double          rounding_length,
+                 bool                 &fits)
     {
-      return {corner(profile, frame.x_left, +1.0, +1.0, 0.0, radius),
-              corner(profile, frame.x_right, -1.0, +1.0, 0.0, radius),
-              corner(profile, frame.x_right, -1.0, -1.0, height, radius),
-              corner(profile, frame.x_left, +1.0, -1.0, height, radius)};
+      const double reach = frame.x_right - frame.x_left;
+      return {
+        corner(profile, frame.x_left, +1.0, +1.0, 0.0, rounding_length, reach, fits),
+        corner(profile, frame.x_right, -1.0, +1.0, 0.0, rounding_length, reach, fits),
+        corner(profile, frame.x_right, -1.0, -1.0, height, rounding_length, reach, fits),
+        corner(profile, frame.x_left, +1.0, -1.0, height, rounding_length, reach, fits)};
     }
 
     Segment
@@ -233,10 +256,12 @@ namespace FloorBlock::Geometry
 
     /** Midpoint of a fillet arc, or the sharp corner itself. */
     Point2
-    corner_middle(const Corner &corner, const double radius)
+    corner_middle(const Corner &corner)
     {
       if (!corner.rounded)
         return corner.side_point;
+      const double radius = std::hypot(corner.side_point.x - corner.centre.x,
+                                       corner.side_point.y - corner.centre.y);
       const double to_side_x  = corner.side_point.x - corner.centre.x;
       const double to_side_y  = corner.side_point.y - corner.centre.y;
       const double to_curve_x = corner.curve_point.x - corner.centre.x;
@@ -260,7 +285,13 @@ namespace FloorBlock::Geometry
     // neighbour of frame f (towards the face) is frame f+1.
     std::vector<BodyCorners> corners;
     for (const BlockFrame &frame : frames)
-      corners.push_back(body_corners(profile, frame, height, radius));
+      {
+        bool fits = true;
+        corners.push_back(body_corners(profile, frame, height, radius, fits));
+        if (!fits)
+          refuse_rounding(description,
+                          "on " + Ids::material_name(frame.material_id));
+      }
 
     AssemblyOutline outline;
     for (unsigned int index = 0; index < frames.size(); ++index)
@@ -365,21 +396,23 @@ namespace FloorBlock::Geometry
 
     // Contact corners: every corner on a vertical joint (both bodies) and
     // every block corner on the bedding; not the free top corner of block 1
-    // nor the outer corners of the face block, where nothing presses.
+    // nor the outer corners of the face block, where nothing presses --
+    // unless they are rounded: a fillet needs cells smaller than itself.
     const unsigned int face_index = frames.size() - 1;
+    const bool         rounded    = radius > 0.0;
     for (unsigned int index = 0; index < frames.size(); ++index)
       {
         const BodyCorners &own = corners[index];
         std::vector<const Corner *> contact = {&own.bottom_right};
-        if (index != 0)
+        if (index != 0 || rounded)
           contact.push_back(&own.top_right);
-        if (index != face_index)
+        if (index != face_index || rounded)
           {
             contact.push_back(&own.bottom_left);
             contact.push_back(&own.top_left);
           }
         for (const Corner *corner : contact)
-          outline.refinement_points.push_back(corner_middle(*corner, radius));
+          outline.refinement_points.push_back(corner_middle(*corner));
       }
     return outline;
   }

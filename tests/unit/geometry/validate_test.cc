@@ -41,6 +41,7 @@ namespace FloorBlock::Geometry
             << error.what();
         }
       const std::string path = Testing::scratch_folder() + "/refused.msh";
+      std::filesystem::remove(path);
       EXPECT_THROW(write_gmsh_mesh(description, path), InputError);
       EXPECT_FALSE(std::filesystem::exists(path));
       EXPECT_FALSE(GmshSession::is_open());
@@ -115,15 +116,12 @@ namespace FloorBlock::Geometry
                    "Geometry/Corner rounding radius");
     expect_refused([](auto &d) { d.corner_rounding_radius = 0.5; },
                    "Geometry/Corner rounding radius");
-    // 0.45 m < min(L, H)/2 passes the simple bound, but on a 55 deg plane
-    // the fillets of the 35 deg and 145 deg corners need r/tan(17.5 deg) +
-    // r/tan(72.5 deg) = 1.57 m of a vertical side only H = 1 m long.
+    // Each fillet starts r from the corner on the vertical side, so two
+    // fillets need 2 r < the side; the narrow face block sets the limit.
     expect_refused(
       [](auto &d) {
-        d.block_height           = 1.0;
-        d.bedding_shape          = BeddingShape::planar;
-        d.inclination            = 55.0 * M_PI / 180.0;
-        d.corner_rounding_radius = 0.45;
+        d.face_block_width       = 0.3;
+        d.corner_rounding_radius = 0.2;
       },
       "Geometry/Corner rounding radius");
   }
