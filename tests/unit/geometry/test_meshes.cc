@@ -12,17 +12,31 @@
 
 namespace FloorBlock::Geometry::Testing
 {
+  namespace
+  {
+    /** Folder removed with everything in it when the test process ends. */
+    struct ScratchFolder
+    {
+      std::filesystem::path path;
+      ScratchFolder()
+        : path(std::filesystem::temp_directory_path() /
+               ("floorblock_geometry_tests_" + std::to_string(::getpid())))
+      {
+        std::filesystem::create_directories(path);
+      }
+      ~ScratchFolder()
+      {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+      }
+    };
+  } // namespace
+
   std::string
   scratch_folder()
   {
-    static const std::filesystem::path folder = [] {
-      const std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("floorblock_geometry_tests_" + std::to_string(::getpid()));
-      std::filesystem::create_directories(path);
-      return path;
-    }();
-    return folder.string();
+    static const ScratchFolder folder;
+    return folder.path.string();
   }
 
   AssemblyDescription
