@@ -89,11 +89,14 @@ main(int argc, char **argv)
     {"sweep",
      {"Evaluate the chapter's figure grids (6.5-6.7, 6.10/6.11)",
       App::sweep_command}},
+    {"mesh", {"Mesh the block assembly with Gmsh", App::mesh_command}},
     {"run", {"The main job: mesh, solve, compare", App::run_command}}};
 
   std::map<CLI::App *, Command> dispatch;
   for (const auto &[name, entry] : commands)
     dispatch[add_subcommand(cli, name, entry.first, options)] = entry.second;
+  cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
+                                       "Print the material/boundary id scheme");
   cli.get_subcommand("sweep")->add_flag("--fem", options.with_fem,
                                         "Also run the FEM for every case");
 

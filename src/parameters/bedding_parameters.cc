@@ -24,6 +24,14 @@ namespace FloorBlock::Parameters
     prm.declare_entry("Curvature", "400", Double(1, 1.0e6),
                       "Parameter k of a parabolic bedding y = x^2/k (the "
                       "chapter uses 400, 200, 100, 50). Units: m.");
+    prm.declare_entry("Floor uplift reading", "inclined",
+                      Selection("inclined|lifted"),
+                      "Which of the chapter's readings of floor uplift the "
+                      "scene uses: inclined (the bedding is already planar-"
+                      "inclined or parabolic and the blocks stand on it, as "
+                      "the closed forms assume) or lifted (the mesh starts "
+                      "flat and the FEM lifts the bedding with the planar or "
+                      "parabolic profile). Units: none.");
     prm.leave_subsection();
   }
 
@@ -33,6 +41,9 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Bedding");
     shape = prm.get("Shape") == "planar" ? BeddingShape::planar :
                                            BeddingShape::parabolic;
+    uplift_reading = prm.get("Floor uplift reading") == "lifted" ?
+                       FloorUpliftReading::lifted :
+                       FloorUpliftReading::inclined;
     inclination = Units::degrees_to_radians(prm.get_double("Inclination"));
     curvature   = prm.get_double("Curvature");
     prm.leave_subsection();

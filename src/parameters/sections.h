@@ -37,10 +37,18 @@ namespace FloorBlock::Parameters
     parabolic
   };
 
+  /** The chapter's two readings of "floor uplift" (src/geometry/README.md). */
+  enum class FloorUpliftReading
+  {
+    inclined, ///< the bedding is already inclined; blocks stand on the profile
+    lifted    ///< a flat bedding is lifted with the profile by the FEM
+  };
+
   /** Subsection "Bedding": the failed bedding plane the blocks slide on. */
   struct BeddingParameters
   {
     BeddingShape shape;
+    FloorUpliftReading uplift_reading;
     double       inclination; ///< rad, planar; positive when rising away from the face
     double       curvature;   ///< k (m) in y = x^2/k, parabolic
 
