@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -144,7 +145,8 @@ namespace FloorBlock::Output
          << ", \\\n     'floor.dat' with lines lc rgb '#1030d0' lw 2.5\n";
 
     // Picture size follows the mesh extent so cells are not distorted.
-    double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
+    constexpr double huge  = std::numeric_limits<double>::max();
+    double           x_min = huge, x_max = -huge, y_min = huge, y_max = -huge;
     for (const auto &vertex : triangulation.get_vertices())
       {
         x_min = std::min(x_min, vertex[0]);
@@ -152,14 +154,17 @@ namespace FloorBlock::Output
         y_min = std::min(y_min, vertex[1]);
         y_max = std::max(y_max, vertex[1]);
       }
-    const double       margin = 0.03 * std::max(x_max - x_min, y_max - y_min);
-    const unsigned int height =
+    constexpr double relative_margin = 0.03; // white border around the mesh
+    const double     margin =
+      relative_margin * std::max(x_max - x_min, y_max - y_min);
+    constexpr unsigned int title_pixels = 60; // room for the caption
+    const unsigned int     height =
       options.height_pixels > 0 ?
         options.height_pixels :
         static_cast<unsigned int>(options.width_pixels *
                                   (y_max - y_min + 2 * margin) /
                                   (x_max - x_min + 2 * margin)) +
-          (options.title.empty() ? 0 : 60);
+          (options.title.empty() ? 0 : title_pixels);
 
     const std::string temporary = temporary_name_for(png_path) + ".png";
     std::ostringstream script;
