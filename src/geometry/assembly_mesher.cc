@@ -141,25 +141,31 @@ namespace FloorBlock::Geometry
 
     const AssemblyOutline outline = build_outline(description);
     MeshStatistics        statistics;
-    {
-      GmshSession session;
-      gmsh::model::add("floorblock_assembly");
-      const GmshAssembly assembly = build_gmsh_geometry(outline);
-      set_size_field(outline, description);
-      statistics.n_matched_pairs =
-        constrain_joint_sides(outline, assembly, description);
-      mesh::generate(2);
-      count_cells_and_nodes(statistics);
-      statistics.n_bodies = outline.bodies.size();
-      gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-      // Gmsh picks the format from the extension, so the temporary name
-      // keeps ".msh"; the rename makes the file appear complete or not at all.
-      const std::string temporary = temporary_name_for(msh_path) + ".msh";
-      gmsh::write(temporary);
-      if (!std::filesystem::exists(temporary))
-        throw std::runtime_error("Gmsh could not write " + temporary);
-      commit_temporary_file(temporary, msh_path);
-    }
+    // Gmsh reports some failures by throwing a plain std::string.
+    try
+      {
+        GmshSession session;
+        gmsh::model::add("floorblock_assembly");
+        const GmshAssembly assembly = build_gmsh_geometry(outline);
+        set_size_field(outline, description);
+        statistics.n_matched_pairs =
+          constrain_joint_sides(outline, assembly, description);
+        mesh::generate(2);
+        count_cells_and_nodes(statistics);
+        statistics.n_bodies = outline.bodies.size();
+        gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+        // Gmsh picks the format from the extension, so the temporary name
+        // keeps ".msh"; the rename makes the file appear complete or not at all.
+        const std::string temporary = temporary_name_for(msh_path) + ".msh";
+        gmsh::write(temporary);
+        if (!std::filesystem::exists(temporary))
+          throw std::runtime_error("Gmsh could not write " + temporary);
+        commit_temporary_file(temporary, msh_path);
+      }
+    catch (const std::string &message)
+      {
+        throw std::runtime_error("Gmsh failed to mesh the assembly: " + message);
+      }
     statistics.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();

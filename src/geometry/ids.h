@@ -42,6 +42,9 @@ namespace FloorBlock::Geometry::Ids
   constexpr dealii::types::material_id base_material       = 101;
   ///@}
 
+  /** Manifold id of the chart that keeps the bedding exact under refinement (bedding_manifold.h). */
+  constexpr dealii::types::manifold_id bedding_manifold = 1;
+
   /** @name Boundary ids (equal to the Gmsh physical tags of the curves) */
   ///@{
   /**

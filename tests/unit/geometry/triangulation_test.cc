@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <geometry/bedding_manifold.h>
 #include <geometry/bedding_profile.h>
 #include <geometry/body_outline.h>
 #include <geometry/ids.h>
@@ -461,5 +462,41 @@ namespace FloorBlock::Geometry
     EXPECT_THROW(read_triangulation(Testing::scratch_folder() + "/absent.msh",
                                     triangulation),
                  std::runtime_error);
+  }
+} // namespace FloorBlock::Geometry
+
+namespace FloorBlock::Geometry
+{
+  TEST(BeddingManifold, RefinementKeepsBeddingVerticesOnTheCurve)
+  {
+    const auto          &scene = Testing::meshed_scene("default");
+    const BeddingProfile profile =
+      BeddingProfile::geometry_profile(scene.description);
+    // Largest distance of a bedding-side vertex from the parabola.
+    const auto deviation = [&](const dealii::Triangulation<2> &triangulation) {
+      double largest = 0.0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              (Ids::boundary_kind(face->boundary_id()) ==
+                 Ids::BoundaryKind::bedding_block_side ||
+               Ids::boundary_kind(face->boundary_id()) ==
+                 Ids::BoundaryKind::bedding_base_side))
+            for (const unsigned int vertex : {0u, 1u})
+              largest = std::max(largest,
+                                 std::abs(face->vertex(vertex)[1] -
+                                          profile.height(face->vertex(vertex)[0])));
+      return largest;
+    };
+    dealii::Triangulation<2> with_manifold, without_manifold;
+    with_manifold.copy_triangulation(scene.triangulation);
+    without_manifold.copy_triangulation(scene.triangulation);
+    attach_bedding_manifold(scene.description, with_manifold);
+    with_manifold.refine_global(1);
+    without_manifold.refine_global(1);
+    EXPECT_LT(deviation(with_manifold), 1e-12);
+    // Without it new vertices sit on chords, h^2/(4k) below the curve for
+    // a chord of width h: the check above can fail.
+    EXPECT_GT(deviation(without_manifold), 1e-7);
   }
 } // namespace FloorBlock::Geometry
