@@ -258,6 +258,9 @@ namespace FloorBlock
         iterate.set_signature = active_set.signature();
         iterate.counts        = active_set.counts();
         last_iterate_counts   = iterate.counts;
+        console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
+                << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
+                << iterate.counts.n_open << std::endl;
         return iterate;
       };
       callbacks.solve_update = [&](std::string &message) {
