@@ -1,17 +1,14 @@
 #include <deal.II/grid/tria.h>
 
-#include <common/atomic_file.h>
+#include <output/gnuplot.h>
 
 #include <geometry/ids.h>
 #include <output/mesh_picture.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -76,26 +73,6 @@ namespace FloorBlock::Output
       return text.empty() ? std::string("NaN NaN\n") : text;
     }
 
-    void
-    write_text(const std::filesystem::path &path, const std::string &text)
-    {
-      std::ofstream file(path);
-      file << text;
-      if (!file)
-        throw std::runtime_error("cannot write " + path.string());
-    }
-
-    /** Removes the scratch folder however the function is left. */
-    struct ScratchFolder
-    {
-      std::filesystem::path path;
-      ~ScratchFolder()
-      {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-      }
-    };
-
     std::string
     quoted(const std::string &text)
     {
@@ -113,11 +90,6 @@ namespace FloorBlock::Output
   {
     if (triangulation.n_active_cells() == 0)
       throw std::runtime_error("cannot draw an empty mesh");
-    const ScratchFolder scratch{
-      std::filesystem::temp_directory_path() /
-      ("floorblock_mesh_picture_" + std::to_string(::getpid()))};
-    std::filesystem::create_directories(scratch.path);
-
     const auto polygons = cell_polygons(triangulation);
     std::ostringstream plot;
     unsigned int       block_index = 0;
@@ -126,23 +98,24 @@ namespace FloorBlock::Output
       {
         cells_text += text + "\n\n";
         plot << (block_index == 0 ? "plot " : ", \\\n     ")
-             << "'cells.dat' index " << block_index
+             << "$cells index " << block_index
              << " with filledcurves closed fc rgb '" << body_colour(material)
-             << "' fs solid 1.0 noborder, \\\n     'cells.dat' index "
+             << "' fs solid 1.0 noborder, \\\n     $cells index "
              << block_index << " with lines lc rgb '#505050' lw 0.4";
         ++block_index;
       }
-    write_text(scratch.path / "cells.dat", cells_text);
-    write_text(scratch.path / "joints.dat",
-               boundary_segments(triangulation, Ids::is_joint_side));
-    write_text(scratch.path / "floor.dat",
-               boundary_segments(triangulation,
+    // Inline data blocks: no scratch files to clean up.
+    std::string data = "$cells << EOD\n" + cells_text + "EOD\n$joints << EOD\n" +
+                       boundary_segments(triangulation, Ids::is_joint_side) +
+                       "EOD\n$floor << EOD\n" +
+                       boundary_segments(triangulation,
                                  [](const dealii::types::boundary_id id) {
                                    return Ids::boundary_kind(id) ==
                                           Ids::BoundaryKind::floor_surface;
-                                 }));
-    plot << ", \\\n     'joints.dat' with lines lc rgb '#d01010' lw 2.5"
-         << ", \\\n     'floor.dat' with lines lc rgb '#1030d0' lw 2.5\n";
+                                 }) +
+                       "EOD\n";
+    plot << ", \\\n     $joints with lines lc rgb '#d01010' lw 2.5"
+         << ", \\\n     $floor with lines lc rgb '#1030d0' lw 2.5\n";
 
     // Picture size follows the mesh extent so cells are not distorted.
     constexpr double huge  = std::numeric_limits<double>::max();
@@ -166,37 +139,15 @@ namespace FloorBlock::Output
                                   (x_max - x_min + 2 * margin)) +
           (options.title.empty() ? 0 : title_pixels);
 
-    const std::string temporary = temporary_name_for(png_path) + ".png";
     std::ostringstream script;
     script.precision(17);
-    script << "set terminal pngcairo size " << options.width_pixels << ','
-           << height << " font 'sans,12'\n"
-           << "set output " << quoted(temporary) << '\n'
-           << "set title " << quoted(options.title) << '\n'
+    script << "set title " << quoted(options.title) << '\n'
            << "unset key\nset size ratio -1\nset xlabel 'x (m)'\n"
            << "set ylabel 'y (m)'\n"
            << "set xrange [" << x_min - margin << ':' << x_max + margin
            << "]\nset yrange [" << y_min - margin << ':' << y_max + margin
-           << "]\ncd " << quoted(scratch.path.string()) << '\n'
-           << plot.str();
-    write_text(scratch.path / "mesh.gp", script.str());
-
-    const std::string command = "gnuplot " +
-                                quoted((scratch.path / "mesh.gp").string()) +
-                                " > " + quoted((scratch.path / "log").string()) +
-                                " 2>&1";
-    const int status = std::system(command.c_str());
-    if (status != 0 || !std::filesystem::exists(temporary))
-      {
-        std::ifstream     log(scratch.path / "log");
-        std::stringstream message;
-        message << log.rdbuf();
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error("gnuplot could not draw " + png_path +
-                                 " (is gnuplot-nox installed?): " +
-                                 message.str());
-      }
-    commit_temporary_file(temporary, png_path);
+           << "]\n"
+           << data << plot.str();
+    render_png(script.str(), png_path, options.width_pixels, height);
   }
 } // namespace FloorBlock::Output

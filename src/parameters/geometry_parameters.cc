@@ -46,10 +46,14 @@ namespace FloorBlock::Parameters
                       "Thickness of the bedding layer below the blocks on "
                       "which they slide. Units: m.");
     prm.declare_entry("Corner rounding radius", "0.01", Double(0, largest_length),
-                      "Radius of the fillets on the block corners (UDEC rounds "
-                      "its corners); 0 = sharp corners, whose pointwise contact "
-                      "stress is singular. Must be below a quarter of the "
-                      "smaller block edge. Units: m.");
+                      "Corner rounding of the blocks, as UDEC's rounding "
+                      "length: each fillet starts this far from the corner "
+                      "along the vertical side, so both sides of a joint keep "
+                      "the same straight part. It is the fillet radius at a "
+                      "right-angled corner (r tan(theta/2) at an interior "
+                      "angle theta). 0 = sharp corners, whose pointwise "
+                      "contact stress is singular. Must be below a quarter of "
+                      "the smallest block edge. Units: m.");
     prm.leave_subsection();
   }
 

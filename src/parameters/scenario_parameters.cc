@@ -117,6 +117,11 @@ namespace FloorBlock::Parameters
       {
         throw InputError(path + ": " + parameter_error_text(error, "", ""));
       }
+    catch (const boost::property_tree::ptree_error &error)
+      {
+        // deal.II lets Boost's XML syntax errors through unwrapped.
+        throw InputError(path + ": " + error.what());
+      }
 
     for (const std::string &assignment : overrides)
       apply_override(prm, assignment);

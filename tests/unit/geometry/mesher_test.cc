@@ -21,11 +21,11 @@ namespace FloorBlock::Geometry
     EXPECT_EQ(stats.n_bodies, scene.description.n_blocks + 2);
     EXPECT_EQ(stats.n_matched_pairs, 2 * scene.description.n_blocks + 1);
     EXPECT_GT(stats.n_cells, 0u);
-    // Measured 0.25-0.45 s on an idle two-core machine and 0.7 s while two
-    // other builds ran; the bound only catches a real regression (e.g. a
-    // size field that stops working) without failing on a busy machine.
-    constexpr double max_seconds = 2.0;
-    EXPECT_LT(stats.wall_time, max_seconds);
+    // Timing is reported above, not asserted (shared, noisy machines). A
+    // size field that stops working shows up as a cell count explosion: the
+    // default scene has about 1100 cells.
+    constexpr std::size_t max_default_cells = 2000;
+    EXPECT_LT(stats.n_cells, max_default_cells);
     EXPECT_EQ(scene.triangulation.n_active_cells(), stats.n_cells);
   }
 
