@@ -16,11 +16,12 @@ namespace FloorBlock
       /**
        * Converged when the l2 norm of the condensed residual (N) is below
        * this fraction of the reference force (the larger of the applied
-       * load norm and the first residual of the increment) ...
+       * load norm and the first residual of the increment) and the
+       * open/stick/slip set did not change in the last step.
        */
       double relative_tolerance = 1e-10;
-      /** ... and the open/stick/slip set did not change in the last step. */
-      unsigned int max_iterations = 40;
+      /** Newton iterations allowed per solve. */
+      unsigned int max_iterations = 100;
       /** Backtracking halvings tried before a full step is forced. */
       unsigned int max_line_search_steps = 6;
       /** Step length factor per backtracking step (-). */

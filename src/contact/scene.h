@@ -112,16 +112,17 @@ namespace FloorBlock
        * Rigid law: augmentation stiffness = this factor times the largest
        * Young's modulus over the smallest cell diameter (-). Larger values
        * need fewer multiplier updates but make the friction Newton fragile:
-       * 100 diverged in the two-block test, 1-4 converge (4: ~7 updates
-       * per increment, 1: ~15).
+       * 100 diverged in the two-block test and 4 in the default scene; 1
+       * converges in both (~15-30 updates per increment), 0.25 needs more
+       * than 50 updates.
        */
-      double rigid_penalty_factor = 4.;
+      double rigid_penalty_factor = 1.;
       /**
        * Rigid law: the augmented Lagrangian stops when the largest overlap
        * of a closed pair and slip of a stuck pair are below this fraction
        * of the largest displacement (-).
        */
-      double rigid_constraint_tolerance = 1e-8;
+      double rigid_constraint_tolerance = 1e-6;
       /** Rigid law: Uzawa updates allowed per increment. */
       unsigned int max_multiplier_updates = 50;
       /** Length over which the averaged peak normal stress is taken (m). */
