@@ -10,6 +10,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <limits>
 
 namespace
 {
@@ -140,5 +141,27 @@ namespace
                 0.01 * rigid.averaged_peak);
     EXPECT_NEAR(stiff.joint_normal_force, rigid.joint_normal_force,
                 1e-8 * applied_lateral_force);
+  }
+} // namespace
+
+namespace
+{
+  TEST(TwoBlocks, CompliantLawConvergesToRigidAsStiffnessGrows)
+  {
+    const double rigid =
+      run_two_blocks(8, JointLawKind::rigid, 0.).right_rotation;
+    double previous_error = std::numeric_limits<double>::max();
+    for (const double stiffness : {1e10, 1e11, 1e12, 1e13})
+      {
+        const double error = std::abs(
+          run_two_blocks(8, JointLawKind::compliant, stiffness).right_rotation -
+          rigid);
+        std::cout << "kn = ks = " << stiffness << " Pa/m: rotation error "
+                  << error / std::abs(rigid) << std::endl;
+        // Joint compliance adds rotation of order (force / kn) / lever arm,
+        // so the error must fall as the stiffness grows.
+        EXPECT_LT(error, previous_error);
+        previous_error = error;
+      }
   }
 } // namespace
