@@ -61,7 +61,7 @@ namespace FloorBlock
       vertical_translation, ///< u = (0, magnitude)
       dip_translation,      ///< u = magnitude (cos dip, sin dip); sign picks the way
       tilt,                 ///< rotation by magnitude (rad) about the pivot
-      parabola              ///< u_y = (x - pivot_x)^2 / magnitude, i.e. y = x^2/k
+      parabola              ///< u_y = (x - pivot_x)^2 / magnitude for x > pivot_x, else 0 (y = x^2/k)
     };
 
     /** @brief The prescribed floor uplift at the end of stage 3. */

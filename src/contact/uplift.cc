@@ -33,7 +33,10 @@ namespace FloorBlock
               break;
             }
           case UpliftMode::parabola:
-            if (settings.magnitude != 0.)
+            // Behind the vertex (under the face block) the parabola is
+            // continued by its horizontal tangent, as the geometry module
+            // does for the bedding profile.
+            if (settings.magnitude != 0. && dx > 0.)
               displacement[1] = stage_factor * dx * dx / settings.magnitude;
             break;
         }

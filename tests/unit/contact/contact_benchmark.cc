@@ -1,6 +1,8 @@
 // Benchmark (not a test): the default scene of chapter 6.5 through the
 // geometry module, compliant or rigid joints; prints Q per joint and timing.
-// Usage: contact_benchmark [rigid|compliant] [output directory]
+// Usage: contact_benchmark [rigid|compliant] [output directory] [lifted]
+// "lifted": flat bedding lifted into y = x^2/400 (the UDEC loading path)
+// instead of blocks standing on the parabola and a 10 mm vertical uplift.
 #include <contact/contact_solver.h>
 #include <contact/floor_scene.h>
 #include <geometry/assembly_description.h>
@@ -22,10 +24,13 @@ main(int argc, char **argv)
 {
   using namespace FloorBlock;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool rigid = argc > 1 && std::string(argv[1]) == "rigid";
+  const bool rigid  = argc > 1 && std::string(argv[1]) == "rigid";
+  const bool lifted = argc > 3 && std::string(argv[3]) == "lifted";
 
   dealii::Timer                 clock;
   Geometry::AssemblyDescription description; // defaults: 6 blocks 1 x 2 m on y = x^2/400
+  if (lifted)
+    description.floor_uplift = Geometry::FloorUplift::lifted_flat_bedding;
   const std::string             msh_path = "/tmp/floorblock_benchmark.msh";
   Geometry::write_gmsh_mesh(description, msh_path);
   dealii::Triangulation<2> mesh;
@@ -44,8 +49,10 @@ main(int argc, char **argv)
   const double support_force = 650e3 * 9.81; // N
   for (unsigned int block = 1; block <= 3; ++block)
     scene_settings.support_pressures[block] = support_force / 3.;
-  scene_settings.uplift.mode      = Contact::UpliftMode::vertical_translation;
-  scene_settings.uplift.magnitude = 0.01; // m
+  scene_settings.uplift.mode      = lifted ?
+                                      Contact::UpliftMode::parabola :
+                                      Contact::UpliftMode::vertical_translation;
+  scene_settings.uplift.magnitude = lifted ? description.curvature : 0.01; // m
   scene_settings.steps            = {1, 2, 5};
 
   Contact::ContactSolverSettings settings;
@@ -54,7 +61,7 @@ main(int argc, char **argv)
     settings.rigid_penalty_factor = std::atof(factor);
   if (const char *iterations = std::getenv("NEWTON_MAX_ITERATIONS"))
     settings.newton.max_iterations = std::atoi(iterations);
-  if (argc > 2)
+  if (argc > 2 && std::string(argv[2]) != "-")
     settings.output_directory = argv[2];
   clock.restart();
   Contact::ContactSolver solver(mesh, Contact::make_floor_scene(scene_settings), settings);
