@@ -49,13 +49,13 @@ namespace FloorBlock
           }
         catch (const std::exception &error)
           {
-            info.message = error.what();
+            info.message = settings.direct_package + ": " + error.what();
             return info;
           }
         if (!is_finite(trial))
           {
-            info.message = "direct solver returned non-finite values "
-                           "(singular matrix)";
+            info.message = settings.direct_package +
+                           " returned non-finite values (singular matrix)";
             return info;
           }
         solution     = trial;

@@ -24,7 +24,11 @@ namespace FloorBlock
       LinearSolverKind kind = LinearSolverKind::automatic;
       /** Largest system (number of DoFs) that `automatic` solves directly. */
       unsigned int max_direct_dofs = 60000;
-      /** Amesos package: "Amesos_Klu" or "Amesos_Umfpack". */
+      /**
+       * Amesos package. "Amesos_Klu" works; "Amesos_Umfpack" throws (with
+       * an empty message) in the Debian 12 Trilinos build, so it is not the
+       * default.
+       */
       std::string direct_package = "Amesos_Klu";
       /** GMRES stop: residual below this fraction of the right-hand side. */
       double relative_tolerance = 1e-10;

@@ -59,6 +59,8 @@ main(int argc, char **argv)
   settings.verbose = true;
   if (const char *factor = std::getenv("RIGID_PENALTY_FACTOR"))
     settings.rigid_penalty_factor = std::atof(factor);
+  if (const char *package = std::getenv("DIRECT_PACKAGE"))
+    settings.linear.direct_package = package;
   if (const char *iterations = std::getenv("NEWTON_MAX_ITERATIONS"))
     settings.newton.max_iterations = std::atoi(iterations);
   if (argc > 2 && std::string(argv[2]) != "-")
