@@ -1,5 +1,6 @@
 #pragma once
 
+#include <common/input_error.h>
 #include <parameters/scenario_parameters.h>
 
 #include <string>
@@ -34,6 +35,8 @@ namespace FloorBlock::App
   sweep_command(const CommandOptions &options);
   int
   mesh_command(const CommandOptions &options);
+  int
+  solve_command(const CommandOptions &options);
   int
   run_command(const CommandOptions &options);
 } // namespace FloorBlock::App

@@ -90,6 +90,9 @@ main(int argc, char **argv)
      {"Evaluate the chapter's figure grids (6.5-6.7, 6.10/6.11)",
       App::sweep_command}},
     {"mesh", {"Mesh the block assembly with Gmsh", App::mesh_command}},
+    {"solve",
+     {"Mesh and solve the scene with the frictional contact FEM",
+      App::solve_command}},
     {"run", {"The main job: mesh, solve, compare", App::run_command}}};
 
   std::map<CLI::App *, Command> dispatch;

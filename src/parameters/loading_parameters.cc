@@ -10,6 +10,7 @@ namespace FloorBlock::Parameters
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::List;
+  using dealii::Patterns::Selection;
 
   namespace
   {
@@ -35,8 +36,22 @@ namespace FloorBlock::Parameters
                       "(1 = the block next to the face block); comma-separated, "
                       "may be empty. Units: none.");
     prm.declare_entry("Floor lift", "0.05", Double(0, 10),
-                      "Floor lift y: how far the bedding is moved up (FEM) "
-                      "and the y of Eq. 6.51. Units: m.");
+                      "Size of the base motion in the floor-uplift stage of "
+                      "the FEM: the translation distance (vertical, dip "
+                      "modes), the rise of the face end (tilt), the rise of "
+                      "the free end (parabola). The y of Eq. 6.51 is not this "
+                      "input: it follows from the bedding shape (closed "
+                      "forms) or from the computed block rotations (FEM). "
+                      "Units: m.");
+    prm.declare_entry("Uplift mode", "dip toward face",
+                      Selection("vertical|dip toward face|dip away from face|"
+                                "tilt|parabola"),
+                      "How the base moves in the floor-uplift stage while "
+                      "the face block stays fixed: straight up; along the "
+                      "bedding chord under the blocks toward or away from "
+                      "the face; tilted about its free end so the face end "
+                      "rises; or bent into u_y = lift (x/nL)^2 with x from "
+                      "the face. Units: none.");
     prm.leave_subsection();
   }
 
@@ -49,6 +64,12 @@ namespace FloorBlock::Parameters
       Units::tonnes_force_to_newtons(prm.get_double("Support load"));
     const std::string loaded = prm.get("Loaded blocks");
     floor_lift               = prm.get_double("Floor lift");
+    const std::string mode   = prm.get("Uplift mode");
+    uplift_mode = mode == "vertical"           ? UpliftMode::vertical :
+                  mode == "dip toward face"    ? UpliftMode::dip_toward_face :
+                  mode == "dip away from face" ? UpliftMode::dip_away_from_face :
+                  mode == "tilt"               ? UpliftMode::tilt :
+                                                 UpliftMode::parabola;
     prm.leave_subsection();
 
     loaded_blocks_from_face.clear();

@@ -19,6 +19,7 @@ namespace FloorBlock::Parameters
     JointParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
   }
 
   void
@@ -30,6 +31,7 @@ namespace FloorBlock::Parameters
     joints.parse_parameters(prm);
     loading.parse_parameters(prm);
     mesh.parse_parameters(prm);
+    solver.parse_parameters(prm);
 
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
@@ -126,7 +128,17 @@ namespace FloorBlock::Parameters
     for (const std::string &assignment : overrides)
       apply_override(prm, assignment);
 
-    scenario.parse_parameters(prm);
+    try
+      {
+        scenario.parse_parameters(prm);
+      }
+    catch (const dealii::ExceptionBase &error)
+      {
+        // A value can pass its pattern and still fail get_double(), e.g.
+        // "1e-400": the pattern's stream read underflows to 0 silently,
+        // deal.II's strtod conversion reports ERANGE and throws.
+        throw InputError(path + ": " + parameter_error_text(error, "", ""));
+      }
 
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);

@@ -23,6 +23,7 @@ namespace FloorBlock::Parameters
     JointParameters    joints;
     LoadingParameters  loading;
     MeshParameters     mesh;
+    SolverParameters   solver;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).
     std::string scene_name;

@@ -101,9 +101,20 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /** How the base moves in the floor-uplift stage. */
+  enum class UpliftMode
+  {
+    vertical,           ///< translation straight up by the floor lift
+    dip_toward_face,    ///< translation along the bedding chord, toward the face
+    dip_away_from_face, ///< translation along the bedding chord, away from it
+    tilt,               ///< rotation about the free end; the face end rises
+    parabola            ///< bending u_y = lift (x / nL)^2, x from the face
+  };
+
   /** Subsection "Loading". */
   struct LoadingParameters
   {
+    UpliftMode uplift_mode;
     double gravity;      ///< m/s^2
     double support_load; ///< N, total load of one powered support
     /// Loaded blocks counted from the face (1 = next to the face block), as
@@ -124,6 +135,33 @@ namespace FloorBlock::Parameters
     double far_size;     ///< m, element size far from the corners
     double growth_rate;  ///< size ratio between neighbouring elements, > 1
     bool   matching_joints;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+  enum class LinearSolverChoice
+  {
+    automatic,
+    direct,
+    iterative
+  };
+
+  /** Subsection "Solver": the contact FEM's numerics. */
+  struct SolverParameters
+  {
+    unsigned int       fe_degree;
+    unsigned int       n_gravity_steps;
+    unsigned int       n_support_steps;
+    unsigned int       n_uplift_steps;
+    LinearSolverChoice linear_solver;
+    unsigned int       max_direct_dofs;
+    double             newton_tolerance; ///< relative to the load norm
+    unsigned int       max_newton_iterations;
+    unsigned int       max_cutbacks;
+    double             averaging_length; ///< m, for the averaged peak stress
+    double             rigid_penalty_factor;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,96 @@
+#include <app/fem_pipeline.h>
+#include <common/units.h>
+#include <contact/contact_solver.h>
+#include <geometry/triangulation_reader.h>
+#include <scene/assembly_inputs.h>
+#include <scene/contact_inputs.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <fmt/format.h>
+
+namespace FloorBlock::App
+{
+  namespace
+  {
+    std::string
+    failure_text(const Contact::ContactSolveFailure &failure)
+    {
+      std::string text = failure.what();
+      for (const std::string &attempt : failure.attempts)
+        text += "; tried: " + attempt;
+      return text;
+    }
+  } // namespace
+
+  FemOutcome
+  solve_scene(const Parameters::ScenarioParameters &scene,
+              const Output::ResultFolder &          folder)
+  {
+    FemOutcome outcome;
+    outcome.mesh = Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
+                                             folder.path_of("mesh.msh"));
+    dealii::Triangulation<2> triangulation;
+    Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
+
+    Output::FemReportContext context{scene.geometry.n_blocks,
+                                     scene.geometry.support_width,
+                                     "converged",
+                                     "every loading increment converged"};
+    Contact::ContactSolver solver(
+      triangulation,
+      Contact::make_floor_scene(Scene::floor_scene_settings(scene)),
+      Scene::contact_solver_settings(scene, folder.path_of("vtu")));
+    try
+      {
+        outcome.result    = solver.run();
+        outcome.converged = true;
+      }
+    catch (const Contact::ContactSolveFailure &failure)
+      {
+        context.status      = "not converged";
+        context.status_text = failure_text(failure);
+        if (failure.last_converged)
+          outcome.result.increments.push_back(*failure.last_converged);
+      }
+
+    outcome.fem = Output::fem_json(outcome.result, context);
+    outcome.fem["mesh"] = {{"n_cells", outcome.mesh.n_cells},
+                           {"n_nodes", outcome.mesh.n_nodes},
+                           {"wall_time_s", outcome.mesh.wall_time}};
+    folder.write_json("fem.json", outcome.fem);
+    folder.write("joints.csv", Output::joints_csv(outcome.result, context));
+    return outcome;
+  }
+
+  std::string
+  fem_summary_text(const FemOutcome &outcome)
+  {
+    constexpr double kN  = Units::newtons_per_kilonewton;
+    constexpr double MPa = Units::pascals_per_megapascal;
+    std::string text = fmt::format(
+      "FEM: {} ({}), {} cells, {} DoFs, {} increments, {} Newton "
+      "iterations, force balance error {:.1e}\n",
+      outcome.fem["status"].get<std::string>(),
+      outcome.fem["status_text"].get<std::string>(), outcome.mesh.n_cells,
+      outcome.result.n_dofs, outcome.result.increments.size(),
+      outcome.fem["newton_iterations"].get<unsigned int>(),
+      outcome.fem["force_balance_relative_error"].get<double>());
+    text += fmt::format("  {:<12} {:>12} {:>14} {:>12} {:>14} {:>10}\n",
+                        "joint", "N (kN/m)", "contact (mm)",
+                        "peak (MPa)", "averaged (MPa)", "state");
+    for (const auto &joint : outcome.fem["joints"])
+      text += fmt::format(
+        "  {:<12} {:>12.1f} {:>14.1f} {:>12.2f} {:>14.2f} {:>10}\n",
+        joint["name"].get<std::string>(),
+        joint["normal_force_N_per_m"].get<double>() / kN,
+        joint["contact_length_m"].get<double>() * 1e3,
+        joint["sigma_max_Pa"].get<double>() / MPa,
+        joint["sigma_max_averaged_Pa"].get<double>() / MPa,
+        joint["state"].get<std::string>());
+    text += fmt::format("  mesh {:.3f} s", outcome.mesh.wall_time);
+    for (const auto &[section, seconds] : outcome.result.wall_times)
+      text += fmt::format(", {} {:.3f} s", section, seconds);
+    return text + "\n";
+  }
+} // namespace FloorBlock::App

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <contact/results.h>
+#include <geometry/assembly_mesher.h>
+#include <output/fem_report.h>
+#include <output/result_folder.h>
+#include <parameters/scenario_parameters.h>
+
+#include <nlohmann/json.hpp>
+
+namespace FloorBlock::App
+{
+  /** What meshing and solving a scene produced. */
+  struct FemOutcome
+  {
+    Geometry::MeshStatistics mesh;
+    Contact::SolveResult     result; ///< converged increments only
+    bool                     converged = false;
+    nlohmann::json           fem;    ///< fem.json content
+  };
+
+  /**
+   * @brief Meshes the scene with Gmsh (into the result folder as mesh.msh),
+   * runs the contact solver through the loading stages and writes fem.json
+   * and joints.csv (and VTU files under vtu/). A solve that fails after
+   * its cutbacks is reported, not thrown: fem.json then holds the last
+   * converged increment with status "not converged" and what was tried.
+   */
+  FemOutcome
+  solve_scene(const Parameters::ScenarioParameters &scene,
+              const Output::ResultFolder &          folder);
+
+  /** @brief Terminal summary: one line per joint, the state, and times. */
+  std::string
+  fem_summary_text(const FemOutcome &outcome);
+} // namespace FloorBlock::App

@@ -1,0 +1,20 @@
+#include <app/command_options.h>
+#include <app/fem_pipeline.h>
+
+#include <iostream>
+
+namespace FloorBlock::App
+{
+  int
+  solve_command(const CommandOptions &options)
+  {
+    const auto scene = read_scene(options);
+    const Output::ResultFolder folder(output_directory(options, scene));
+    folder.write_inputs(scene);
+    const FemOutcome outcome = solve_scene(scene, folder);
+    std::cout << fem_summary_text(outcome) << "wrote "
+              << folder.path_of("fem.json") << ", "
+              << folder.path_of("joints.csv") << std::endl;
+    return outcome.converged ? exit_code::success : exit_code::failure;
+  }
+} // namespace FloorBlock::App

@@ -1,0 +1,75 @@
+#include <parameters/sections.h>
+
+namespace FloorBlock::Parameters
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+  using dealii::Patterns::Selection;
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    prm.declare_entry("FE degree", "1", Integer(1, 2),
+                      "Polynomial degree of the FE_Q displacement space. "
+                      "Units: none.");
+    prm.declare_entry("Gravity steps", "1", Integer(1, 1000),
+                      "Load increments of stage 1 (gravity). Units: none.");
+    prm.declare_entry("Support load steps", "2", Integer(1, 1000),
+                      "Load increments of stage 2 (support pressure). "
+                      "Units: none.");
+    prm.declare_entry("Uplift steps", "10", Integer(1, 10000),
+                      "Load increments of stage 3 (floor uplift); friction "
+                      "is path dependent, so this is part of the model. "
+                      "Units: none.");
+    prm.declare_entry("Linear solver", "automatic",
+                      Selection("automatic|direct|iterative"),
+                      "automatic: sparse direct (Amesos KLU) up to 'Max "
+                      "direct DoFs', ML AMG + GMRES above; or force either. "
+                      "Units: none.");
+    prm.declare_entry("Max direct DoFs", "60000", Integer(1, 100000000),
+                      "Largest system that 'automatic' solves directly. "
+                      "Units: none.");
+    prm.declare_entry("Newton tolerance", "1e-10", Double(1e-15, 1e-2),
+                      "An increment has converged when the residual norm is "
+                      "below this fraction of the reference force (the "
+                      "larger of the applied load norm and the first "
+                      "residual) and the stick/slip/open set is unchanged. "
+                      "Units: none (relative).");
+    prm.declare_entry("Max Newton iterations", "100", Integer(1, 10000),
+                      "Newton iterations allowed per increment. Units: none.");
+    prm.declare_entry("Max cutbacks", "6", Integer(0, 30),
+                      "Halvings of a failed increment before the run stops "
+                      "with 'not converged'. Units: none.");
+    prm.declare_entry("Averaging length", "0.05", Double(1e-6, 10),
+                      "Length along a joint over which the averaged peak "
+                      "normal stress is taken (the pointwise peak does not "
+                      "converge at sharp corners). Units: m.");
+    prm.declare_entry("Rigid penalty factor", "4", Double(1e-3, 1e6),
+                      "Rigid law: augmentation stiffness as this factor times "
+                      "E over the smallest cell diameter. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    fe_degree       = prm.get_integer("FE degree");
+    n_gravity_steps = prm.get_integer("Gravity steps");
+    n_support_steps = prm.get_integer("Support load steps");
+    n_uplift_steps  = prm.get_integer("Uplift steps");
+    const std::string solver = prm.get("Linear solver");
+    linear_solver = solver == "direct"    ? LinearSolverChoice::direct :
+                    solver == "iterative" ? LinearSolverChoice::iterative :
+                                            LinearSolverChoice::automatic;
+    max_direct_dofs       = prm.get_integer("Max direct DoFs");
+    newton_tolerance      = prm.get_double("Newton tolerance");
+    max_newton_iterations = prm.get_integer("Max Newton iterations");
+    max_cutbacks          = prm.get_integer("Max cutbacks");
+    averaging_length      = prm.get_double("Averaging length");
+    rigid_penalty_factor  = prm.get_double("Rigid penalty factor");
+    prm.leave_subsection();
+  }
+} // namespace FloorBlock::Parameters

@@ -1,0 +1,139 @@
+#include <scene/analytic_inputs.h>
+#include <scene/contact_inputs.h>
+
+#include <cmath>
+#include <map>
+
+namespace FloorBlock::Scene
+{
+  namespace
+  {
+    Contact::JointParameters
+    joint_parameters(const Parameters::JointParameters &joints,
+                     const double                       friction_angle)
+    {
+      Contact::JointParameters parameters;
+      parameters.normal_stiffness = joints.normal_stiffness;
+      parameters.shear_stiffness  = joints.shear_stiffness;
+      parameters.friction_angle   = friction_angle;
+      parameters.cohesion         = joints.cohesion;
+      parameters.tensile_strength = joints.tensile_strength;
+      return parameters;
+    }
+
+    /// Slope angle of the bedding chord under the blocks, x from 0 to nL.
+    double
+    bedding_chord_angle(const Parameters::ScenarioParameters &scene)
+    {
+      if (scene.bedding.shape == Parameters::BeddingShape::planar)
+        return scene.bedding.inclination;
+      const double chain_length =
+        scene.geometry.n_blocks * scene.geometry.block_width;
+      return std::atan(chain_length / scene.bedding.curvature);
+    }
+
+    double
+    bedding_height(const Parameters::ScenarioParameters &scene, const double x)
+    {
+      if (scene.bedding.uplift_reading == Parameters::FloorUpliftReading::lifted)
+        return 0.;
+      if (scene.bedding.shape == Parameters::BeddingShape::planar)
+        return x * std::tan(scene.bedding.inclination);
+      return x * x / scene.bedding.curvature;
+    }
+
+    Contact::UpliftSettings
+    uplift_settings(const Parameters::ScenarioParameters &scene)
+    {
+      const double lift = scene.loading.floor_lift;
+      const double chain_length =
+        scene.geometry.n_blocks * scene.geometry.block_width;
+      Contact::UpliftSettings uplift;
+      uplift.magnitude = lift;
+      switch (scene.loading.uplift_mode)
+        {
+          case Parameters::UpliftMode::vertical:
+            uplift.mode = Contact::UpliftMode::vertical_translation;
+            break;
+          case Parameters::UpliftMode::dip_toward_face:
+            uplift.mode      = Contact::UpliftMode::dip_translation;
+            uplift.dip_angle = bedding_chord_angle(scene) + M_PI;
+            break;
+          case Parameters::UpliftMode::dip_away_from_face:
+            uplift.mode      = Contact::UpliftMode::dip_translation;
+            uplift.dip_angle = bedding_chord_angle(scene);
+            break;
+          case Parameters::UpliftMode::tilt:
+            // Clockwise about the free end: the face end (dx = -nL) rises.
+            uplift.mode      = Contact::UpliftMode::tilt;
+            uplift.magnitude = -std::asin(std::min(1.0, lift / chain_length));
+            uplift.pivot_x   = chain_length;
+            uplift.pivot_y   = bedding_height(scene, chain_length);
+            break;
+          case Parameters::UpliftMode::parabola:
+            uplift.mode = Contact::UpliftMode::parabola;
+            // u_y = x^2/k reaches `lift` at x = nL; no lift, no bending.
+            uplift.magnitude =
+              lift > 0 ? chain_length * chain_length / lift : 0.;
+            break;
+        }
+      return uplift;
+    }
+  } // namespace
+
+  Contact::FloorSceneSettings
+  floor_scene_settings(const Parameters::ScenarioParameters &scene)
+  {
+    const Analytic::BlockChain     chain = block_chain(scene);
+    std::map<unsigned int, double> support_pressures;
+    for (unsigned int block = 1; block <= chain.n_blocks(); ++block)
+      if (chain.support_load[block - 1] > 0)
+        support_pressures[block] =
+          chain.support_load[block - 1] / scene.geometry.block_width;
+
+    // Aggregate initialisation in member order: the elastic law is an
+    // immutable value (const members) and cannot be assigned afterwards.
+    Contact::FloorSceneSettings settings{
+      scene.geometry.n_blocks,
+      Material::ElasticLaw<2>::from_bulk_shear(scene.material.bulk_modulus,
+                                               scene.material.shear_modulus),
+      scene.material.density,
+      scene.loading.gravity,
+      scene.joints.law == Parameters::JointLaw::rigid ?
+        Contact::JointLawKind::rigid :
+        Contact::JointLawKind::compliant,
+      joint_parameters(scene.joints, scene.joints.vertical_friction_angle),
+      joint_parameters(scene.joints, scene.joints.bedding_friction_angle),
+      support_pressures,
+      {},
+      {}};
+    settings.uplift           = uplift_settings(scene);
+    settings.steps.n_gravity  = scene.solver.n_gravity_steps;
+    settings.steps.n_pressure = scene.solver.n_support_steps;
+    settings.steps.n_uplift   = scene.solver.n_uplift_steps;
+    return settings;
+  }
+
+  Contact::ContactSolverSettings
+  contact_solver_settings(const Parameters::ScenarioParameters &scene,
+                          const std::string &                   vtu_folder)
+  {
+    const auto &solver = scene.solver;
+    Contact::ContactSolverSettings settings;
+    settings.fe_degree                 = solver.fe_degree;
+    settings.newton.relative_tolerance = solver.newton_tolerance;
+    settings.newton.max_iterations     = solver.max_newton_iterations;
+    settings.linear.kind =
+      solver.linear_solver == Parameters::LinearSolverChoice::direct ?
+        Solver::LinearSolverKind::direct :
+      solver.linear_solver == Parameters::LinearSolverChoice::iterative ?
+        Solver::LinearSolverKind::iterative :
+        Solver::LinearSolverKind::automatic;
+    settings.linear.max_direct_dofs = solver.max_direct_dofs;
+    settings.max_cutbacks           = solver.max_cutbacks;
+    settings.averaging_length       = solver.averaging_length;
+    settings.rigid_penalty_factor   = solver.rigid_penalty_factor;
+    settings.output_directory       = vtu_folder;
+    return settings;
+  }
+} // namespace FloorBlock::Scene
