@@ -186,6 +186,7 @@ namespace FloorBlock
       zero     = 0.;
       residual = 0.;
       Fem::ElasticAssemblyTargets<2> targets;
+        targets.cache = &cell_matrices;
       targets.residual = &residual;
       Fem::assemble_elastic_system(
         fe_space, model, zero, homogeneous_constraints, targets);
@@ -246,6 +247,7 @@ namespace FloorBlock
         matrix   = 0.;
         residual = 0.;
         Fem::ElasticAssemblyTargets<2> targets;
+        targets.cache = &cell_matrices;
         targets.matrix   = &matrix;
         targets.residual = &residual;
         Fem::assemble_elastic_system(
@@ -342,6 +344,7 @@ namespace FloorBlock
       raw = 0.;
       ForceBalance                   balance;
       Fem::ElasticAssemblyTargets<2> targets;
+        targets.cache = &cell_matrices;
       targets.residual           = &raw;
       targets.applied_load_total = &balance.applied_load;
       Fem::assemble_elastic_system(

@@ -5,6 +5,7 @@
 #include <contact/joint_law.h>
 #include <contact/results.h>
 #include <contact/scene.h>
+#include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -115,6 +116,7 @@ namespace FloorBlock
       std::vector<JointHistory<2>>  committed_history;
       std::vector<JointHistory<2>>  working_history;
       std::vector<JointResponse<2>> committed_responses;
+      Fem::CellMatrixCache              cell_matrices;
       dealii::AffineConstraints<double> homogeneous_constraints;
       dealii::IndexSet                  dirichlet_dofs;
       std::vector<unsigned int>         dof_component;

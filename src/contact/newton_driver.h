@@ -21,7 +21,7 @@ namespace FloorBlock
        */
       double relative_tolerance = 1e-10;
       /** Newton iterations allowed per solve. */
-      unsigned int max_iterations = 100;
+      unsigned int max_iterations = 50;
       /** Backtracking halvings tried before a full step is forced. */
       unsigned int max_line_search_steps = 6;
       /** Step length factor per backtracking step (-). */

@@ -65,6 +65,14 @@ namespace FloorBlock
       if (targets.applied_load_total != nullptr)
         *targets.applied_load_total = Tensor<1, dim>();
 
+      CellMatrixCache *const cache = targets.cache;
+      const unsigned int n_cells =
+        space.dof_handler().get_triangulation().n_active_cells();
+      const bool cache_ready =
+        cache != nullptr && cache->matrices.size() == n_cells;
+      if (cache != nullptr && !cache_ready)
+        cache->matrices.assign(n_cells, FullMatrix<double>());
+
       for (const auto &cell : space.dof_handler().active_cell_iterators())
         {
           if (!cell->is_locally_owned())
@@ -73,9 +81,13 @@ namespace FloorBlock
           const SymmetricTensor<4, dim> &stiffness = law.stiffness_tensor();
           const Tensor<1, dim> body_force =
             density_of(model, cell->material_id()) * model.gravity;
+          const bool need_matrix = !cache_ready;
           fe_values.reinit(cell);
-          cell_matrix = 0.;
-          cell_load   = 0.;
+          if (need_matrix)
+            cell_matrix = 0.;
+          else
+            cell_matrix = cache->matrices[cell->active_cell_index()];
+          cell_load = 0.;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               const double weight = fe_values.JxW(q);
@@ -83,22 +95,28 @@ namespace FloorBlock
                 {
                   const unsigned int component =
                     fe.system_to_component_index(i).first;
-                  Tensor<2, dim> gradient;
-                  gradient[component] = fe_values.shape_grad(i, q);
-                  strain_basis[i]     = symmetrize(gradient);
                   cell_load(i) +=
                     body_force[component] * fe_values.shape_value(i, q) * weight;
+                  if (need_matrix)
+                    {
+                      Tensor<2, dim> gradient;
+                      gradient[component] = fe_values.shape_grad(i, q);
+                      strain_basis[i]     = symmetrize(gradient);
+                    }
                 }
-              for (unsigned int i = 0; i < n_cell_dofs; ++i)
-                {
-                  const SymmetricTensor<2, dim> stress_i =
-                    stiffness * strain_basis[i];
-                  for (unsigned int j = 0; j < n_cell_dofs; ++j)
-                    cell_matrix(i, j) += stress_i * strain_basis[j] * weight;
-                }
+              if (need_matrix)
+                for (unsigned int i = 0; i < n_cell_dofs; ++i)
+                  {
+                    const SymmetricTensor<2, dim> stress_i =
+                      stiffness * strain_basis[i];
+                    for (unsigned int j = 0; j < n_cell_dofs; ++j)
+                      cell_matrix(i, j) += stress_i * strain_basis[j] * weight;
+                  }
               if (targets.applied_load_total != nullptr)
                 *targets.applied_load_total += body_force * weight;
             }
+          if (need_matrix && cache != nullptr)
+            cache->matrices[cell->active_cell_index()] = cell_matrix;
           for (const auto &face : cell->face_iterators())
             {
               if (!face->at_boundary())

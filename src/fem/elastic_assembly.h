@@ -5,6 +5,7 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -12,6 +13,17 @@ namespace FloorBlock
 {
   namespace Fem
   {
+    /**
+     * @brief Cell stiffness matrices of a fixed mesh and fixed elastic laws,
+     * kept between calls: linear elasticity has a constant stiffness, so the
+     * Newton loop only recomputes loads and residuals. Indexed by active
+     * cell index; empty until the first assembly fills it.
+     */
+    struct CellMatrixCache
+    {
+      std::vector<dealii::FullMatrix<double>> matrices;
+    };
+
     /**
      * @brief What one pass of the single cell loop accumulates. Null
      * pointers are skipped.
@@ -25,6 +37,8 @@ namespace FloorBlock
       dealii::TrilinosWrappers::MPI::Vector *residual = nullptr;
       /** Sum of all applied loads, body force plus pressure (N/m in 2D). */
       dealii::Tensor<1, dim> *applied_load_total = nullptr;
+      /** Optional cache of the cell stiffness matrices (same mesh and laws). */
+      CellMatrixCache *cache = nullptr;
     };
 
     /**
