@@ -28,8 +28,13 @@ targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic
 excluded_tests=${SANITIZE_EXCLUDE:-'_NOT_BUILT$'}
 
 start=$(date +%s)
+# PRE_TEST: list each executable's tests when ctest starts, not right after
+# linking. Starting an ASan executable linked to deal.II's debug library
+# takes 1-4 s, close to gtest_discover_tests' 5 s default timeout, and a
+# busy machine made the build itself fail.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE="$build_type" \
-  -DFLOORBLOCK_SANITIZE=ON >/dev/null
+  -DFLOORBLOCK_SANITIZE=ON -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST \
+  >/dev/null
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" -- --no-print-directory
 built=$(date +%s)
 

@@ -137,6 +137,26 @@ TEST(SceneFuzz, DefaultSceneIsAcceptedAndClean)
   EXPECT_TRUE(result.defects.empty()) << result.defects.front();
 }
 
+// The tool shall refuse "include" statements in scene files with InputError:
+// deal.II follows them anywhere; before the fix, including the scene itself
+// crashed with a stack overflow and including /dev/zero hung.
+TEST(SceneFuzz, IncludeStatementsAreRejected)
+{
+  WorkDirectory     work;
+  const std::string self = (work.path / "scene.prm").string();
+  for (const std::string &statement :
+       {"include " + self, std::string("include /dev/zero"),
+        std::string("INCLUDE /tmp"), std::string("  include   /dev/null # x"),
+        std::string("incl\\\nude /dev/zero")})
+    {
+      const PipelineResult result = run_scene_pipeline(
+        default_scene_text() + statement + "\n", ".prm", {}, work.path);
+      EXPECT_FALSE(result.accepted) << statement;
+      EXPECT_NE(result.error_message.find("include"), std::string::npos)
+        << statement << ": " << result.error_message;
+    }
+}
+
 // The checks themselves shall catch non-finite numbers and unknown statuses,
 // so that a clean fuzz run means something.
 TEST(SceneFuzz, ChecksDetectNonFiniteOutput)

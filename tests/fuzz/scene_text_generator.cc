@@ -348,8 +348,17 @@ namespace FloorBlock::Fuzz
     for (std::size_t line = 0; line < n_lines; ++line)
       {
         const auto &parameter = parameters[random_index(engine, parameters.size())];
-        switch (random_index(engine, 7))
+        switch (random_index(engine, 8))
           {
+            case 7:
+              // Harmless targets only: the dangerous ones (the scene itself,
+              // /dev/zero) are SceneFuzz.IncludeStatementsAreRejected.
+              text += std::string(random_chance(engine, 0.5) ? "include " :
+                                                               "INCLUDE ") +
+                      (random_chance(engine, 0.5) ? "/nonexistent.prm" :
+                                                    "/tmp") +
+                      "\n";
+              break;
             case 0:
               text += "subsection " + parameter.subsection + "\n";
               break;
