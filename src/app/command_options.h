@@ -16,6 +16,7 @@ namespace FloorBlock::App
     std::string              output_directory; ///< empty: results/<scene>/
     bool                     print_ids = false; ///< mesh: print the id scheme
     bool                     with_fem  = false; ///< sweep: also run the FEM
+    std::string              verification_case; ///< verify: e.g. "hertz"
   };
 
   /** @brief Reads the scene with its overrides (throws InputError). */
@@ -37,6 +38,8 @@ namespace FloorBlock::App
   mesh_command(const CommandOptions &options);
   int
   solve_command(const CommandOptions &options);
+  int
+  verify_command(const CommandOptions &options);
   int
   run_command(const CommandOptions &options);
 } // namespace FloorBlock::App

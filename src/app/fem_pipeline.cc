@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+
 namespace FloorBlock::App
 {
   namespace
@@ -28,6 +30,8 @@ namespace FloorBlock::App
               const Output::ResultFolder &          folder)
   {
     FemOutcome outcome;
+    // Gmsh writes the mesh itself, so the folder must exist first.
+    std::filesystem::create_directories(folder.path_of(""));
     outcome.mesh = Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
                                              folder.path_of("mesh.msh"));
     dealii::Triangulation<2> triangulation;

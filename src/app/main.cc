@@ -93,11 +93,20 @@ main(int argc, char **argv)
     {"solve",
      {"Mesh and solve the scene with the frictional contact FEM",
       App::solve_command}},
+    {"verify",
+     {"Run a verification case against its closed form (hertz)",
+      App::verify_command}},
     {"run", {"The main job: mesh, solve, compare", App::run_command}}};
 
   std::map<CLI::App *, Command> dispatch;
   for (const auto &[name, entry] : commands)
     dispatch[add_subcommand(cli, name, entry.first, options)] = entry.second;
+  // verify takes a case name where the others take a scene file.
+  CLI::App *verify = cli.get_subcommand("verify");
+  verify->remove_option(verify->get_option("scene"));
+  verify->add_option("case", options.verification_case,
+                     "Verification case: hertz")
+    ->required();
   cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
                                        "Print the material/boundary id scheme");
   cli.get_subcommand("sweep")->add_flag("--fem", options.with_fem,

@@ -1,36 +1,120 @@
 #include <app/command_options.h>
+#include <app/error_estimate.h>
+#include <app/fem_pipeline.h>
+#include <compare/joint_comparison.h>
 #include <output/analytic_report.h>
+#include <output/comparison_report.h>
+#include <output/gnuplot.h>
+#include <output/report_markdown.h>
 #include <output/result_folder.h>
 #include <scene/closed_forms.h>
+
+#include <deal.II/base/timer.h>
 
 #include <iostream>
 
 namespace FloorBlock::App
 {
+  using nlohmann::json;
+
+  namespace
+  {
+    Compare::ContactConstants
+    contact_constants(const Parameters::ScenarioParameters &scene)
+    {
+      return {scene.material.youngs_modulus(), scene.geometry.support_width,
+              scene.geometry.block_width, scene.geometry.block_height};
+    }
+
+    /// Face-joint comparison at every converged uplift increment.
+    json
+    lift_history(const FemOutcome &                    outcome,
+                 const Scene::ClosedForms &            closed_forms,
+                 const Parameters::ScenarioParameters &scene)
+    {
+      json history = json::array();
+      for (const auto &increment : outcome.result.increments)
+        if (increment.stage == Contact::LoadStage::uplift)
+          {
+            const auto joints = Compare::compare_vertical_joints(
+              increment, closed_forms, contact_constants(scene));
+            history.push_back(Output::lift_history_entry(
+              joints.back(), contact_constants(scene),
+              increment.stage_factor * scene.loading.floor_lift));
+          }
+      return history;
+    }
+
+    void
+    write_plots(const Output::ResultFolder &                 folder,
+                const std::vector<Compare::JointComparison> &final_joints,
+                const json &                                 history,
+                const Contact::IncrementResult &             last)
+    {
+      Output::render_png(Output::force_per_joint_plot(final_joints),
+                         folder.path_of("q_per_joint.png"));
+      if (!history.empty())
+        Output::render_png(Output::lift_history_plot(history),
+                           folder.path_of("face_joint_vs_lift.png"), 1400, 550);
+      for (const auto &joint : last.joints)
+        if (joint.name == "vertical " + std::to_string(final_joints.size()))
+          Output::render_png(Output::traction_profile_plot(joint),
+                             folder.path_of("face_joint_traction.png"), 700,
+                             700);
+    }
+  } // namespace
+
   int
   run_command(const CommandOptions &options)
   {
-    const auto scene        = read_scene(options);
-    const auto closed_forms = Scene::evaluate_closed_forms(scene);
-
+    dealii::Timer timer;
+    const auto    scene = read_scene(options);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.mark_unfinished();
     folder.write_inputs(scene);
-    const auto analytic = Output::analytic_json(closed_forms);
+
+    const auto closed_forms = Scene::evaluate_closed_forms(scene);
+    const auto analytic     = Output::analytic_json(closed_forms);
     folder.write_json("analytic.json", analytic);
     folder.write("analytic.csv", Output::analytic_csv(closed_forms));
 
-    std::cout << "Closed forms for scene '" << scene.scene_name << "'"
-              << Output::analytic_table(closed_forms) << std::endl;
+    const FemOutcome outcome = solve_scene(scene, folder);
+    std::cout << fem_summary_text(outcome);
+    json summary = {{"scene", scene.scene_name},
+                    {"inputs", scene.expanded_text},
+                    {"analytic", analytic},
+                    {"fem", outcome.fem}};
+    if (scene.solver.estimate_error_by_refined_solve && outcome.converged)
+      summary["fem_error_estimate"] = refined_solve_error(
+        outcome,
+        solve_scene(refined_scene(scene),
+                    Output::ResultFolder(folder.path_of("refined"))));
 
-    // The FEM half is not wired into `run` yet: say so in the marker file
-    // instead of leaving the fem section silently absent.
-    folder.write_summary({{"status", "analytic_only"},
-                          {"status_text", "FEM stages are not part of this "
-                                          "build's run pipeline yet"},
-                          {"scene", scene.scene_name},
-                          {"analytic", analytic}});
-    std::cout << "wrote " << folder.path_of("summary.json") << std::endl;
-    return 0;
+    if (!outcome.result.increments.empty())
+      {
+        const auto &last         = outcome.result.increments.back();
+        const auto  final_joints = Compare::compare_vertical_joints(
+          last, closed_forms, contact_constants(scene));
+        const json history = lift_history(outcome, closed_forms, scene);
+        summary["comparison"] = {
+          {"final", Output::comparison_json(final_joints,
+                                            contact_constants(scene),
+                                            scene.geometry.n_blocks)},
+          {"lift_history", history}};
+        write_plots(folder, final_joints, history, last);
+        const auto lines = Output::verdicts(final_joints.back());
+        for (const auto &line : lines)
+          std::cout << "  " << line << "\n";
+        folder.write("report.md",
+                     Output::report_markdown(scene, summary, lines));
+      }
+
+    summary["status"]      = outcome.fem["status"];
+    summary["wall_time_s"] = timer.wall_time();
+    folder.write_summary(summary);
+    std::cout << "wrote " << folder.path_of("report.md") << " and "
+              << folder.path_of("summary.json") << " in " << timer.wall_time()
+              << " s" << std::endl;
+    return outcome.converged ? exit_code::success : exit_code::failure;
   }
 } // namespace FloorBlock::App

@@ -24,7 +24,7 @@ namespace FloorBlock::Parameters
     prm.declare_entry("Curvature", "400", Double(1, 1.0e6),
                       "Parameter k of a parabolic bedding y = x^2/k (the "
                       "chapter uses 400, 200, 100, 50). Units: m.");
-    prm.declare_entry("Floor uplift reading", "inclined",
+    prm.declare_entry("Floor uplift reading", "lifted",
                       Selection("inclined|lifted"),
                       "Which of the chapter's readings of floor uplift the "
                       "scene uses: inclined (the bedding is already planar-"

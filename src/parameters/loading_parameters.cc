@@ -35,7 +35,7 @@ namespace FloorBlock::Parameters
                       "Blocks under the support, counted from the face "
                       "(1 = the block next to the face block); comma-separated, "
                       "may be empty. Units: none.");
-    prm.declare_entry("Floor lift", "0.05", Double(0, 10),
+    prm.declare_entry("Floor lift", "0.09", Double(0, 10),
                       "Size of the base motion in the floor-uplift stage of "
                       "the FEM: the translation distance (vertical, dip "
                       "modes), the rise of the face end (tilt), the rise of "
@@ -43,7 +43,7 @@ namespace FloorBlock::Parameters
                       "input: it follows from the bedding shape (closed "
                       "forms) or from the computed block rotations (FEM). "
                       "Units: m.");
-    prm.declare_entry("Uplift mode", "dip toward face",
+    prm.declare_entry("Uplift mode", "parabola",
                       Selection("vertical|dip toward face|dip away from face|"
                                 "tilt|parabola"),
                       "How the base moves in the floor-uplift stage while "

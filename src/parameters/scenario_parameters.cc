@@ -21,6 +21,7 @@ namespace FloorBlock::Parameters
     LoadingParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
+    VerifyParameters::declare_parameters(prm);
   }
 
   void
@@ -33,6 +34,7 @@ namespace FloorBlock::Parameters
     loading.parse_parameters(prm);
     mesh.parse_parameters(prm);
     solver.parse_parameters(prm);
+    verify.parse_parameters(prm);
 
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
@@ -169,6 +171,25 @@ namespace FloorBlock::Parameters
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);
     scenario.expanded_text = expanded.str();
+    return scenario;
+  }
+
+  ScenarioParameters
+  read_defaults(const std::string &             name,
+                const std::vector<std::string> &overrides)
+  {
+    ParameterHandler prm;
+    ScenarioParameters::declare_parameters(prm);
+    for (const std::string &assignment : overrides)
+      apply_override(prm, assignment);
+
+    ScenarioParameters scenario;
+    scenario.scene_name = name;
+    scenario.parse_parameters(prm);
+    std::ostringstream expanded;
+    prm.print_parameters(expanded, ParameterHandler::ShortPRM);
+    scenario.expanded_text = expanded.str();
+    scenario.original_text = expanded.str();
     return scenario;
   }
 

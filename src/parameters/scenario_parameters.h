@@ -24,6 +24,7 @@ namespace FloorBlock::Parameters
     LoadingParameters  loading;
     MeshParameters     mesh;
     SolverParameters   solver;
+    VerifyParameters   verify;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).
     std::string scene_name;
@@ -58,6 +59,14 @@ namespace FloorBlock::Parameters
    */
   ScenarioParameters
   read_scenario(const std::string &             path,
+                const std::vector<std::string> &overrides);
+
+  /**
+   * @brief The declared defaults with @p overrides applied, for commands
+   * that take no scene file (verification cases).
+   */
+  ScenarioParameters
+  read_defaults(const std::string &             name,
                 const std::vector<std::string> &overrides);
 
   /** @brief Every parameter with default, pattern, units and meaning. */

@@ -162,6 +162,23 @@ namespace FloorBlock::Parameters
     unsigned int       max_cutbacks;
     double             averaging_length; ///< m, for the averaged peak stress
     double             rigid_penalty_factor;
+    /// Whether `run` repeats the solve with halved element sizes and
+    /// reports the differences as the discretisation error estimate.
+    bool               estimate_error_by_refined_solve;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+  /** Subsection "Verify", nested "Hertz": inputs of `floorblock verify hertz`. */
+  struct VerifyParameters
+  {
+    double       hertz_radius;         ///< R (m)
+    double       hertz_line_load;      ///< P (N/m)
+    double       hertz_youngs_modulus; ///< E of the cylinder (Pa)
+    double       hertz_poissons_ratio; ///< nu of the cylinder
+    unsigned int hertz_mesh_level;     ///< local refinements at the contact
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

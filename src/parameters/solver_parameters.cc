@@ -46,9 +46,17 @@ namespace FloorBlock::Parameters
                       "Length along a joint over which the averaged peak "
                       "normal stress is taken (the pointwise peak does not "
                       "converge at sharp corners). Units: m.");
-    prm.declare_entry("Rigid penalty factor", "4", Double(1e-3, 1e6),
+    prm.declare_entry("Rigid penalty factor", "1", Double(1e-3, 1e6),
                       "Rigid law: augmentation stiffness as this factor times "
-                      "E over the smallest cell diameter. Units: none.");
+                      "E over the smallest cell diameter; larger values "
+                      "need fewer multiplier updates but the friction Newton "
+                      "diverged at 4 on the default scene. Units: none.");
+    prm.declare_entry("Error estimate", "refined solve",
+                      Selection("refined solve|none"),
+                      "How `run` estimates the discretisation error of each "
+                      "FEM figure: the difference to one solve with halved "
+                      "element sizes (Mesh/Corner size, Mesh/Far size), or "
+                      "none. Units: none.");
     prm.leave_subsection();
   }
 
@@ -70,6 +78,8 @@ namespace FloorBlock::Parameters
     max_cutbacks          = prm.get_integer("Max cutbacks");
     averaging_length      = prm.get_double("Averaging length");
     rigid_penalty_factor  = prm.get_double("Rigid penalty factor");
+    estimate_error_by_refined_solve =
+      prm.get("Error estimate") == "refined solve";
     prm.leave_subsection();
   }
 } // namespace FloorBlock::Parameters

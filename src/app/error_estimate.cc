@@ -1,0 +1,49 @@
+#include <app/error_estimate.h>
+
+#include <cmath>
+
+namespace FloorBlock::App
+{
+  using nlohmann::json;
+
+  Parameters::ScenarioParameters
+  refined_scene(Parameters::ScenarioParameters scene)
+  {
+    scene.mesh.corner_size /= 2;
+    scene.mesh.far_size /= 2;
+    return scene;
+  }
+
+  json
+  refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
+  {
+    json joints = json::object();
+    const auto &coarse_joints = coarse.fem["joints"];
+    const auto &fine_joints   = fine.fem["joints"];
+    for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
+         ++k)
+      {
+        json quantities = json::object();
+        for (const char *key :
+             {"normal_force_N_per_m", "contact_length_m", "sigma_max_Pa",
+              "sigma_max_averaged_Pa"})
+          {
+            const double coarse_value = coarse_joints[k][key].get<double>();
+            const double fine_value   = fine_joints[k][key].get<double>();
+            const double difference   = std::abs(coarse_value - fine_value);
+            quantities[key] = {
+              {"value", coarse_value},
+              {"refined_value", fine_value},
+              {"absolute_error", difference},
+              {"relative_error",
+               fine_value != 0. ? json(difference / std::abs(fine_value)) :
+                                  json(nullptr)}};
+          }
+        joints[coarse_joints[k]["name"].get<std::string>()] = quantities;
+      }
+    return {{"method", "difference to one solve with halved element sizes"},
+            {"refined_n_dofs", fine.result.n_dofs},
+            {"refined_status", fine.fem["status"]},
+            {"joints", joints}};
+  }
+} // namespace FloorBlock::App

@@ -1,0 +1,91 @@
+#include <compare/joint_comparison.h>
+#include <geometry/ids.h>
+
+#include <cmath>
+#include <map>
+
+namespace FloorBlock::Compare
+{
+  namespace
+  {
+    double
+    rotation_of(const Contact::IncrementResult &   increment,
+                const dealii::types::material_id   material)
+    {
+      const auto motion = increment.motions.find(material);
+      return motion == increment.motions.end() ? 0. : motion->second.rotation;
+    }
+
+    /// "vertical 3" -> 3; 0 for any other joint.
+    unsigned int
+    vertical_joint_number(const std::string &name)
+    {
+      const std::string prefix = "vertical ";
+      if (name.compare(0, prefix.size(), prefix) != 0)
+        return 0;
+      return std::stoul(name.substr(prefix.size()));
+    }
+
+    ForceComparison
+    compare_force(const Scene::MechanismResult &entry,
+                  const unsigned int            joint,
+                  const double                  fem_force)
+    {
+      ForceComparison comparison;
+      comparison.mechanism = Scene::to_string(entry.mechanism);
+      comparison.status    = Analytic::to_string(entry.forces.status);
+      const auto &values   = entry.forces.lateral_force;
+      if (joint == 0 || joint > values.size())
+        return comparison;
+      comparison.has_value   = true;
+      comparison.closed_form = values[joint - 1];
+      comparison.relative_difference =
+        comparison.closed_form != 0. ?
+          (fem_force - comparison.closed_form) / std::abs(comparison.closed_form) :
+          0.;
+      return comparison;
+    }
+  } // namespace
+
+  std::vector<JointComparison>
+  compare_vertical_joints(const Contact::IncrementResult &increment,
+                          const Scene::ClosedForms &      closed_forms,
+                          const ContactConstants &        constants)
+  {
+    const unsigned int n_blocks = closed_forms.chain.n_blocks();
+    std::vector<JointComparison> comparisons;
+    for (const Contact::JointReport &report : increment.joints)
+      {
+        const unsigned int joint = vertical_joint_number(report.name);
+        if (joint == 0)
+          continue;
+
+        JointComparison comparison{joint, report.normal_force, {}, {}};
+        for (const auto &entry : closed_forms.mechanisms)
+          comparison.forces.push_back(
+            compare_force(entry, joint, report.normal_force));
+
+        const auto face_side_material =
+          joint == n_blocks ? Geometry::Ids::face_block_material :
+                              Geometry::Ids::block_material(joint + 1);
+        ContactComparison &contact = comparison.contact;
+        contact.relative_rotation =
+          rotation_of(increment, Geometry::Ids::block_material(joint)) -
+          rotation_of(increment, face_side_material);
+        contact.floor_lift =
+          constants.block_width * std::tan(contact.relative_rotation);
+        contact.force_over_width =
+          std::max(report.normal_force, 0.) * constants.support_width;
+        contact.closed_form = Analytic::corner_contact(
+          contact.force_over_width, contact.floor_lift,
+          constants.youngs_modulus, constants.support_width,
+          constants.block_width, constants.block_height);
+        contact.fem_area = report.closed_length * constants.support_width;
+        contact.fem_mean_stress          = report.mean_normal_stress;
+        contact.fem_peak_stress          = report.peak_normal_stress;
+        contact.fem_averaged_peak_stress = report.averaged_peak_normal_stress;
+        comparisons.push_back(comparison);
+      }
+    return comparisons;
+  }
+} // namespace FloorBlock::Compare

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <compare/joint_comparison.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock::Output
+{
+  /** One record per vertical joint (the "comparison.final" list). */
+  nlohmann::json
+  comparison_json(const std::vector<Compare::JointComparison> &joints,
+                  const Compare::ContactConstants &            constants,
+                  const unsigned int                           n_blocks);
+
+  /** The face-joint record of one uplift increment (for "lift_history"). */
+  nlohmann::json
+  lift_history_entry(const Compare::JointComparison &face_joint,
+                     const Compare::ContactConstants &constants,
+                     const double                     base_lift);
+
+  /**
+   * @brief One sentence per quantity at the face joint, e.g. "Eq. 6.51
+   * underestimates the contact area by 23 % at the face joint".
+   */
+  std::vector<std::string>
+  verdicts(const Compare::JointComparison &face_joint);
+
+  /** gnuplot: Q per joint, FEM points against each closed form. */
+  std::string
+  force_per_joint_plot(const std::vector<Compare::JointComparison> &joints);
+
+  /** gnuplot: contact area and sigma_max at the face joint vs base lift. */
+  std::string
+  lift_history_plot(const nlohmann::json &lift_history);
+
+  /** gnuplot: normal traction along the face joint at the final lift. */
+  std::string
+  traction_profile_plot(const Contact::JointReport &face_joint);
+} // namespace FloorBlock::Output

@@ -1,0 +1,163 @@
+#include <common/units.h>
+#include <output/numbering_note.h>
+#include <output/report_markdown.h>
+
+#include <fmt/format.h>
+
+namespace FloorBlock::Output
+{
+  using nlohmann::json;
+
+  namespace
+  {
+    constexpr double kN  = Units::newtons_per_kilonewton;
+    constexpr double MPa = Units::pascals_per_megapascal;
+
+    std::string
+    number(const json &value, const double scale, const char *format)
+    {
+      return value.is_number() ?
+               fmt::format(fmt::runtime(format), value.get<double>() * scale) :
+               std::string("-");
+    }
+
+    std::string
+    percent(const json &value)
+    {
+      return value.is_number() ?
+               fmt::format("{:+.0f} %", 100. * value.get<double>()) :
+               std::string("-");
+    }
+
+    std::string
+    force_table(const json &final_records)
+    {
+      std::string text = "| joint | blocks | FEM Q (kN/m) |";
+      std::string rule = "|---|---|---|";
+      const auto &first = final_records.front()["Q_closed_form"];
+      for (const auto &[mechanism, value] : first.items())
+        {
+          text += " " + mechanism + " (kN/m, FEM vs it) |";
+          rule += "---|";
+        }
+      text += "\n" + rule + "\n";
+      for (const auto &record : final_records)
+        {
+          text += fmt::format("| {} | {} | {:.1f} |", record["joint"].dump(),
+                              record["blocks"].dump(),
+                              record["Q_fem_N_per_m"].get<double>() / kN);
+          for (const auto &[mechanism, value] : record["Q_closed_form"].items())
+            text += fmt::format(" {} ({}) |",
+                                number(value["Q_N_per_m"], 1 / kN, "{:.1f}"),
+                                percent(value["relative_difference"]));
+          text += "\n";
+        }
+      return text;
+    }
+
+    std::string
+    contact_table(const json &final_records)
+    {
+      std::string text =
+        "| joint | y (mm) | A FEM (m^2) | A 6.51 (m^2) | sigma_mean FEM "
+        "(MPa) | sigma_avg 6.52 (MPa) | sigma_max FEM averaged / pointwise "
+        "(MPa) | sigma_max 6.53 (MPa) | status |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto &record : final_records)
+        {
+          const auto &c = record["contact"];
+          text += fmt::format(
+            "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {} |\n",
+            record["joint"].dump(), number(c["y_m"], 1e3, "{:.3f}"),
+            number(c["A_fem_m2"], 1., "{:.4f}"),
+            number(c["A_6_51_m2"], 1., "{:.4f}"),
+            number(c["sigma_mean_fem_Pa"], 1 / MPa, "{:.2f}"),
+            number(c["sigma_avg_6_52_Pa"], 1 / MPa, "{:.2f}"),
+            number(c["sigma_max_averaged_fem_Pa"], 1 / MPa, "{:.2f}"),
+            number(c["sigma_max_fem_Pa"], 1 / MPa, "{:.2f}"),
+            number(c["sigma_max_6_53_Pa"], 1 / MPa, "{:.2f}"),
+            c["status"].get<std::string>());
+        }
+      return text;
+    }
+
+    std::string
+    error_section(const json &summary)
+    {
+      if (!summary.contains("fem_error_estimate"))
+        return "No error estimate was made (Solver/Error estimate = none, or "
+               "the solve did not converge).\n";
+      const auto &estimate = summary["fem_error_estimate"];
+      std::string text = fmt::format(
+        "Method: {} ({} DoFs).\n\n| joint | Q rel. error | contact length "
+        "rel. error | sigma_max averaged rel. error | sigma_max pointwise "
+        "rel. error |\n|---|---|---|---|---|\n",
+        estimate["method"].get<std::string>(),
+        estimate["refined_n_dofs"].dump());
+      for (const auto &[name, quantities] : estimate["joints"].items())
+        text += fmt::format(
+          "| {} | {} | {} | {} | {} |\n", name,
+          number(quantities["normal_force_N_per_m"]["relative_error"], 100.,
+                 "{:.1f} %"),
+          number(quantities["contact_length_m"]["relative_error"], 100.,
+                 "{:.1f} %"),
+          number(quantities["sigma_max_averaged_Pa"]["relative_error"], 100.,
+                 "{:.1f} %"),
+          number(quantities["sigma_max_Pa"]["relative_error"], 100.,
+                 "{:.1f} %"));
+      return text;
+    }
+  } // namespace
+
+  std::string
+  report_markdown(const Parameters::ScenarioParameters &scene,
+                  const json &                          summary,
+                  const std::vector<std::string> &      verdicts)
+  {
+    const auto &fem   = summary["fem"];
+    const auto &final = summary["comparison"]["final"];
+    std::string text  = fmt::format(
+      "# FloorBlock report: scene '{}'\n\n{}\n\n"
+      "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "
+      "{:.1f} deg, support load {:.0f} t on blocks {} from the face, b = {} "
+      "m, floor lift {} m ({}), joints {}.\n\n"
+      "FEM: {} ({}); {} DoFs, {} increments, {} Newton iterations, "
+      "force-balance error {:.1e}.\n\n",
+      scene.scene_name, numbering_note, scene.geometry.n_blocks,
+      scene.geometry.block_width, scene.geometry.block_height,
+      scene.bedding.shape == Parameters::BeddingShape::planar ?
+        fmt::format("planar {:.1f} deg",
+                    Units::radians_to_degrees(scene.bedding.inclination)) :
+        fmt::format("y = x^2/{}", scene.bedding.curvature),
+      Units::radians_to_degrees(scene.joints.bedding_friction_angle),
+      Units::radians_to_degrees(scene.joints.vertical_friction_angle),
+      scene.loading.support_load / Units::tonnes_force_to_newtons(1.),
+      fmt::join(scene.loading.loaded_blocks_from_face, ","),
+      scene.geometry.support_width, scene.loading.floor_lift,
+      fem["status"].get<std::string>() == "converged" ? "reached" : "not reached",
+      scene.joints.law == Parameters::JointLaw::rigid ? "rigid" : "compliant",
+      fem["status"].get<std::string>(), fem["status_text"].get<std::string>(),
+      fem["n_dofs"].dump(), fem["n_increments"].dump(),
+      fem["newton_iterations"].dump(),
+      fem["force_balance_relative_error"].get<double>());
+
+    text += "## Verdicts (face joint, final lift)\n\n";
+    for (const auto &line : verdicts)
+      text += "- " + line + "\n";
+    text += "\n## Lateral force per vertical joint\n\n" + force_table(final) +
+            "\n![Q per joint](q_per_joint.png)\n\n"
+            "## Corner contact: FEM against Eqs. 6.51-6.53 (FEM's own Q and "
+            "y)\n\n" +
+            contact_table(final) +
+            "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
+            "![Traction along the face joint](face_joint_traction.png)\n\n"
+            "## Discretisation error\n\n" +
+            error_section(summary);
+    text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
+    text += fmt::format("| mesh | {:.3f} |\n",
+                        fem["mesh"]["wall_time_s"].get<double>());
+    for (const auto &[section, seconds] : fem["wall_time_s"].items())
+      text += fmt::format("| {} | {:.3f} |\n", section, seconds.get<double>());
+    return text;
+  }
+} // namespace FloorBlock::Output

@@ -1,0 +1,138 @@
+#include "process.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace FloorBlockTest;
+using nlohmann::json;
+
+namespace
+{
+  json
+  read_json(const std::string &path)
+  {
+    std::ifstream in(path);
+    return json::parse(in);
+  }
+
+  /// Runs the 3-block scene once for all tests of this file.
+  const std::string &
+  three_block_run()
+  {
+    static const std::string output = [] {
+      const std::string folder = fresh_output_folder("run_three_blocks");
+      const auto result = run_floorblock(
+        "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder));
+      EXPECT_EQ(result.exit_code, 0) << result.output;
+      return folder;
+    }();
+    return output;
+  }
+
+  // E, b, L, H of the scene as the comparison records carry them.
+  double
+  corner_sigma_max(const double q_over_b, const double lift, const double e,
+                   const double b, const double l)
+  {
+    // Eq. 6.53 recomputed here independently of the library.
+    return std::sqrt(2. * lift * e * q_over_b / (b * l * l));
+  }
+} // namespace
+
+// The tool shall write every result file of a run, summary.json last.
+TEST(RunCommand, WritesEveryFile)
+{
+  const std::string &output = three_block_run();
+  for (const char *name :
+       {"original.prm", "parameters.prm", "analytic.json", "analytic.csv",
+        "fem.json", "joints.csv", "summary.json", "report.md",
+        "q_per_joint.png", "face_joint_vs_lift.png",
+        "face_joint_traction.png", "mesh.msh"})
+    EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
+  const auto summary_time =
+    std::filesystem::last_write_time(output + "/summary.json");
+  for (const char *name : {"fem.json", "report.md", "q_per_joint.png"})
+    EXPECT_LE(std::filesystem::last_write_time(output + "/" + name),
+              summary_time)
+      << name << " was written after summary.json";
+}
+
+// The tool shall document its results under the keys other scripts rely on.
+TEST(RunCommand, SummaryHasDocumentedKeys)
+{
+  const json summary = read_json(three_block_run() + "/summary.json");
+  for (const char *key : {"status", "analytic", "fem", "comparison"})
+    ASSERT_TRUE(summary.contains(key)) << key;
+  EXPECT_EQ(summary["status"], "converged");
+  const auto &joints = summary["fem"]["joints"];
+  ASSERT_EQ(joints.size(), 6u); // 3 vertical + 3 bedding joints
+  for (const auto &joint : joints)
+    for (const char *key :
+         {"name", "kind", "blocks", "normal_force_N_per_m",
+          "shear_force_N_per_m", "contact_length_m", "contact_area_m2",
+          "sigma_max_Pa", "sigma_max_averaged_Pa", "state"})
+      EXPECT_TRUE(joint.contains(key)) << key;
+  const auto &final = summary["comparison"]["final"];
+  ASSERT_EQ(final.size(), 3u);
+  for (const char *key : {"Q_contact_N", "y_m", "E_Pa", "b_m", "L_m",
+                          "A_6_51_m2", "sigma_max_6_53_Pa", "A_fem_m2"})
+    EXPECT_TRUE(final.back()["contact"].contains(key)) << key;
+  EXPECT_FALSE(summary["comparison"]["lift_history"].empty());
+}
+
+// The tool shall compare numbers that anyone can recompute from fem.json
+// and analytic.json (to 1e-12 relative: the same doubles, re-derived).
+TEST(RunCommand, ComparisonEqualsRecomputedValues)
+{
+  const std::string &output   = three_block_run();
+  const json         fem      = read_json(output + "/fem.json");
+  const json         analytic = read_json(output + "/analytic.json");
+  const json         summary  = read_json(output + "/summary.json");
+  const double       b        = fem["b_m"].get<double>();
+
+  for (const auto &record : summary["comparison"]["final"])
+    {
+      const unsigned int joint = record["joint"].get<unsigned int>();
+      const std::string  name  = "vertical " + std::to_string(joint);
+      json fem_joint;
+      for (const auto &candidate : fem["joints"])
+        if (candidate["name"] == name)
+          fem_joint = candidate;
+      ASSERT_FALSE(fem_joint.is_null()) << name;
+
+      const double q_fem = fem_joint["normal_force_N_per_m"].get<double>();
+      EXPECT_DOUBLE_EQ(record["Q_fem_N_per_m"].get<double>(), q_fem);
+      for (const auto &[mechanism, value] : record["Q_closed_form"].items())
+        {
+          const auto &list = analytic["cases"][mechanism]["Q_N_per_m"];
+          if (list.empty())
+            {
+              EXPECT_TRUE(value["Q_N_per_m"].is_null()) << mechanism;
+              continue;
+            }
+          const double q_closed = list[joint - 1].get<double>();
+          EXPECT_DOUBLE_EQ(value["Q_N_per_m"].get<double>(), q_closed);
+          EXPECT_NEAR(value["relative_difference"].get<double>(),
+                      (q_fem - q_closed) / std::abs(q_closed), 1e-12);
+        }
+
+      const auto &contact = record["contact"];
+      EXPECT_DOUBLE_EQ(contact["Q_contact_N"].get<double>(),
+                       std::max(q_fem, 0.) * b);
+      EXPECT_NEAR(contact["A_fem_m2"].get<double>(),
+                  fem_joint["contact_length_m"].get<double>() * b, 1e-15);
+      if (contact["sigma_max_6_53_Pa"].is_number())
+        EXPECT_NEAR(contact["sigma_max_6_53_Pa"].get<double>(),
+                    corner_sigma_max(contact["Q_contact_N"].get<double>(),
+                                     contact["y_m"].get<double>(),
+                                     contact["E_Pa"].get<double>(),
+                                     contact["b_m"].get<double>(),
+                                     contact["L_m"].get<double>()),
+                    1e-9 * contact["sigma_max_6_53_Pa"].get<double>());
+    }
+}
