@@ -198,6 +198,10 @@ namespace FloorBlock::RigidBlocks
           applied[dofs_per_block * index + r] = force[r];
       }
 
+    // The consistent tangent of the last Newton step was singular (a
+    // mechanism in the tangent): if Newton fails, that is the reason.
+    bool singular_in_last_solve = false;
+
     Contact::NewtonCallbacks callbacks;
     callbacks.assemble = [&]() {
       outcome.responses =
@@ -227,8 +231,22 @@ namespace FloorBlock::RigidBlocks
             return false;
           }
       update = residual;
-      const DenseSolveResult solved =
+      DenseSolveResult solved =
         solve_dense(tangent, update, settings.singular_pivot_tolerance);
+      singular_in_last_solve = !solved.success;
+      if (!solved.success && settings.slip_stabilisation > 0.)
+        {
+          outcome.failing_block = solved.singular_row / dofs_per_block + 1;
+          assemble_system(joint_set,
+                          outcome.responses,
+                          loads,
+                          factors.gravity,
+                          factors.support,
+                          {nullptr, &tangent, settings.slip_stabilisation});
+          update = residual;
+          solved =
+            solve_dense(tangent, update, settings.singular_pivot_tolerance);
+        }
       if (!solved.success)
         {
           outcome.failure       = SolveStatus::no_equilibrium;
@@ -269,8 +287,17 @@ namespace FloorBlock::RigidBlocks
                    residual_roundoff(joint_set, start_motions, factors.uplift) /
                    load_norm);
     outcome.newton = Contact::solve_newton(newton, load_norm, callbacks);
-    if (!outcome.newton.converged && outcome.failing_block == 0)
-      outcome.failure = SolveStatus::not_converged;
+    if (!outcome.newton.converged &&
+        outcome.failure != SolveStatus::floating_block)
+      {
+        if (singular_in_last_solve)
+          outcome.failure = SolveStatus::no_equilibrium;
+        else
+          {
+            outcome.failure       = SolveStatus::not_converged;
+            outcome.failing_block = 0;
+          }
+      }
     return outcome;
   }
 } // namespace FloorBlock::RigidBlocks

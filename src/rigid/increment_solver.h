@@ -38,9 +38,12 @@ namespace FloorBlock::RigidBlocks
    * The residual norm counts moment rows divided by L, so that all rows
    * are forces (N/m). Before each linear solve, a block whose joint points
    * are all open is reported as SolveStatus::floating_block instead of
-   * being handed to the LU; a zero pivot with closed joints is reported as
-   * SolveStatus::no_equilibrium (the closed points slip and nothing resists
-   * the motion). No regularisation is added, so a converged answer is the
+   * being handed to the LU. A zero pivot with closed joints (the closed
+   * points slip and nothing resists the motion) is retried with the slip
+   * stabilisation of RigidSolverSettings, which changes the search
+   * direction only; if Newton then fails and the consistent tangent of its
+   * last step was singular, the outcome is SolveStatus::no_equilibrium.
+   * The residual is never regularised, so a converged answer is the
    * unmodified one.
    */
   IncrementOutcome

@@ -36,6 +36,16 @@ namespace FloorBlock::RigidBlocks
       settings.relative_tolerance = 1e-10;
       return settings;
     }();
+    /**
+     * When the consistent tangent is singular because the closed points of
+     * a block all slip, the Newton direction is computed once more with
+     * this fraction of ks added as shear stiffness at slipping points (-).
+     * This is a search direction only (the residual is unchanged): it lets
+     * an iterate that overshot into an all-slip state come back, while a
+     * true mechanism still never converges and is reported as
+     * SolveStatus::no_equilibrium. 0 disables it.
+     */
+    double slip_stabilisation = 1e-2;
     /** Halvings of a failed increment before the solve gives up. */
     unsigned int max_cutbacks = 8;
     /**

@@ -62,6 +62,13 @@ namespace FloorBlock::RigidBlocks
           const Contact::JointResponse<2> &response = responses[j][p];
           if (response.state == Contact::JointState::open)
             continue;
+          dealii::Tensor<2, 2> point_tangent = response.tangent;
+          if (targets.slip_stabilisation > 0. &&
+              response.state == Contact::JointState::slip)
+            point_tangent +=
+              targets.slip_stabilisation *
+              joint_set.law(joints[j]).parameters().shear_stiffness *
+              dealii::outer_product(point.tangent, point.tangent);
           const std::array<SideTerms, 2> sides = {{
             side_terms(joints[j].side_a, -1., point.position,
                        joint_set.centroids()),
@@ -84,7 +91,7 @@ namespace FloorBlock::RigidBlocks
                   // d(row force)/d(jump), then chain rule through the jump.
                   const dealii::Tensor<1, 2> row_tangent =
                     row_side.sign * point.weight *
-                    (row_derivative * response.tangent);
+                    (row_derivative * point_tangent);
                   for (const SideTerms &column_side : sides)
                     {
                       if (!column_side.movable)

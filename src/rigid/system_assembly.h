@@ -18,6 +18,12 @@ namespace FloorBlock::RigidBlocks
     std::vector<double> *residual = nullptr;
     /** dR/dq, with q = (u_x, u_y, theta) per block. */
     DenseMatrix *tangent = nullptr;
+    /**
+     * Fraction of ks added as shear stiffness to the tangent of slipping
+     * points (-); 0 = the consistent tangent. Only the search direction
+     * changes, never the residual, so a converged answer is the same.
+     */
+    double slip_stabilisation = 0.;
   };
 
   /**

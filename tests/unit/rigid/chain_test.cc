@@ -7,15 +7,18 @@
 // vertical joint with Q tan(phi_v) (block i moves up relative to block
 // i+1). Translating the base drags every block by the same amount, so the
 // bedding slips everywhere but neighbouring blocks do not move against
-// each other: the vertical joints stick and their shear is set by the
-// elastic springs, not by the friction limit. The chain is therefore
+// each other: the vertical joints are loaded only by the elastic
+// differences between blocks, not necessarily up to the friction limit. The chain is therefore
 // compared in two steps:
 //  - phi_v = 0: both models carry no vertical shear and the force balance
 //    of every block is the same set of equations; only moments differ
 //    (where N acts), which do not enter Q. Agreement to the Newton
 //    tolerance is expected.
-//  - phi_v > 0: the difference is measured and attributed: the inner
-//    vertical joints are shown to stick below their limit.
+//  - phi_v > 0: the joints far from the face reach their limit through the
+//    elastic differences of the bedding compression, those near the face
+//    do not. Q_j must match the closed form up to the first joint below
+//    its limit, and the remaining difference must be exactly the missing
+//    vertical shear.
 
 #include "scene_fixture.h"
 
@@ -100,7 +103,7 @@ namespace FloorBlock::RigidBlocks
                 reference.lateral_force.back());
   }
 
-  TEST(RigidChain, VerticalJointsStickUnderUniformBaseTranslation)
+  TEST(RigidChain, ClosedFormHoldsWhereVerticalJointsReachTheirLimit)
   {
     constexpr double vertical_degrees = 10.;
     const ModelDescription description = dragged_chain(vertical_degrees);
@@ -111,16 +114,54 @@ namespace FloorBlock::RigidBlocks
       closed_form(description, vertical_degrees);
     ASSERT_EQ(reference.status, Analytic::Status::ok);
     const double friction = std::tan(Testing::radians(vertical_degrees));
-    for (unsigned int number = 1; number < n_blocks; ++number)
+
+    // Q_j of the closed form needs joints 1..j at their Coulomb limit,
+    // V = Q tan(phi_v). No point can exceed its limit, so V at the limit
+    // means every closed point is on it (some are reported stick: their
+    // trial shear equals the limit to round-off). Where that holds the
+    // rigid model must agree to the Newton tolerance (1e-9 as above).
+    bool chain_at_limit = true;
+    for (unsigned int number = 1; number <= n_blocks; ++number)
       {
         SCOPED_TRACE(number);
         const JointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
-        // The assumption of the closed form that fails here: no slip, and
-        // the shear stays below Q tan(phi_v).
-        EXPECT_EQ(joint.counts.n_slip, 0u);
-        EXPECT_LT(std::abs(joint.shear_force), friction * joint.normal_force);
+        const double limit    = friction * joint.normal_force;
+        const bool   at_limit =
+          std::abs(joint.shear_force - limit) <= 1e-9 * limit;
+        chain_at_limit = chain_at_limit && at_limit;
+        if (chain_at_limit)
+          EXPECT_NEAR(joint.normal_force / reference.lateral_force[number - 1],
+                      1.,
+                      1e-9);
+        std::printf("    joint %u: Q %.5e N/m, closed form %.5e N/m "
+                    "(%+.2f %%), V %.4e N/m, limit %.4e N/m, "
+                    "stick/slip/open %u/%u/%u\n",
+                    number,
+                    joint.normal_force,
+                    reference.lateral_force[number - 1],
+                    100. * (joint.normal_force /
+                              reference.lateral_force[number - 1] -
+                            1.),
+                    joint.shear_force,
+                    limit,
+                    joint.counts.n_stick,
+                    joint.counts.n_slip,
+                    joint.counts.n_open);
       }
+    // The assumption that fails here: uniform base travel moves all blocks
+    // alike, so near the face the vertical joints only see the elastic
+    // differences of the bedding compression and stay below their limit.
+    const JointReport &face =
+      Testing::find_joint(last, JointKind::vertical, n_blocks);
+    EXPECT_LT(face.shear_force, 0.5 * friction * face.normal_force);
+    // ... and the agreement above must have covered the free end.
+    EXPECT_NEAR(Testing::find_joint(last, JointKind::vertical, 1).shear_force /
+                  (friction *
+                   Testing::find_joint(last, JointKind::vertical, 1).normal_force),
+                1.,
+                1e-9);
+
     // With the measured joint shears V_j in place of Q_j tan(phi_v), the
     // horizontal and vertical balance of block i with the bedding at its
     // limit,
@@ -153,30 +194,6 @@ namespace FloorBlock::RigidBlocks
                     1e-9);
         previous_force = joint.normal_force;
         previous_shear = joint.shear_force;
-      }
-    const JointReport &face =
-      Testing::find_joint(last, JointKind::vertical, n_blocks);
-    std::printf("  phi_v = %.0f deg: Q_n rigid %.6e N/m, slip_no_rotation "
-                "%.6e N/m (difference %.2f %%); face joint shear %.4e N/m "
-                "(limit Q tan phi_v = %.4e), face stick/slip/open %u/%u/%u\n",
-                vertical_degrees,
-                face.normal_force,
-                reference.lateral_force.back(),
-                100. * (face.normal_force / reference.lateral_force.back() - 1.),
-                face.shear_force,
-                friction * face.normal_force,
-                face.counts.n_stick,
-                face.counts.n_slip,
-                face.counts.n_open);
-    for (unsigned int number = 1; number <= n_blocks; ++number)
-      {
-        const JointReport &joint =
-          Testing::find_joint(last, JointKind::vertical, number);
-        std::printf("    joint %u: Q %.5e closed form %.5e, V %.4e\n",
-                    number,
-                    joint.normal_force,
-                    reference.lateral_force[number - 1],
-                    joint.shear_force);
       }
   }
 } // namespace FloorBlock::RigidBlocks

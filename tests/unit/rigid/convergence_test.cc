@@ -4,6 +4,8 @@
 
 #include "scene_fixture.h"
 
+#include <rigid/increment_solver.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,32 +112,57 @@ namespace FloorBlock::RigidBlocks
       }
   }
 
-  TEST(RigidConvergence, NormalStiffnessFrom1e6To1e14)
+  /** Runs @p description with kn = @p stiffness and ks in Table 6.1 ratio. */
+  SolveResult
+  solve_with_stiffness(ModelDescription description, const double stiffness)
   {
-    for (const double stiffness : {1e6, 1e8, 1e10, 1e12, 1e14})
+    const double shear_ratio =
+      Testing::table_shear_stiffness / Testing::table_normal_stiffness;
+    for (Contact::JointParameters *joint :
+         {&description.bedding_joint, &description.vertical_joint})
       {
-        SCOPED_TRACE(stiffness);
-        ModelDescription description = Testing::default_scene(4);
-        const double     shear_ratio =
-          Testing::table_shear_stiffness / Testing::table_normal_stiffness;
-        for (Contact::JointParameters *joint :
-             {&description.bedding_joint, &description.vertical_joint})
-          {
-            joint->normal_stiffness = stiffness;
-            joint->shear_stiffness  = shear_ratio * stiffness;
-          }
-        const SolveResult result = Model(description).solve();
-        expect_converged_and_balanced(result);
-        const JointReport &face = Testing::find_joint(result.increments.back(),
-                                                      JointKind::vertical,
-                                                      6);
-        std::printf("  kn %.0e Pa/m: face Q %.5e N/m, c %.4f m, newton "
+        joint->normal_stiffness = stiffness;
+        joint->shear_stiffness  = shear_ratio * stiffness;
+      }
+    const SolveResult result = Model(description).solve();
+    if (!result.increments.empty())
+      {
+        const JointReport &face = Testing::find_joint(
+          result.increments.back(), JointKind::vertical, 6);
+        std::printf("  kn %.0e Pa/m: %s, face Q %.5e N/m, c %.4f m, newton "
                     "iterations in the last increment %u, %.2f ms\n",
                     stiffness,
+                    to_string(result.status).c_str(),
                     face.normal_force,
                     face.contact_length,
                     result.increments.back().n_iterations,
                     1e3 * result.wall_time);
+      }
+    return result;
+  }
+
+  TEST(RigidConvergence, NormalStiffnessFrom1e6To1e14)
+  {
+    // Default scene: gravity, support loads, 5 cm vertical uplift.
+    for (const double stiffness : {1e6, 1e8, 1e10, 1e12, 1e14})
+      {
+        SCOPED_TRACE(stiffness);
+        expect_converged_and_balanced(
+          solve_with_stiffness(Testing::default_scene(4), stiffness));
+      }
+  }
+
+  TEST(RigidConvergence, LiftedParabolaStiffnessRange)
+  {
+    // The bent bedding makes the blocks slide and rotate against each
+    // other. Up to 1e10 Pa/m (Table 6.1: 9e9) the solve converges in tens
+    // of ms; at 1e12 it needs many cutbacks (about 20 s) and at 1e14 it
+    // does not converge (see src/rigid/README.md), so those are not run.
+    for (const double stiffness : {1e6, 1e8, 1e10})
+      {
+        SCOPED_TRACE(stiffness);
+        expect_converged_and_balanced(
+          solve_with_stiffness(Testing::lifted_parabola_scene(4), stiffness));
       }
   }
 
@@ -146,7 +173,7 @@ namespace FloorBlock::RigidBlocks
     const std::vector<unsigned int> counts = {100, 200, 400, 800, 1600};
     for (const unsigned int n_points : counts)
       {
-        ModelDescription description          = Testing::default_scene(1);
+        ModelDescription description = Testing::lifted_parabola_scene(2);
         description.solver.n_points_per_joint = n_points;
         const SolveResult result = Model(description).solve();
         expect_converged_and_balanced(result);
@@ -174,21 +201,50 @@ namespace FloorBlock::RigidBlocks
 
   TEST(RigidConvergence, FloatingBlockIsReportedByName)
   {
-    // The block sticks on a bed falling away from the face and leaves the
-    // face block by the elastic shear offset; then the base drops 1 cm in
-    // one increment, so at the start of that increment every point of both
-    // its joints is open. The static solver has no contact to hold the
-    // block and must say so instead of factorising a zero matrix.
-    ModelDescription description = Testing::planar_scene(
-      1, -Testing::radians(10.), Testing::radians(30.), Testing::radians(30.));
-    description.uplift.mode      = Contact::UpliftMode::vertical_translation;
-    description.uplift.magnitude = -0.01;
-    description.steps            = {1, 0, 1};
-    const SolveResult result     = Model(description).solve();
-    EXPECT_EQ(result.status, SolveStatus::floating_block) << result.message;
-    EXPECT_EQ(result.failing_block, 1u);
-    ASSERT_EQ(result.increments.size(), 1u);
-    EXPECT_EQ(result.increments.front().stage, Contact::LoadStage::gravity);
-    std::printf("  message: %s\n", result.message.c_str());
+    // In a full solve the predictor carries every block with the base, so
+    // a block only floats if an iterate separates it from everything. The
+    // detection is therefore checked on one load state started from a
+    // block lifted 1 cm clear of the base and moved 1 cm away from the
+    // face block: every point of both its joints is open, and the solver
+    // must name the block instead of factorising a zero matrix.
+    const ModelDescription description = Testing::planar_scene(
+      1, Testing::radians(5.), Testing::radians(30.), Testing::radians(30.));
+    const Model model(description);
+    BlockMotion lifted;
+    lifted.translation = dealii::Tensor<1, 2>({0.01, 0.01});
+    const IncrementOutcome outcome =
+      solve_load_state(model.joint_set(),
+                       model.loads(),
+                       description.solver,
+                       description.assembly.block_width,
+                       {1., 0., 0.},
+                       {lifted},
+                       model.joint_set().virgin_histories());
+    EXPECT_FALSE(outcome.newton.converged);
+    EXPECT_EQ(outcome.failure, SolveStatus::floating_block);
+    EXPECT_EQ(outcome.failing_block, 1u);
+    std::printf("  message: %s\n", outcome.newton.failure_reason.c_str());
+  }
+
+  TEST(RigidConvergence, LiftedParabolaScene)
+  {
+    // The other reading of floor uplift: a flat bedding bent into
+    // y = x^2/400 under the loaded blocks.
+    const ModelDescription description = Testing::lifted_parabola_scene(5);
+    const SolveResult      result      = Model(description).solve();
+    expect_converged_and_balanced(result);
+    std::printf("  lifted parabola (6 blocks, 400 points per joint): %zu "
+                "increments, wall time %.2f ms\n",
+                result.increments.size(),
+                1e3 * result.wall_time);
+    print_increments(result, description.assembly.n_blocks);
+    const JointReport &face = Testing::find_joint(result.increments.back(),
+                                                  JointKind::vertical,
+                                                  6);
+    // The bent bedding rotates block 6 against the upright face block: the
+    // contact closes down from floor level and is shorter than the joint.
+    EXPECT_GT(face.contact_length, 0.);
+    EXPECT_LT(face.contact_length, description.assembly.block_height);
+    EXPECT_EQ(face.peak_coordinate, 0.);
   }
 } // namespace FloorBlock::RigidBlocks

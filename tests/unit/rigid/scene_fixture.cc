@@ -62,6 +62,17 @@ namespace FloorBlock::RigidBlocks::Testing
     return description;
   }
 
+  ModelDescription
+  lifted_parabola_scene(const unsigned int n_uplift)
+  {
+    ModelDescription description   = default_scene(n_uplift);
+    description.assembly.floor_uplift =
+      Geometry::FloorUplift::lifted_flat_bedding;
+    description.uplift.mode      = Contact::UpliftMode::parabola;
+    description.uplift.magnitude = description.assembly.curvature;
+    return description;
+  }
+
   const JointReport &
   find_joint(const IncrementReport &increment,
              const JointKind        kind,

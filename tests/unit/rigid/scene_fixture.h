@@ -41,6 +41,14 @@ namespace FloorBlock::RigidBlocks::Testing
   ModelDescription
   default_scene(const unsigned int n_uplift);
 
+  /**
+   * @brief The default scene read as a lifted flat bedding: the blocks stand
+   * on a flat base that is bent into y = x^2/400 (UpliftMode::parabola,
+   * vertex at the face) in @p n_uplift increments.
+   */
+  ModelDescription
+  lifted_parabola_scene(const unsigned int n_uplift);
+
   /** @brief The report of joint @p number of @p kind in @p increment. */
   const JointReport &
   find_joint(const IncrementReport &increment,
