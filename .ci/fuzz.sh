@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Bounded fuzzing of scene reading, validation and the closed forms.
 #
-# With clang++ and libFuzzer (libclang_rt.fuzzer, Debian package
-# libclang-rt-14-dev or clang-14) it builds the coverage-guided target
+# With FUZZ_MODE=libfuzzer (needs clang++ and libclang_rt.fuzzer, Debian
+# package clang-14; see the note at "auto" below) it builds the target
 # scene_libfuzzer into build-fuzz/ (clang, ASan+UBSan) and runs it for
 # FUZZ_SECONDS (default 60). Otherwise, or with FUZZ_MODE=gtest, it runs the
-# randomized GoogleTest fuzz_tests (Release, build-fuzz-gtest/) again and
-# again with fresh seeds for the same time. Either way it prints how many
+# randomized GoogleTest fuzz_tests (Release, build-fuzz-gtest/ or
+# $FUZZ_GTEST_BUILD) again and again with fresh seeds (from FUZZ_SEED,
+# default the clock) for the same time. Either way it prints how many
 # inputs were tried and exits non-zero on the first crash or defect;
 # libFuzzer saves the crashing input under build-fuzz/artifacts/.
 set -euo pipefail
@@ -21,8 +22,16 @@ have_libfuzzer() {
   command -v clang++ >/dev/null &&
     compgen -G "/usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a" >/dev/null
 }
+# auto = gtest: the libFuzzer build links (clang 14 against the g++-built
+# deal.II) but ASan reports an alloc-dealloc mismatch inside read_scenario
+# on the very first, valid seed input, and with that check off it segfaults:
+# not usable until explained. FUZZ_MODE=libfuzzer runs it anyway.
 if [ "$mode" = auto ]; then
-  if have_libfuzzer; then mode=libfuzzer; else mode=gtest; fi
+  mode=gtest
+fi
+if [ "$mode" = libfuzzer ] && ! have_libfuzzer; then
+  echo "fuzz: clang++ or libclang_rt.fuzzer missing" >&2
+  exit 2
 fi
 
 run_libfuzzer() {
@@ -58,7 +67,8 @@ run_libfuzzer() {
 }
 
 run_gtest() {
-  local build=build-fuzz-gtest
+  # FUZZ_GTEST_BUILD=build reuses the CI's Release build instead of a new one.
+  local build=${FUZZ_GTEST_BUILD:-build-fuzz-gtest}
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$build" -j"$jobs" --target fuzz_tests -- --no-print-directory
   local executable="$build/tests/fuzz/fuzz_tests"
