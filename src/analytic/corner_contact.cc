@@ -50,6 +50,12 @@ namespace FloorBlock
       contact.contact_area   = b * contact.contact_length;
       contact.average_stress = std::sqrt(y * E * Q / (2. * b * L * L));
       contact.max_stress     = 2. * contact.average_stress;
+      // Finite inputs near the limits of double can still overflow the
+      // products above: report that instead of returning inf.
+      if (!std::isfinite(contact.contact_length) ||
+          !std::isfinite(contact.average_stress) ||
+          !std::isfinite(contact.max_stress))
+        return CornerContact{Status::invalid_input, 0., 0., 0., 0.};
       if (contact.contact_length > block_height)
         contact.status = Status::contact_longer_than_block;
       return contact;

@@ -19,6 +19,16 @@ namespace FloorBlock
         if (!(std::isfinite(value) && value > 0.))
           throw InputError(name, std::to_string(value), "> 0 " + units);
       }
+
+      /// Finite inputs can still overflow; say so instead of returning inf.
+      double
+      finite_or_throw(const double value, const std::string &name)
+      {
+        if (!std::isfinite(value))
+          throw InputError(name, std::to_string(value),
+                           "a finite value (inputs too large)");
+        return value;
+      }
     } // namespace
 
     std::vector<double>
@@ -54,7 +64,8 @@ namespace FloorBlock
         throw InputError("Relative rotation of the joint faces",
                          std::to_string(relative_rotation),
                          "finite, between -pi/2 and pi/2 rad");
-      return block_width * std::tan(relative_rotation);
+      return finite_or_throw(block_width * std::tan(relative_rotation),
+                             "Floor lift y = L tan(relative rotation)");
     }
 
     double
@@ -63,8 +74,10 @@ namespace FloorBlock
     {
       require_positive(bulk_modulus, "Bulk modulus", "Pa");
       require_positive(shear_modulus, "Shear modulus", "Pa");
-      return 9. * bulk_modulus * shear_modulus /
-             (3. * bulk_modulus + shear_modulus);
+      // Written with the ratio G/K so that no product can overflow:
+      // 9KG/(3K+G) = 9G/(3 + G/K).
+      const double ratio = shear_modulus / bulk_modulus;
+      return 9. * shear_modulus / (3. + ratio);
     }
 
     double
@@ -73,8 +86,9 @@ namespace FloorBlock
     {
       require_positive(bulk_modulus, "Bulk modulus", "Pa");
       require_positive(shear_modulus, "Shear modulus", "Pa");
-      return (3. * bulk_modulus - 2. * shear_modulus) /
-             (2. * (3. * bulk_modulus + shear_modulus));
+      // (3K-2G)/(2(3K+G)) with the ratio G/K, free of overflow.
+      const double ratio = shear_modulus / bulk_modulus;
+      return (3. - 2. * ratio) / (2. * (3. + ratio));
     }
   } // namespace Analytic
 } // namespace FloorBlock

@@ -247,12 +247,11 @@ TEST(AnalyticFuzz, HostileChainsGiveStatusAndFiniteNumbers)
 }
 
 // corner_contact and the floor-shape helpers shall return finite numbers, a
-// status or InputError for any input. Disabled: they overflow to inf/NaN on
-// huge finite inputs (e.g. youngs_modulus_from_bulk_shear(1e308, 1e308),
-// corner_contact(1e300, 1e300, 1e300, 1, 1, 1),
-// joint_floor_lift(1.5, 0, 1e308)); scene files cannot reach such values
-// (their patterns cap them). Enable once src/analytic checks its results.
-TEST(AnalyticFuzz, DISABLED_HelpersStayFiniteOnHugeInputs)
+// status or InputError for any input, also huge finite ones (this found
+// youngs_modulus_from_bulk_shear(1e308, 1e308) = NaN,
+// corner_contact(1e300, 1e300, 1e300, 1, 1, 1) = inf and
+// joint_floor_lift(1.5, 0, 1e308) = inf, now fixed).
+TEST(AnalyticFuzz, HelpersStayFiniteOnHugeInputs)
 {
   EXPECT_EQ(run_hostile_inputs(true), 0u);
 }
