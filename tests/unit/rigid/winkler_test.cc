@@ -132,3 +132,60 @@ namespace FloorBlock::RigidBlocks
       }
   }
 } // namespace FloorBlock::RigidBlocks
+
+namespace FloorBlock::RigidBlocks
+{
+  TEST(RigidWinkler, SolvedLiftedParabolaJointsAreWinklerTriangles)
+  {
+    // The same relations in a full solve: in the lifted-parabola scene every
+    // vertical joint in partial contact must carry the triangle of a
+    // relative rotation theta_rel = theta_j - theta_{j+1}:
+    // c = sqrt(2 Q / (kn theta_rel)) and sigma_peak = 2 Q / c at floor
+    // level. The bounds are the trapezoid error of Q (h^2/(4 c^2)) and
+    // half of it for c, as in the prescribed test.
+    const ModelDescription description = Testing::lifted_parabola_scene(5);
+    const SolveResult      result      = Model(description).solve();
+    ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
+    const IncrementReport &last     = result.increments.back();
+    const unsigned int     n_blocks = description.assembly.n_blocks;
+    const double           spacing  = description.assembly.block_height /
+                             (description.solver.n_points_per_joint - 1);
+    const double stiffness = description.vertical_joint.normal_stiffness;
+    unsigned int n_partial = 0;
+    for (unsigned int number = 1; number <= n_blocks; ++number)
+      {
+        SCOPED_TRACE(number);
+        const JointReport &joint =
+          Testing::find_joint(last, JointKind::vertical, number);
+        if (!(joint.contact_length > 0. &&
+              joint.contact_length < description.assembly.block_height))
+          continue;
+        ++n_partial;
+        const double relative_rotation =
+          last.motions[number - 1].rotation -
+          (number < n_blocks ? last.motions[number].rotation : 0.);
+        const double length = joint.contact_length;
+        const double bound  = spacing * spacing / (4. * length * length);
+        EXPECT_NEAR(std::sqrt(2. * joint.normal_force /
+                              (stiffness * relative_rotation)) /
+                      length,
+                    1.,
+                    bound / 2. + 1e-12);
+        EXPECT_NEAR(2. * joint.normal_force / length /
+                      joint.peak_normal_traction,
+                    1.,
+                    bound + 1e-12);
+        EXPECT_EQ(joint.peak_coordinate, 0.);
+        std::printf("    joint %u: theta_rel %.4e rad (bed chord rotation "
+                    "L/k = %.4e), Q %.4e N/m, c %.4f m, peak %.4e Pa\n",
+                    number,
+                    relative_rotation,
+                    description.assembly.block_width /
+                      description.assembly.curvature,
+                    joint.normal_force,
+                    length,
+                    joint.peak_normal_traction);
+      }
+    EXPECT_GE(n_partial, 3u);
+  }
+} // namespace FloorBlock::RigidBlocks
