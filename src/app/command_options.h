@@ -17,6 +17,9 @@ namespace FloorBlock::App
     bool                     print_ids = false; ///< mesh: print the id scheme
     bool                     with_fem  = false; ///< sweep: also run the FEM
     std::string              verification_case; ///< verify: e.g. "hertz"
+    std::string              figure;         ///< sweep: only this figure
+    unsigned int             case_limit = 0; ///< sweep --fem: at most this many
+
   };
 
   /** @brief Reads the scene with its overrides (throws InputError). */

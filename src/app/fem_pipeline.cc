@@ -27,7 +27,8 @@ namespace FloorBlock::App
 
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
-              const Output::ResultFolder &          folder)
+              const Output::ResultFolder &          folder,
+              const bool                            write_vtu)
   {
     FemOutcome outcome;
     // Gmsh writes the mesh itself, so the folder must exist first.
@@ -44,7 +45,8 @@ namespace FloorBlock::App
     Contact::ContactSolver solver(
       triangulation,
       Contact::make_floor_scene(Scene::floor_scene_settings(scene)),
-      Scene::contact_solver_settings(scene, folder.path_of("vtu")));
+      Scene::contact_solver_settings(scene,
+                                     write_vtu ? folder.path_of("vtu") : ""));
     try
       {
         outcome.result    = solver.run();

@@ -28,7 +28,8 @@ namespace FloorBlock::App
    */
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
-              const Output::ResultFolder &          folder);
+              const Output::ResultFolder &          folder,
+              const bool                            write_vtu = true);
 
   /** @brief Terminal summary: one line per joint, the state, and times. */
   std::string

@@ -19,8 +19,8 @@ namespace
   using Command = std::function<int(const App::CommandOptions &)>;
 
   /// Subcommands that run the finite-element engine.
-  const std::set<std::string> needs_mpi = {"mesh", "solve", "run", "verify",
-                                           "converge"};
+  const std::set<std::string> needs_mpi = {"mesh",   "solve",    "run",
+                                           "verify", "converge", "sweep"};
 
   /** Adds one subcommand with the options every subcommand shares. */
   CLI::App *
@@ -109,8 +109,12 @@ main(int argc, char **argv)
     ->required();
   cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
                                        "Print the material/boundary id scheme");
-  cli.get_subcommand("sweep")->add_flag("--fem", options.with_fem,
-                                        "Also run the FEM for every case");
+  CLI::App *sweep = cli.get_subcommand("sweep");
+  sweep->add_flag("--fem", options.with_fem, "Also run the FEM for every case");
+  sweep->add_option("--figure", options.figure,
+                    "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
+  sweep->add_option("--limit", options.case_limit,
+                    "With --fem: run at most this many cases (0 = all)");
 
   try
     {
@@ -128,7 +132,12 @@ main(int argc, char **argv)
     if (sub->parsed())
       {
         if (needs_mpi.count(sub->get_name()) > 0)
-          mpi.emplace(argc, argv, 1);
+          {
+            mpi.emplace(argc, argv, 1);
+            // Again after MPI start-up, in case the MPI library installed
+            // handlers of its own.
+            install_interrupt_handlers();
+          }
         return run_guarded(command, options);
       }
   return exit_code::bad_input;

@@ -1,4 +1,5 @@
 #include <app/command_options.h>
+#include <app/fem_sweep.h>
 #include <common/input_error.h>
 #include <common/units.h>
 #include <output/gnuplot.h>
@@ -9,16 +10,45 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <set>
 
 namespace FloorBlock::App
 {
+  namespace
+  {
+    int
+    fem_sweep_command(const CommandOptions &                options,
+                      const Parameters::ScenarioParameters &scene)
+    {
+      const std::set<std::string> figures = {"fig6_5", "fig6_6", "fig6_7",
+                                             "fig6_10_11"};
+      if (!options.figure.empty() && figures.count(options.figure) == 0)
+        throw InputError("--figure", options.figure,
+                         "one of fig6_5, fig6_6, fig6_7, fig6_10_11");
+      std::vector<Scene::FigurePoint> points;
+      for (auto &&list : {Scene::lateral_force_figures(scene),
+                          Scene::floor_stress_figures(scene)})
+        for (const auto &point : list)
+          if (options.figure.empty() || point.figure == options.figure)
+            points.push_back(point);
+
+      const Output::ResultFolder folder(output_directory(options, scene));
+      folder.write_inputs(scene);
+      const unsigned int remaining =
+        run_fem_sweep(points, folder, options.case_limit);
+      std::cout << points.size() - remaining << " of " << points.size()
+                << " FEM cases finished; results in "
+                << output_directory(options, scene) << std::endl;
+      return 0;
+    }
+  } // namespace
+
   int
   sweep_command(const CommandOptions &options)
   {
-    if (options.with_fem)
-      throw InputError("sweep --fem: the FEM sweep is not part of this build "
-                       "yet; run the closed-form sweep without --fem");
     const auto scene = read_scene(options);
+    if (options.with_fem)
+      return fem_sweep_command(options, scene);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
 

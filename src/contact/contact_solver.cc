@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <contact/contact_assembly.h>
+#include <common/interrupt.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_pairing.h>
 #include <contact/joint_report.h>
@@ -377,6 +378,9 @@ namespace FloorBlock
       unsigned int n_failed     = 0;
       while (reached < 1.)
         {
+          // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
+          // solve, so nothing half-computed reaches a result file.
+          stop_if_interrupted();
           const bool   last   = reached + step >= 1.;
           const double target = last ? 1. : reached + step;
           LoadFactors  factors = committed_factors;

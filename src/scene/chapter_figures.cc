@@ -1,6 +1,8 @@
 #include <common/units.h>
 #include <scene/chapter_figures.h>
 
+#include <fmt/format.h>
+
 namespace FloorBlock::Scene
 {
   namespace
@@ -33,9 +35,19 @@ namespace FloorBlock::Scene
               variant.joints.bedding_friction_angle,
               variant.joints.vertical_friction_angle,
               variant.loading.support_load,
-              evaluate_closed_forms(variant)};
+              evaluate_closed_forms(variant),
+              variant};
     }
   } // namespace
+
+  std::string
+  FigurePoint::id() const
+  {
+    return fmt::format("{}_k{:.0f}_phih{:.0f}_phiv{:.0f}_load{:.0f}t", figure,
+                       curvature, Units::radians_to_degrees(bedding_friction),
+                       Units::radians_to_degrees(vertical_friction),
+                       support_load / Units::tonnes_force_to_newtons(1.));
+  }
 
   std::vector<FigurePoint>
   lateral_force_figures(const Parameters::ScenarioParameters &scene)

@@ -21,6 +21,12 @@ namespace FloorBlock::Scene
     double      vertical_friction; ///< phi_v (rad)
     double      support_load;      ///< N, one support
     ClosedForms closed_forms;
+    /// The scene with this point's inputs set, for the FEM.
+    Parameters::ScenarioParameters scene;
+
+    /** @brief A stable name, used as the case's file name in FEM sweeps. */
+    std::string
+    id() const;
   };
 
   /**

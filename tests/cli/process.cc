@@ -24,6 +24,30 @@ namespace FloorBlockTest
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
   }
 
+  int
+  start_floorblock(const std::string &arguments, const std::string &log_path)
+  {
+    const std::string command = std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
+                                " && exec " + FLOORBLOCK_EXECUTABLE + " " +
+                                arguments + " > " + shell_quoted(log_path) +
+                                " 2>&1";
+    const pid_t child = ::fork();
+    if (child == 0)
+      {
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), nullptr);
+        ::_exit(127);
+      }
+    return child;
+  }
+
+  int
+  wait_for_exit(const int process_id)
+  {
+    int status = 0;
+    ::waitpid(process_id, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
   std::string
   fresh_output_folder(const std::string &name)
   {

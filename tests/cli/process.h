@@ -18,6 +18,17 @@ namespace FloorBlockTest
   ProcessResult
   run_floorblock(const std::string &arguments);
 
+  /**
+   * @brief Starts build/floorblock with @p arguments in the background
+   * (output to @p log_path) and returns its process id.
+   */
+  int
+  start_floorblock(const std::string &arguments, const std::string &log_path);
+
+  /** @brief Waits for a started process; its exit code (-1 if killed). */
+  int
+  wait_for_exit(const int process_id);
+
   /** @brief A fresh, not yet existing folder under the system temp folder. */
   std::string
   fresh_output_folder(const std::string &name);

@@ -1,0 +1,178 @@
+#include <common/units.h>
+#include <output/fem_sweep_report.h>
+#include <output/numbering_note.h>
+
+#include <fmt/format.h>
+
+#include <map>
+
+namespace FloorBlock::Output
+{
+  using nlohmann::json;
+
+  namespace
+  {
+    constexpr double kN  = Units::newtons_per_kilonewton;
+    constexpr double MPa = Units::pascals_per_megapascal;
+
+    json
+    face_joint(const json &fem, const unsigned int n_blocks)
+    {
+      for (const auto &joint : fem["joints"])
+        if (joint["name"] == "vertical " + std::to_string(n_blocks))
+          return joint;
+      return nullptr;
+    }
+
+    std::string
+    cell(const json &value, const double scale = 1.)
+    {
+      return value.is_number() ? fmt::format("{:.9e}", value.get<double>() * scale) :
+                                 std::string();
+    }
+
+    bool
+    is_stress_figure(const std::string &figure)
+    {
+      return figure == "fig6_10_11";
+    }
+  } // namespace
+
+  json
+  fem_case_record(const Scene::FigurePoint &point, const json &fem)
+  {
+    const json face = face_joint(fem, point.closed_forms.chain.n_blocks());
+    json closed = json::object();
+    for (const auto &entry : point.closed_forms.mechanisms)
+      {
+        const bool has_q = !entry.forces.lateral_force.empty();
+        const bool has_stress =
+          has_q && entry.contact.status == Analytic::Status::ok;
+        closed[Scene::to_string(entry.mechanism)] = {
+          {"status", Analytic::to_string(entry.forces.status)},
+          {"Q_face_N_per_m",
+           has_q ? json(entry.forces.lateral_force.back()) : json(nullptr)},
+          {"sigma_max_6_53_Pa",
+           has_stress ? json(entry.contact.max_stress) : json(nullptr)},
+          {"contact_status", Analytic::to_string(entry.contact.status)}};
+      }
+    return {
+      {"id", point.id()},
+      {"figure", point.figure},
+      {"k_m", point.curvature},
+      {"phi_h_deg", Units::radians_to_degrees(point.bedding_friction)},
+      {"phi_v_deg", Units::radians_to_degrees(point.vertical_friction)},
+      {"support_load_t",
+       point.support_load / Units::tonnes_force_to_newtons(1.)},
+      {"fem",
+       {{"status", fem["status"]},
+        {"status_text", fem["status_text"]},
+        {"Q_face_N_per_m",
+         face.is_null() ? json(nullptr) : face["normal_force_N_per_m"]},
+        {"contact_length_m",
+         face.is_null() ? json(nullptr) : face["contact_length_m"]},
+        {"sigma_max_Pa", face.is_null() ? json(nullptr) : face["sigma_max_Pa"]},
+        {"sigma_max_averaged_Pa",
+         face.is_null() ? json(nullptr) : face["sigma_max_averaged_Pa"]},
+        {"n_dofs", fem["n_dofs"]},
+        {"wall_time_s", fem["wall_time_s"]}}},
+      {"closed_forms", closed}};
+  }
+
+  std::string
+  fem_sweep_csv(const std::vector<json> &records, const std::string &figure)
+  {
+    std::string csv = fmt::format(
+      "# {}\n# Face joint (Q_n). FEM values are empty where the FEM did not "
+      "converge (fem_status); closed-form values are empty where the "
+      "formula has no finite answer (its status).\n"
+      "k_m,phi_h_deg,phi_v_deg,support_load_t,fem_status,fem_Q_face_N_per_m,"
+      "fem_contact_length_m,fem_sigma_max_Pa,fem_sigma_max_averaged_Pa",
+      numbering_note);
+    const std::vector<std::string> mechanisms = {
+      "no_rotation", "rotation_no_vertical_slip", "rotation_vertical_slip"};
+    for (const auto &mechanism : mechanisms)
+      csv += fmt::format(",{0}_status,{0}_Q_face_N_per_m,{0}_sigma_max_6_53_Pa",
+                         mechanism);
+    csv += "\n";
+    for (const auto &record : records)
+      {
+        if (record["figure"] != figure)
+          continue;
+        const auto &fem = record["fem"];
+        const bool  ok  = fem["status"] == "converged";
+        csv += fmt::format("{},{},{},{},{},{},{},{},{}", record["k_m"].dump(),
+                           record["phi_h_deg"].dump(),
+                           record["phi_v_deg"].dump(),
+                           record["support_load_t"].dump(),
+                           fem["status"].get<std::string>(),
+                           ok ? cell(fem["Q_face_N_per_m"]) : "",
+                           ok ? cell(fem["contact_length_m"]) : "",
+                           ok ? cell(fem["sigma_max_Pa"]) : "",
+                           ok ? cell(fem["sigma_max_averaged_Pa"]) : "");
+        for (const auto &mechanism : mechanisms)
+          {
+            const auto &closed = record["closed_forms"][mechanism];
+            csv += fmt::format(",{},{},{}", closed["status"].get<std::string>(),
+                               cell(closed["Q_face_N_per_m"]),
+                               cell(closed["sigma_max_6_53_Pa"]));
+          }
+        csv += "\n";
+      }
+    return csv;
+  }
+
+  std::string
+  fem_sweep_plot(const std::vector<json> &records, const std::string &figure)
+  {
+    const bool  stress   = is_stress_figure(figure);
+    const char *panel_by = stress ? "k_m" : "phi_v_deg";
+    const char *curve_by = stress ? "support_load_t" : "phi_v_deg";
+    const char *fem_key  = stress ? "sigma_max_averaged_Pa" : "Q_face_N_per_m";
+    const char *closed_key = stress ? "sigma_max_6_53_Pa" : "Q_face_N_per_m";
+    const double scale     = stress ? 1. / MPa : 1. / kN;
+
+    // panel -> curve -> rows "phi_h fem closed"
+    std::map<double, std::map<double, std::string>> panels;
+    for (const auto &record : records)
+      if (record["figure"] == figure)
+        {
+          const auto &fem    = record["fem"];
+          const auto &closed = record["closed_forms"]["no_rotation"];
+          const auto  value  = [&](const json &v) {
+            return v.is_number() ? fmt::format("{}", v.get<double>() * scale) :
+                                   std::string("NaN");
+          };
+          panels[record[panel_by].get<double>()]
+                [record[curve_by].get<double>()] += fmt::format(
+                  "{} {} {}\n", record["phi_h_deg"].get<double>(),
+                  fem["status"] == "converged" ? value(fem[fem_key]) : "NaN",
+                  value(closed[closed_key]));
+        }
+
+    std::string script = fmt::format(
+      "set multiplot layout 1,{} title '{}: FEM (points) against the "
+      "no-rotation closed form (lines)'\nset grid\nset key top left\n"
+      "set xlabel 'bedding friction angle (deg)'\nset ylabel '{}'\n",
+      std::max<std::size_t>(panels.size(), 1), figure,
+      stress ? "sigma_max at the face (MPa)" : "Q at the face (kN/m)");
+    unsigned int block = 0;
+    for (const auto &[panel, curves] : panels)
+      {
+        script += fmt::format("set title '{} = {}'\n", panel_by, panel);
+        std::string plot = "plot ";
+        for (const auto &[curve, rows] : curves)
+          {
+            script += fmt::format("$d{} << EOD\n{}EOD\n", block, rows);
+            plot += fmt::format(
+              "{}$d{} using 1:2 with points pt 7 lc {} title 'FEM {} {}', "
+              "$d{} using 1:3 with lines lc {} notitle",
+              block == 0 || plot == "plot " ? "" : ", ", block, block % 8 + 1,
+              curve_by, curve, block, block % 8 + 1);
+            ++block;
+          }
+        script += plot + "\n";
+      }
+    return script + "unset multiplot\n";
+  }
+} // namespace FloorBlock::Output

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <scene/chapter_figures.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace FloorBlock::Output
+{
+  /**
+   * @brief The stored record of one FEM sweep case: its inputs, the FEM's
+   * face joint (Q_n, contact length, peak stresses, status) and each closed
+   * form's Q_n and sigma_max (Eq. 6.53, geometric y) for the same inputs.
+   */
+  nlohmann::json
+  fem_case_record(const Scene::FigurePoint &point, const nlohmann::json &fem);
+
+  /** @brief One CSV row per case of @p figure; units in the column names. */
+  std::string
+  fem_sweep_csv(const std::vector<nlohmann::json> &records,
+                const std::string &                figure);
+
+  /**
+   * @brief gnuplot script shaped like the chapter's figure: Q at the face
+   * (Figures 6.5-6.7, one panel per vertical friction) or sigma_max at the
+   * face (Figures 6.10/6.11, one panel per curvature), against bedding
+   * friction; FEM as points, closed forms as lines.
+   */
+  std::string
+  fem_sweep_plot(const std::vector<nlohmann::json> &records,
+                 const std::string &                figure);
+} // namespace FloorBlock::Output
