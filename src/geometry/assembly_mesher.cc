@@ -108,6 +108,49 @@ namespace FloorBlock::Geometry
       return n_matched;
     }
 
+    /**
+     * Fewest cell edges on a fillet arc: 4, so that every fillet has a node
+     * at its middle and is resolved however coarse the corner size.
+     */
+    constexpr int min_fillet_intervals = 4;
+
+    /**
+     * Fixed node counts on the fillet arcs: uniform in angle (OCC circles
+     * are parametrised by angle) with about the corner size as the final
+     * spacing. The two top fillets across a vertical joint get the count of
+     * the master, so where they are mirror images (level floor) their nodes
+     * are mirror images too -- at identical heights, which is what the
+     * contact pairing needs to put a fillet node against its partner across
+     * the joint (Contact::pair_joint_nodes).
+     */
+    void
+    mesh_fillets(const AssemblyOutline     &outline,
+                 const GmshAssembly        &assembly,
+                 const AssemblyDescription &description)
+    {
+      const auto n_nodes = [&](const SegmentRef &ref) {
+        const Segment &arc = outline.bodies[ref.body].segments[ref.segment];
+        // Blossom full-quad recombination meshes half the intervals and
+        // halves them, so the number of intervals must be even.
+        const int half_intervals = std::max(
+          min_fillet_intervals / 2,
+          static_cast<int>(std::ceil(
+            arc_length(arc) / (2.0 * description.mesh_corner_size))));
+        return 2 * half_intervals + 1;
+      };
+      for (unsigned int body = 0; body < outline.bodies.size(); ++body)
+        for (unsigned int segment = 0;
+             segment < outline.bodies[body].segments.size();
+             ++segment)
+          if (outline.bodies[body].segments[segment].kind == SegmentKind::arc)
+            mesh::setTransfiniteCurve(assembly.curve_tags[body][segment],
+                                      n_nodes({body, segment}));
+      for (const FilletPair &pair : outline.fillet_pairs)
+        mesh::setTransfiniteCurve(
+          assembly.curve_tags[pair.slave.body][pair.slave.segment],
+          n_nodes(pair.master));
+    }
+
     /** Count quads and their distinct nodes; refuse any other cell type. */
     void
     count_cells_and_nodes(MeshStatistics &statistics)
@@ -150,6 +193,7 @@ namespace FloorBlock::Geometry
         set_size_field(outline, description);
         statistics.n_matched_pairs =
           constrain_joint_sides(outline, assembly, description);
+        mesh_fillets(outline, assembly, description);
         mesh::generate(2);
         count_cells_and_nodes(statistics);
         statistics.n_bodies = outline.bodies.size();

@@ -7,12 +7,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace FloorBlock::Geometry
 {
   namespace
   {
+    /** Two fillets are mirror images if they agree to this fraction of the block width. */
+    constexpr double mirror_tolerance_factor = 1e-12;
+
     /**
      * A block corner: where the vertical side and the bedding-following
      * curve (bottom or top) meet, possibly replaced by a fillet arc tangent
@@ -159,19 +163,21 @@ namespace FloorBlock::Geometry
               id};
     }
 
-    void
+    /** Appends the fillet arc of a rounded corner; returns its index (none if sharp). */
+    std::optional<unsigned int>
     add_fillet(const Corner                    &corner,
                const bool                        from_side,
                const dealii::types::boundary_id id,
                std::vector<Segment>             &segments)
     {
       if (!corner.rounded)
-        return;
+        return std::nullopt;
       segments.push_back({SegmentKind::arc,
                           from_side ? corner.side_point : corner.curve_point,
                           from_side ? corner.curve_point : corner.side_point,
                           corner.centre,
                           id});
+      return segments.size() - 1;
     }
 
     /**
@@ -294,6 +300,10 @@ namespace FloorBlock::Geometry
       }
 
     AssemblyOutline outline;
+    // Segment indices of every body's top fillets, to pair them across the
+    // vertical joints below.
+    std::vector<std::optional<unsigned int>> top_left_fillets;
+    std::vector<std::optional<unsigned int>> top_right_fillets;
     for (unsigned int index = 0; index < frames.size(); ++index)
       {
         const BlockFrame  &frame = frames[index];
@@ -328,13 +338,15 @@ namespace FloorBlock::Geometry
                           right_breaks,
                           frame.right_id,
                           segments);
-        add_fillet(own.top_right, true, frame.right_id, segments);
+        top_right_fillets.push_back(
+          add_fillet(own.top_right, true, frame.right_id, segments));
         segments.push_back(curve_piece(profile,
                                        own.top_right.curve_point.x,
                                        own.top_left.curve_point.x,
                                        height,
                                        frame.top_id));
-        add_fillet(own.top_left, false, frame.left_id, segments);
+        top_left_fillets.push_back(
+          add_fillet(own.top_left, false, frame.left_id, segments));
         add_vertical_side(frame.x_left,
                           own.top_left.side_point.y,
                           own.bottom_left.side_point.y,
@@ -393,6 +405,27 @@ namespace FloorBlock::Geometry
             if (same_geometry(outline.bodies[first].segments[a],
                               outline.bodies[second].segments[b]))
               outline.joint_pairs.push_back({{first, a}, {second, b}});
+
+    // Top fillets across vertical joint j: block j = frames[index] (its
+    // left side is the joint) and its left neighbour frames[index + 1].
+    // Mirror images are recognised to round-off of the block width: the
+    // two arcs come from separate bisections.
+    const double mirror_tolerance =
+      mirror_tolerance_factor * description.block_width;
+    for (unsigned int index = 0; index + 1 < frames.size(); ++index)
+      if (top_left_fillets[index] && top_right_fillets[index + 1])
+        {
+          FilletPair pair{{index, *top_left_fillets[index]},
+                          {index + 1, *top_right_fillets[index + 1]},
+                          frames[index].x_left,
+                          false};
+          pair.mirror = mirror_geometry(
+            outline.bodies[index].segments[pair.master.segment],
+            outline.bodies[index + 1].segments[pair.slave.segment],
+            pair.joint_x,
+            mirror_tolerance);
+          outline.fillet_pairs.push_back(pair);
+        }
 
     // Contact corners: every corner on a vertical joint (both bodies) and
     // every block corner on the bedding; not the free top corner of block 1
@@ -470,6 +503,38 @@ namespace FloorBlock::Geometry
             }
         }
     return twice_area / 2.0;
+  }
+
+  double
+  arc_length(const Segment &arc)
+  {
+    const Point2 from{arc.start.x - arc.control.x, arc.start.y - arc.control.y};
+    const Point2 to{arc.end.x - arc.control.x, arc.end.y - arc.control.y};
+    const double sweep = std::atan2(std::abs(from.x * to.y - from.y * to.x),
+                                    from.x * to.x + from.y * to.y);
+    return std::hypot(from.x, from.y) * sweep;
+  }
+
+  bool
+  mirror_geometry(const Segment &first,
+                  const Segment &second,
+                  const double   mirror_x,
+                  const double   tolerance)
+  {
+    const auto mirrored = [&](const Point2 &point) {
+      return Point2{2.0 * mirror_x - point.x, point.y};
+    };
+    const auto close = [&](const Point2 &a, const Point2 &b) {
+      return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance;
+    };
+    if (first.kind != second.kind)
+      return false;
+    const bool same_ends = (close(mirrored(first.start), second.start) &&
+                            close(mirrored(first.end), second.end)) ||
+                           (close(mirrored(first.start), second.end) &&
+                            close(mirrored(first.end), second.start));
+    return same_ends && (first.kind == SegmentKind::line ||
+                         close(mirrored(first.control), second.control));
   }
 
   bool

@@ -64,12 +64,35 @@ namespace FloorBlock::Geometry
     SegmentRef slave;
   };
 
+  /**
+   * @brief The two top fillets that face each other across vertical joint
+   * j: master = block j's top-left fillet (id 2000+j), slave = the top-right
+   * fillet of block j+1 or of the face block (id 3000+j).
+   */
+  struct FilletPair
+  {
+    SegmentRef master;
+    SegmentRef slave;
+    /** x of the joint line (m). */
+    double joint_x;
+    /**
+     * Whether the slave is the mirror image of the master about x =
+     * joint_x (to round-off): true where the floor is level at the joint
+     * (flat bedding, e.g. the lifted reading), false on a sloped floor,
+     * where the interior angles of the two corners differ and so do the
+     * arc radii r tan(theta/2).
+     */
+    bool mirror;
+  };
+
   /** @brief All bodies of a scene and how their joint sides pair up. */
   struct AssemblyOutline
   {
     /** Blocks 1..n (in this order), then the face block, then the base. */
     std::vector<BodyOutline> bodies;
     std::vector<JointPair>   joint_pairs;
+    /** Top fillets across every vertical joint (empty without rounding). */
+    std::vector<FilletPair> fillet_pairs;
     /** Contact corners where the mesh is refined (floor-level joint corners, block corners on the bedding). */
     std::vector<Point2> refinement_points;
   };
@@ -93,6 +116,21 @@ namespace FloorBlock::Geometry
    */
   double
   outline_area(const BodyOutline &body);
+
+  /** @brief Length of a fillet arc (radius times swept angle). Units: m. */
+  double
+  arc_length(const Segment &arc);
+
+  /**
+   * @brief Whether @p second is the mirror image of @p first about the
+   * vertical line x = @p mirror_x, in either direction, with every
+   * coordinate within @p tolerance (m).
+   */
+  bool
+  mirror_geometry(const Segment &first,
+                  const Segment &second,
+                  const double   mirror_x,
+                  const double   tolerance);
 
   /**
    * @brief Whether two segments describe the same curve bit for bit, in

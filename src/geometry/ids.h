@@ -25,6 +25,10 @@ namespace FloorBlock::Geometry::Ids
    *    the top corner of a vertical joint is where the lateral force Q acts;
    *  - a bottom fillet belongs to the block bottom 4000+i, because a
    *    rotating block presses its bottom corner into the bedding.
+   * So with rounding a vertical joint side is its straight part plus the
+   * top fillet, and the two sides coincide only on the straight part; the
+   * top fillets face each other across the joint (mirror images on a level
+   * floor) and are paired with an initial gap by Contact::pair_joint_nodes.
    */
 
   /** Largest number of blocks the id scheme can number (material ids 1..99). */
