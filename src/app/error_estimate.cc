@@ -17,6 +17,13 @@ namespace FloorBlock::App
   json
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
   {
+    // A refined solve that stopped early describes a different load state:
+    // comparing with it would be no error estimate at all.
+    if (!fine.converged)
+      return {{"method", "difference to one solve with halved element sizes"},
+              {"status", "unavailable"},
+              {"status_text", "the refined solve did not converge: " +
+                                fine.fem["status_text"].get<std::string>()}};
     json joints = json::object();
     const auto &coarse_joints = coarse.fem["joints"];
     const auto &fine_joints   = fine.fem["joints"];
@@ -42,6 +49,7 @@ namespace FloorBlock::App
         joints[coarse_joints[k]["name"].get<std::string>()] = quantities;
       }
     return {{"method", "difference to one solve with halved element sizes"},
+            {"status", "available"},
             {"refined_n_dofs", fine.result.n_dofs},
             {"refined_status", fine.fem["status"]},
             {"joints", joints}};

@@ -88,6 +88,9 @@ namespace FloorBlock::Output
         return "No error estimate was made (Solver/Error estimate = none, or "
                "the solve did not converge).\n";
       const auto &estimate = summary["fem_error_estimate"];
+      if (estimate["status"] != "available")
+        return "No error estimate: " +
+               estimate["status_text"].get<std::string>() + "\n";
       std::string text = fmt::format(
         "Method: {} ({} DoFs).\n\n| joint | Q rel. error | contact length "
         "rel. error | sigma_max averaged rel. error | sigma_max pointwise "
