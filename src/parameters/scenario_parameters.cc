@@ -36,6 +36,15 @@ namespace FloorBlock::Parameters
     solver.parse_parameters(prm);
     verify.parse_parameters(prm);
 
+    // Fillet pairs start with a gap; the joint law treats a pair as closed
+    // while kn * gap stays below the tensile strength, so any tensile
+    // strength would glue facing fillets together across their gap.
+    if (geometry.corner_rounding_radius > 0 && joints.tensile_strength > 0)
+      throw InputError("Joints/Tensile strength",
+                       std::to_string(joints.tensile_strength),
+                       "must be 0 while Geometry/Corner rounding radius > 0 "
+                       "(rounded corners start with an open gap)");
+
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
         throw InputError("Loading/Loaded blocks",

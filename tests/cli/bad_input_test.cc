@@ -64,6 +64,9 @@ namespace
      "only once"},
     {"corner_radius_too_large", "", "",
      "--set 'Geometry/Corner rounding radius=0.4'", "Corner rounding radius"},
+    {"tensile_strength_with_rounded_corners", "", "",
+     "--set 'Joints/Tensile strength=1e6'", "Joints/Tensile strength"},
+    {"unknown_verification_case", "", "", "", "available: hertz"},
     {"corner_size_above_far_size", "", "",
      "--set 'Mesh/Corner size=0.5' --set 'Mesh/Far size=0.3'", "Corner size"},
     {"unknown_entry_in_file",
@@ -101,9 +104,11 @@ TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
   else if (input.name == "missing_scene_file")
     scene = "params/no_such_scene.prm";
 
-  const ProcessResult result =
-    run_floorblock("analytic " + shell_quoted(scene) + " " + input.arguments +
-                   " --output " + shell_quoted(output));
+  const std::string command =
+    input.name == "unknown_verification_case" ? "verify sphere" :
+                                                "analytic " + shell_quoted(scene);
+  const ProcessResult result = run_floorblock(
+    command + " " + input.arguments + " --output " + shell_quoted(output));
 
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find(input.must_mention), std::string::npos)
