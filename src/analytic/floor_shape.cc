@@ -74,10 +74,16 @@ namespace FloorBlock
     {
       require_positive(bulk_modulus, "Bulk modulus", "Pa");
       require_positive(shear_modulus, "Shear modulus", "Pa");
-      // Written with the ratio G/K so that no product can overflow:
-      // 9KG/(3K+G) = 9G/(3 + G/K).
-      const double ratio = shear_modulus / bulk_modulus;
-      return 9. * shear_modulus / (3. + ratio);
+      // With the ratio of the smaller to the larger modulus (<= 1) no
+      // intermediate can overflow: 9KG/(3K+G) = G 9/(3 + G/K) = K 9/(3K/G + 1).
+      // Only E itself can exceed the double range, which is then refused.
+      if (shear_modulus <= bulk_modulus)
+        return finite_or_throw(shear_modulus *
+                                 (9. / (3. + shear_modulus / bulk_modulus)),
+                               "Young's modulus from K and G");
+      return finite_or_throw(bulk_modulus *
+                               (9. / (3. * bulk_modulus / shear_modulus + 1.)),
+                             "Young's modulus from K and G");
     }
 
     double
@@ -86,9 +92,14 @@ namespace FloorBlock
     {
       require_positive(bulk_modulus, "Bulk modulus", "Pa");
       require_positive(shear_modulus, "Shear modulus", "Pa");
-      // (3K-2G)/(2(3K+G)) with the ratio G/K, free of overflow.
-      const double ratio = shear_modulus / bulk_modulus;
-      return (3. - 2. * ratio) / (2. * (3. + ratio));
+      // (3K-2G)/(2(3K+G)) written with a ratio <= 1, free of overflow.
+      if (shear_modulus <= bulk_modulus)
+        {
+          const double ratio = shear_modulus / bulk_modulus;
+          return (3. - 2. * ratio) / (2. * (3. + ratio));
+        }
+      const double ratio = bulk_modulus / shear_modulus;
+      return (3. * ratio - 2.) / (2. * (3. * ratio + 1.));
     }
   } // namespace Analytic
 } // namespace FloorBlock
