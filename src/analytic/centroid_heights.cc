@@ -40,6 +40,15 @@ namespace FloorBlock
             chain.support_load[block] * chain.support_load_position * width +
             force * width * tan_vertical;
           const double height = moment_of_lateral_force / force;
+          // Extreme but finite inputs can overflow the running moment (or
+          // a tiny Q can blow up the quotient): no finite answer then.
+          if (!std::isfinite(height))
+            {
+              CentroidHeights failed;
+              failed.status        = Status::invalid_input;
+              failed.failing_block = block + 1;
+              return failed;
+            }
           result.centroid_height.push_back(height);
           result.rotation_margin.push_back(chain.block_height - height);
           if (height > chain.block_height && result.first_rotating_block == 0)

@@ -53,6 +53,7 @@ namespace FloorBlock
       // Finite inputs near the limits of double can still overflow the
       // products above: report that instead of returning inf.
       if (!std::isfinite(contact.contact_length) ||
+          !std::isfinite(contact.contact_area) ||
           !std::isfinite(contact.average_stress) ||
           !std::isfinite(contact.max_stress))
         return CornerContact{Status::invalid_input, 0., 0., 0., 0.};
