@@ -7,6 +7,8 @@
 #include <output/sweep_report.h>
 #include <scene/chapter_figures.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <fmt/format.h>
 
 #include <iostream>
@@ -36,9 +38,10 @@ namespace FloorBlock::App
       folder.write_inputs(scene);
       const unsigned int remaining =
         run_fem_sweep(points, folder, options.case_limit);
-      std::cout << points.size() - remaining << " of " << points.size()
-                << " FEM cases finished; results in "
-                << output_directory(options, scene) << std::endl;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cout << points.size() - remaining << " of " << points.size()
+                  << " FEM cases finished; results in "
+                  << output_directory(options, scene) << std::endl;
       return 0;
     }
   } // namespace

@@ -88,11 +88,14 @@ namespace FloorBlock
                          pattern);
       matrix.reinit(pattern);
       const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
-      current_solution.reinit(owned, MPI_COMM_WORLD);
-      committed_solution.reinit(owned, MPI_COMM_WORLD);
-      newton_base.reinit(owned, MPI_COMM_WORLD);
-      update.reinit(owned, MPI_COMM_WORLD);
-      residual.reinit(owned, MPI_COMM_WORLD);
+      // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
+      // so that every rank of a sweep solves its own case independently.
+      const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
+      current_solution.reinit(owned, communicator);
+      committed_solution.reinit(owned, communicator);
+      newton_base.reinit(owned, communicator);
+      update.reinit(owned, communicator);
+      residual.reinit(owned, communicator);
 
       const auto &fe = fe_space.fe();
       dof_component.assign(fe_space.dof_handler().n_dofs(), 0);

@@ -28,7 +28,7 @@ namespace FloorBlock
       pattern.reinit(space.locally_owned_dofs(),
                      space.locally_owned_dofs(),
                      dynamic,
-                     MPI_COMM_WORLD);
+                     space.dof_handler().get_communicator());
       pattern.compress();
     }
 

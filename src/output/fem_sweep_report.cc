@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 
 namespace FloorBlock::Output
@@ -29,6 +30,14 @@ namespace FloorBlock::Output
     {
       return value.is_number() ? fmt::format("{:.9e}", value.get<double>() * scale) :
                                  std::string();
+    }
+
+    /// Degrees and tonnes as the user wrote them (30, not 29.999999999999996).
+    double
+    as_written(const double value)
+    {
+      constexpr double resolution = 1e6;
+      return std::round(value * resolution) / resolution;
     }
 
     bool
@@ -60,10 +69,11 @@ namespace FloorBlock::Output
       {"id", point.id()},
       {"figure", point.figure},
       {"k_m", point.curvature},
-      {"phi_h_deg", Units::radians_to_degrees(point.bedding_friction)},
-      {"phi_v_deg", Units::radians_to_degrees(point.vertical_friction)},
+      {"phi_h_deg", as_written(Units::radians_to_degrees(point.bedding_friction))},
+      {"phi_v_deg",
+       as_written(Units::radians_to_degrees(point.vertical_friction))},
       {"support_load_t",
-       point.support_load / Units::tonnes_force_to_newtons(1.)},
+       as_written(point.support_load / Units::tonnes_force_to_newtons(1.))},
       {"fem",
        {{"status", fem["status"]},
         {"status_text", fem["status_text"]},
