@@ -62,6 +62,40 @@ namespace FloorBlock::App
                              folder.path_of("face_joint_traction.png"), 700,
                              700);
     }
+  
+    json
+    write_closed_forms(const Output::ResultFolder &folder,
+                       const Scene::ClosedForms &  closed_forms)
+    {
+      const json analytic = Output::analytic_json(closed_forms);
+      folder.write_json("analytic.json", analytic);
+      folder.write("analytic.csv", Output::analytic_csv(closed_forms));
+      return analytic;
+    }
+
+    /// Compares, plots and reports the last converged increment.
+    void
+    compare_and_report(const FemOutcome &                    outcome,
+                       const Scene::ClosedForms &            closed_forms,
+                       const Parameters::ScenarioParameters &scene,
+                       const Output::ResultFolder &          folder,
+                       json &                                summary)
+    {
+      const auto &last         = outcome.result.increments.back();
+      const auto  final_joints = Compare::compare_vertical_joints(
+        last, closed_forms, contact_constants(scene));
+      const json history = lift_history(outcome, closed_forms, scene);
+      summary["comparison"] = {
+        {"final", Output::comparison_json(final_joints,
+                                          contact_constants(scene),
+                                          scene.geometry.n_blocks)},
+        {"lift_history", history}};
+      write_plots(folder, final_joints, history, last);
+      const auto lines = Output::verdicts(final_joints.back());
+      for (const auto &line : lines)
+        std::cout << "  " << line << "\n";
+      folder.write("report.md", Output::report_markdown(scene, summary, lines));
+    }
   } // namespace
 
   int
@@ -74,10 +108,7 @@ namespace FloorBlock::App
     folder.write_inputs(scene);
 
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
-    const auto analytic     = Output::analytic_json(closed_forms);
-    folder.write_json("analytic.json", analytic);
-    folder.write("analytic.csv", Output::analytic_csv(closed_forms));
-
+    const json analytic     = write_closed_forms(folder, closed_forms);
     const FemOutcome outcome = solve_scene(scene, folder);
     std::cout << fem_summary_text(outcome);
     json summary = {{"scene", scene.scene_name},
@@ -89,26 +120,10 @@ namespace FloorBlock::App
         outcome,
         solve_scene(refined_scene(scene),
                     Output::ResultFolder(folder.path_of("refined"))));
-
     if (!outcome.result.increments.empty())
-      {
-        const auto &last         = outcome.result.increments.back();
-        const auto  final_joints = Compare::compare_vertical_joints(
-          last, closed_forms, contact_constants(scene));
-        const json history = lift_history(outcome, closed_forms, scene);
-        summary["comparison"] = {
-          {"final", Output::comparison_json(final_joints,
-                                            contact_constants(scene),
-                                            scene.geometry.n_blocks)},
-          {"lift_history", history}};
-        write_plots(folder, final_joints, history, last);
-        const auto lines = Output::verdicts(final_joints.back());
-        for (const auto &line : lines)
-          std::cout << "  " << line << "\n";
-        folder.write("report.md",
-                     Output::report_markdown(scene, summary, lines));
-      }
+      compare_and_report(outcome, closed_forms, scene, folder, summary);
 
+    // Written last: its presence marks a finished run.
     summary["status"]      = outcome.fem["status"];
     summary["wall_time_s"] = timer.wall_time();
     folder.write_summary(summary);
