@@ -1,4 +1,5 @@
 #include <compare/joint_comparison.h>
+#include <compare/joint_name.h>
 #include <geometry/ids.h>
 
 #include <cmath>
@@ -14,16 +15,6 @@ namespace FloorBlock::Compare
     {
       const auto motion = increment.motions.find(material);
       return motion == increment.motions.end() ? 0. : motion->second.rotation;
-    }
-
-    /// "vertical 3" -> 3; 0 for any other joint.
-    unsigned int
-    vertical_joint_number(const std::string &name)
-    {
-      const std::string prefix = "vertical ";
-      if (name.compare(0, prefix.size(), prefix) != 0)
-        return 0;
-      return std::stoul(name.substr(prefix.size()));
     }
 
     ForceComparison
@@ -56,9 +47,10 @@ namespace FloorBlock::Compare
     std::vector<JointComparison> comparisons;
     for (const Contact::JointReport &report : increment.joints)
       {
-        const unsigned int joint = vertical_joint_number(report.name);
-        if (joint == 0)
+        const JointName name = parse_joint_name(report.name);
+        if (name.kind != "vertical" || name.number == 0)
           continue;
+        const unsigned int joint = name.number;
 
         JointComparison comparison{joint, report.normal_force, {}, {}};
         for (const auto &entry : closed_forms.mechanisms)

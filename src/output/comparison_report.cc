@@ -1,5 +1,6 @@
 #include <common/units.h>
 #include <output/comparison_report.h>
+#include <output/fem_report.h>
 
 #include <fmt/format.h>
 
@@ -102,8 +103,7 @@ namespace FloorBlock::Output
                json(nullptr)}};
         records.push_back(
           {{"joint", joint.joint},
-           {"blocks", joint.joint == n_blocks ? json{joint.joint, "face"} :
-                                                json{joint.joint, joint.joint + 1}},
+           {"blocks", joint_bodies("vertical", joint.joint, n_blocks)},
            {"Q_fem_N_per_m", joint.fem_force},
            {"Q_closed_form", forces},
            {"contact", contact_json(joint, constants)}});

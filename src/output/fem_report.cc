@@ -1,9 +1,9 @@
+#include <compare/joint_name.h>
 #include <output/fem_report.h>
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
 
-#include <sstream>
 
 namespace FloorBlock::Output
 {
@@ -11,20 +11,6 @@ namespace FloorBlock::Output
 
   namespace
   {
-    /// "vertical 3" -> kind and the two bodies it separates.
-    std::pair<std::string, json>
-    kind_and_blocks(const std::string &name, const unsigned int n_blocks)
-    {
-      std::istringstream words(name);
-      std::string        kind;
-      unsigned int       index = 0;
-      words >> kind >> index;
-      if (kind == "vertical")
-        return {kind, index == n_blocks ? json{index, "face"} :
-                                          json{index, index + 1}};
-      return {kind, json{index, "base"}};
-    }
-
     std::string
     state_summary(const Contact::StateCounts &counts)
     {
@@ -35,6 +21,16 @@ namespace FloorBlock::Output
       return counts.n_stick == 0 ? "slip" : "stick-slip";
     }
   } // namespace
+
+  json
+  joint_bodies(const std::string &kind,
+               const unsigned int number,
+               const unsigned int n_blocks)
+  {
+    if (kind != "vertical")
+      return json{number, "base"};
+    return number == n_blocks ? json{number, "face"} : json{number, number + 1};
+  }
 
   std::string
   stage_name(const Contact::LoadStage stage)
@@ -55,10 +51,10 @@ namespace FloorBlock::Output
   joint_json(const Contact::JointReport &joint,
              const FemReportContext &    context)
   {
-    const auto [kind, blocks] = kind_and_blocks(joint.name, context.n_blocks);
+    const auto name = Compare::parse_joint_name(joint.name);
     return {{"name", joint.name},
-            {"kind", kind},
-            {"blocks", blocks},
+            {"kind", name.kind},
+            {"blocks", joint_bodies(name.kind, name.number, context.n_blocks)},
             {"normal_force_N_per_m", joint.normal_force},
             {"normal_force_N_over_b", joint.normal_force * context.support_width},
             {"shear_force_N_per_m", joint.shear_force},
@@ -153,7 +149,7 @@ namespace FloorBlock::Output
             "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
             "{:.9e},{},{},{}\n",
             k + 1, stage_name(increment.stage), increment.stage_factor,
-            joint.name, kind_and_blocks(joint.name, context.n_blocks).first,
+            joint.name, Compare::parse_joint_name(joint.name).kind,
             joint.normal_force, joint.shear_force, joint.closed_length,
             joint.closed_length * context.support_width,
             joint.peak_normal_stress, joint.averaged_peak_normal_stress,

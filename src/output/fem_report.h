@@ -37,6 +37,15 @@ namespace FloorBlock::Output
   joints_csv(const Contact::SolveResult &result,
              const FemReportContext &    context);
 
+  /**
+   * @brief The two bodies a joint separates, chapter numbering: [j, j+1] or
+   * [n, "face"] for vertical joint j, [i, "base"] for the bedding under i.
+   */
+  nlohmann::json
+  joint_bodies(const std::string &kind,
+               const unsigned int number,
+               const unsigned int n_blocks);
+
   /** @brief "stage 3 (uplift)" style name of a loading stage. */
   std::string
   stage_name(const Contact::LoadStage stage);
