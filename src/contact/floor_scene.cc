@@ -34,6 +34,8 @@ namespace FloorBlock
                              std::to_string(block),
                              "1 .. number of blocks");
           scene.model.pressures[Ids::floor_surface(block)] = pressure;
+          if (settings.vertical_support_load)
+            scene.model.vertical_pressures.insert(Ids::floor_surface(block));
         }
 
       for (unsigned int j = 1; j <= settings.n_blocks; ++j)

@@ -30,6 +30,11 @@ namespace FloorBlock
       JointParameters bedding_joints;
       /** Support pressure on the top of block i (Pa), keyed by chapter index i. */
       std::map<unsigned int, double> support_pressures;
+      /**
+       * Support pressure straight down per unit horizontal length (true), as
+       * the closed forms' vertical P_i, or normal to the block top (false).
+       */
+      bool vertical_support_load = true;
       UpliftSettings uplift;
       LoadSteps      steps;
     };

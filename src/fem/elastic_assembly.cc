@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <string>
 
 namespace FloorBlock
@@ -31,6 +32,21 @@ namespace FloorBlock
       {
         const auto found = model.densities.find(id);
         return found == model.densities.end() ? 0. : found->second;
+      }
+
+      /** Traction of the pressure p on a face with outward unit normal n. */
+      template <int dim>
+      dealii::Tensor<1, dim>
+      surface_traction(const ElasticModel<dim>         &model,
+                       const dealii::types::boundary_id boundary_id,
+                       const double                     pressure,
+                       const dealii::Tensor<1, dim>    &normal)
+      {
+        if (model.vertical_pressures.count(boundary_id) == 0)
+          return -pressure * normal; // pushes against the outward normal
+        dealii::Tensor<1, dim> traction;
+        traction[dim - 1] = -pressure * std::abs(normal[dim - 1]);
+        return traction;
       }
     } // namespace
 
@@ -127,9 +143,9 @@ namespace FloorBlock
               face_values.reinit(cell, face);
               for (const unsigned int q : face_values.quadrature_point_indices())
                 {
-                  // Pressure pushes against the outward normal.
-                  const Tensor<1, dim> traction =
-                    -pressure->second * face_values.normal_vector(q);
+                  const Tensor<1, dim> traction = surface_traction(
+                    model, face->boundary_id(), pressure->second,
+                    face_values.normal_vector(q));
                   const double weight = face_values.JxW(q);
                   for (unsigned int i = 0; i < n_cell_dofs; ++i)
                     cell_load(i) +=

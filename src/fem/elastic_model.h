@@ -6,6 +6,7 @@
 #include <deal.II/base/types.h>
 
 #include <map>
+#include <set>
 
 namespace FloorBlock
 {
@@ -27,6 +28,14 @@ namespace FloorBlock
       dealii::Tensor<1, dim> gravity;
       /** Pressure on a boundary id (Pa), positive pushing into the body. */
       std::map<dealii::types::boundary_id, double> pressures;
+      /**
+       * Boundary ids whose pressure p acts straight down (-e_{dim-1}) as a
+       * load per unit of horizontal projection: traction -p |n_{dim-1}|
+       * e_{dim-1} on a face with unit normal n. On a level face this equals
+       * the normal pressure; on an inclined one it keeps the total vertical
+       * load and adds no component along the face's normal direction only.
+       */
+      std::set<dealii::types::boundary_id> vertical_pressures;
     };
   } // namespace Fem
 } // namespace FloorBlock

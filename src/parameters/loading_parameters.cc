@@ -29,6 +29,14 @@ namespace FloorBlock::Parameters
                       "spread evenly over the loaded blocks and over the "
                       "support width b. Converted with standard gravity "
                       "9.80665 m/s^2. Units: t (tonnes-force).");
+    prm.declare_entry("Support load direction", "vertical",
+                      Selection("vertical|normal to block top"),
+                      "Direction of the support load on a block top: "
+                      "straight down with the same total per block on an "
+                      "inclined top (the closed forms' W_i + P_i), or as a "
+                      "pressure normal to the top (a shield base resting on "
+                      "it). Only differs where the block tops are inclined "
+                      "(Bedding/Floor uplift reading = inclined). Units: none.");
     prm.declare_entry("Loaded blocks", "4,5,6",
                       List(Integer(1, largest_block_count), 0,
                            largest_block_count, ","),
@@ -63,6 +71,10 @@ namespace FloorBlock::Parameters
     support_load =
       Units::tonnes_force_to_newtons(prm.get_double("Support load"));
     const std::string loaded = prm.get("Loaded blocks");
+    support_load_direction =
+      prm.get("Support load direction") == "vertical" ?
+        SupportLoadDirection::vertical :
+        SupportLoadDirection::top_normal;
     floor_lift               = prm.get_double("Floor lift");
     const std::string mode   = prm.get("Uplift mode");
     uplift_mode = mode == "vertical"           ? UpliftMode::vertical :

@@ -112,9 +112,17 @@ namespace FloorBlock::Parameters
   };
 
   /** Subsection "Loading". */
+  /** Which way the support load pushes on an inclined block top. */
+  enum class SupportLoadDirection
+  {
+    vertical,     ///< straight down, as the closed forms' W_i + P_i
+    top_normal    ///< normal to the block top (a shield standing on it)
+  };
+
   struct LoadingParameters
   {
     UpliftMode uplift_mode;
+    SupportLoadDirection support_load_direction;
     double gravity;      ///< m/s^2
     double support_load; ///< N, total load of one powered support
     /// Loaded blocks counted from the face (1 = next to the face block), as

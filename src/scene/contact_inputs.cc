@@ -105,6 +105,8 @@ namespace FloorBlock::Scene
       joint_parameters(scene.joints, scene.joints.vertical_friction_angle),
       joint_parameters(scene.joints, scene.joints.bedding_friction_angle),
       support_pressures,
+      scene.loading.support_load_direction ==
+        Parameters::SupportLoadDirection::vertical,
       {},
       {}};
     settings.uplift           = uplift_settings(scene);
