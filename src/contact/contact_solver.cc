@@ -115,25 +115,17 @@ namespace FloorBlock
       for (const auto &entry : scene.model.laws)
         largest_modulus =
           std::max(largest_modulus, entry.second.youngs_modulus());
-      // Augmentation of the rigid law: stiff enough that the Uzawa updates
-      // contract fast, soft enough to keep the tangent well conditioned.
-      const double augmentation = settings.rigid_penalty_factor *
-                                  largest_modulus /
-                                  fe_space.minimal_cell_diameter();
+      const double smallest_cell = fe_space.minimal_cell_diameter();
       for (unsigned int j = 0; j < scene.joints.size(); ++j)
         {
-          const JointDefinition<2> &joint      = scene.joints[j];
-          JointParameters           parameters = joint.parameters;
-          if (joint.law == JointLawKind::rigid)
-            {
-              parameters.normal_stiffness = augmentation;
-              parameters.shear_stiffness  = augmentation;
-            }
-          else if (!(parameters.normal_stiffness > 0.) ||
-                   !(parameters.shear_stiffness > 0.))
+          const JointDefinition<2> &joint = scene.joints[j];
+          if (joint.law == JointLawKind::compliant &&
+              (!(joint.parameters.normal_stiffness > 0.) ||
+               !(joint.parameters.shear_stiffness > 0.)))
             throw InputError("joint '" + joint.name +
                              "': compliant law needs kn > 0 and ks > 0 Pa/m");
-          joint_laws.push_back(std::make_unique<CoulombJoint<2>>(parameters));
+          joint_laws.push_back(
+            std::make_unique<CoulombJoint<2>>(joint.parameters));
           const std::vector<ContactNode<2>> joint_nodes =
             joint.against_rigid_plane ?
               pair_nodes_with_plane(fe_space,
@@ -145,8 +137,28 @@ namespace FloorBlock
           for (const auto &node : joint_nodes)
             {
               nodes.push_back(node);
-              pair_laws.push_back(joint_laws.back().get());
               pair_is_rigid.push_back(joint.law == JointLawKind::rigid);
+              if (joint.law == JointLawKind::compliant)
+                {
+                  pair_laws.push_back(joint_laws.back().get());
+                  continue;
+                }
+              // Augmentation of the rigid law, per pair: kn w = factor x E,
+              // the order of a surface node's own stiffness, so the Uzawa
+              // updates contract at the same rate (about 1/(1 + factor))
+              // everywhere and no pair makes the tangent stiffer than the
+              // bulk. One global E/h_min (the former choice) made the pairs
+              // on 0.25 m cells a hundred times stiffer than their
+              // neighbourhood, and the semi-smooth Newton cycled at low
+              // friction.
+              const double length = std::max(node.weight, smallest_cell);
+              JointParameters parameters   = joint.parameters;
+              parameters.normal_stiffness  =
+                settings.rigid_penalty_factor * largest_modulus / length;
+              parameters.shear_stiffness = parameters.normal_stiffness;
+              joint_laws.push_back(
+                std::make_unique<CoulombJoint<2>>(parameters));
+              pair_laws.push_back(joint_laws.back().get());
             }
         }
       committed_history.assign(nodes.size(), JointHistory<2>());

@@ -61,18 +61,19 @@ namespace FloorBlock
       vertical_translation, ///< u = (0, magnitude)
       dip_translation,      ///< u = magnitude (cos dip, sin dip); sign picks the way
       tilt,                 ///< rotation by magnitude (rad) about the pivot
-      parabola              ///< u_y = (x - pivot_x)^2 / magnitude for x > pivot_x, else 0 (y = x^2/k)
+      parabola,             ///< u_y = (x - pivot_x)^2 / magnitude for x > pivot_x, else 0 (y = x^2/k)
+      slope                 ///< u_y = magnitude (x - pivot_x) for x > pivot_x, else 0 (planar slope)
     };
 
     /** @brief The prescribed floor uplift at the end of stage 3. */
     struct UpliftSettings
     {
       UpliftMode mode = UpliftMode::vertical_translation;
-      /** m for translations, rad for tilt, the length k (m) for parabola. */
+      /** m for translations, rad for tilt, the length k (m) for parabola, the gradient (-) for slope. */
       double magnitude = 0.;
       /** Direction of dip_translation, from +x towards +y (rad). */
       double dip_angle = 0.;
-      /** Pivot of tilt and vertex of the parabola (m). */
+      /** Pivot of tilt, vertex of the parabola, foot of the slope (m). */
       double pivot_x = 0.;
       double pivot_y = 0.;
     };

@@ -39,6 +39,11 @@ namespace FloorBlock
             if (settings.magnitude != 0. && dx > 0.)
               displacement[1] = stage_factor * dx * dx / settings.magnitude;
             break;
+          case UpliftMode::slope:
+            // Continued horizontally behind the pivot, as the parabola.
+            if (dx > 0.)
+              displacement[1] = stage_factor * dx * settings.magnitude;
+            break;
         }
       return displacement;
     }

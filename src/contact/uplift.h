@@ -13,7 +13,7 @@ namespace FloorBlock
      * @brief Displacement (m) of a moved support point at fraction
      * @p stage_factor (0..1) of the uplift stage.
      *
-     * Translations and the parabola scale linearly with the factor; the tilt
+     * Translations, the parabola and the slope scale linearly with the factor; the tilt
      * is an exact rotation by factor x angle about the pivot, so rigid
      * rotations stay strain-free.
      * @param[in] settings Uplift mode and magnitude.

@@ -53,13 +53,15 @@ namespace FloorBlock::Parameters
                       "Units: m.");
     prm.declare_entry("Uplift mode", "parabola",
                       Selection("vertical|dip toward face|dip away from face|"
-                                "tilt|parabola"),
+                                "tilt|parabola|slope"),
                       "How the base moves in the floor-uplift stage while "
                       "the face block stays fixed: straight up; along the "
                       "bedding chord under the blocks toward or away from "
                       "the face; tilted about its free end so the face end "
-                      "rises; or bent into u_y = lift (x/nL)^2 with x from "
-                      "the face. Units: none.");
+                      "rises; bent into u_y = lift (x/nL)^2 with x from "
+                      "the face; or raised into the planar slope u_y = lift "
+                      "x/nL (the planar counterpart of parabola, Figure 6.5). "
+                      "Units: none.");
     prm.leave_subsection();
   }
 
@@ -81,6 +83,7 @@ namespace FloorBlock::Parameters
                   mode == "dip toward face"    ? UpliftMode::dip_toward_face :
                   mode == "dip away from face" ? UpliftMode::dip_away_from_face :
                   mode == "tilt"               ? UpliftMode::tilt :
+                  mode == "slope"              ? UpliftMode::slope :
                                                  UpliftMode::parabola;
     prm.leave_subsection();
 

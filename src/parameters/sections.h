@@ -108,7 +108,8 @@ namespace FloorBlock::Parameters
     dip_toward_face,    ///< translation along the bedding chord, toward the face
     dip_away_from_face, ///< translation along the bedding chord, away from it
     tilt,               ///< rotation about the free end; the face end rises
-    parabola            ///< bending u_y = lift (x / nL)^2, x from the face
+    parabola,           ///< bending u_y = lift (x / nL)^2, x from the face
+    slope               ///< planar slope u_y = lift x / nL, x from the face
   };
 
   /** Subsection "Loading". */

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace FloorBlock::Scene
 {
   namespace
@@ -13,6 +15,40 @@ namespace FloorBlock::Scene
     const std::vector<double> support_load_tonnes{400, 500, 600,
                                                   700, 800, 900};
     const std::vector<double> stress_figure_curvatures{400, 200, 100, 50};
+
+    /**
+     * A scene whose flat bedding is lifted into its floor profile (the
+     * default reading) must be lifted into each figure's floor: u_y = x^2/k
+     * for the parabolic figures, the planar slope for Figure 6.5, reaching
+     * the profile's height at the free end x = nL. Without this every FEM
+     * point would be lifted into the scene's own parabola whatever the
+     * figure. Other uplift modes are the user's explicit choice and stay.
+     */
+    void
+    follow_figure_floor(Parameters::ScenarioParameters &variant)
+    {
+      const bool follows_profile =
+        variant.loading.uplift_mode == Parameters::UpliftMode::parabola ||
+        variant.loading.uplift_mode == Parameters::UpliftMode::slope;
+      if (variant.bedding.uplift_reading !=
+            Parameters::FloorUpliftReading::lifted ||
+          !follows_profile)
+        return;
+      const double chain_length =
+        variant.geometry.n_blocks * variant.geometry.block_width;
+      if (variant.bedding.shape == Parameters::BeddingShape::parabolic)
+        {
+          variant.loading.uplift_mode = Parameters::UpliftMode::parabola;
+          variant.loading.floor_lift =
+            chain_length * chain_length / variant.bedding.curvature;
+        }
+      else
+        {
+          variant.loading.uplift_mode = Parameters::UpliftMode::slope;
+          variant.loading.floor_lift =
+            chain_length * std::tan(variant.bedding.inclination);
+        }
+    }
 
     FigurePoint
     evaluate(const std::string &                   figure,
@@ -26,6 +62,7 @@ namespace FloorBlock::Scene
                                 Parameters::BeddingShape::planar;
       if (curvature > 0)
         variant.bedding.curvature = curvature;
+      follow_figure_floor(variant);
       variant.joints.bedding_friction_angle =
         Units::degrees_to_radians(bedding_friction_degree);
       variant.joints.vertical_friction_angle =

@@ -76,6 +76,10 @@ namespace FloorBlock::Scene
             uplift.magnitude =
               lift > 0 ? chain_length * chain_length / lift : 0.;
             break;
+          case Parameters::UpliftMode::slope:
+            uplift.mode      = Contact::UpliftMode::slope;
+            uplift.magnitude = lift / chain_length;
+            break;
         }
       return uplift;
     }
