@@ -19,6 +19,11 @@ namespace FloorBlock::App
     std::string              verification_case; ///< verify: e.g. "hertz"
     std::string              figure;         ///< sweep: only this figure
     unsigned int             case_limit = 0; ///< sweep --fem: at most this many
+    unsigned int             n_levels   = 5;      ///< converge: ladder length
+    std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|both
+    double bulk_fraction = 0.1;  ///< converge: cells refined by the Kelly indicator
+    double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
+    double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
 
   };
 
@@ -45,4 +50,6 @@ namespace FloorBlock::App
   verify_command(const CommandOptions &options);
   int
   run_command(const CommandOptions &options);
+  int
+  converge_command(const CommandOptions &options);
 } // namespace FloorBlock::App

@@ -28,13 +28,15 @@ namespace FloorBlock::App
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
               const Output::ResultFolder &          folder,
-              const bool                            write_vtu)
+              const bool                            write_vtu,
+              const SolveExtras &                   extras)
   {
     FemOutcome outcome;
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
     outcome.mesh = Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
-                                             folder.path_of("mesh.msh"));
+                                             folder.path_of("mesh.msh"),
+                                             extras.local_sizes);
     dealii::Triangulation<2> triangulation;
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
 
@@ -59,6 +61,8 @@ namespace FloorBlock::App
         if (failure.last_converged)
           outcome.result.increments.push_back(*failure.last_converged);
       }
+    if (extras.inspect)
+      extras.inspect(solver);
 
     outcome.fem = Output::fem_json(outcome.result, context);
     outcome.fem["mesh"] = {{"n_cells", outcome.mesh.n_cells},

@@ -8,6 +8,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
+#include <vector>
+
+namespace FloorBlock::Contact
+{
+  class ContactSolver;
+} // namespace FloorBlock::Contact
+
 namespace FloorBlock::App
 {
   /** What meshing and solving a scene produced. */
@@ -17,6 +25,19 @@ namespace FloorBlock::App
     Contact::SolveResult     result; ///< converged increments only
     bool                     converged = false;
     nlohmann::json           fem;    ///< fem.json content
+  };
+
+  /** Optional extras of solve_scene(), for refinement studies. */
+  struct SolveExtras
+  {
+    /** Solution-driven size requests for the mesher (adaptive re-meshing). */
+    std::vector<Geometry::LocalSize> local_sizes;
+    /**
+     * Called with the solver after the loading path ended (converged or
+     * not; its solution() is then the last converged state), e.g. to
+     * evaluate error indicators while the solution still exists.
+     */
+    std::function<void(const Contact::ContactSolver &)> inspect;
   };
 
   /**
@@ -29,7 +50,8 @@ namespace FloorBlock::App
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
               const Output::ResultFolder &          folder,
-              const bool                            write_vtu = true);
+              const bool                            write_vtu = true,
+              const SolveExtras &                   extras    = {});
 
   /** @brief Terminal summary: one line per joint, the state, and times. */
   std::string

@@ -96,7 +96,10 @@ main(int argc, char **argv)
     {"verify",
      {"Run a verification case against its closed form (hertz)",
       App::verify_command}},
-    {"run", {"The main job: mesh, solve, compare", App::run_command}}};
+    {"run", {"The main job: mesh, solve, compare", App::run_command}},
+    {"converge",
+     {"Refinement study: error against cost, uniform and adaptive meshes",
+      App::converge_command}}};
 
   std::map<CLI::App *, Command> dispatch;
   for (const auto &[name, entry] : commands)
@@ -115,6 +118,23 @@ main(int argc, char **argv)
                     "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
   sweep->add_option("--limit", options.case_limit,
                     "With --fem: run at most this many cases (0 = all)");
+
+  CLI::App *converge = cli.get_subcommand("converge");
+  converge->add_option("--levels", options.n_levels,
+                       "Number of refinement levels (2-10, default 5)");
+  converge->add_option("--mode", options.refinement_mode,
+                       "uniform, adaptive or both (default)")
+    ->check(CLI::IsMember({"uniform", "adaptive", "both"}));
+  converge->add_option("--bulk-fraction", options.bulk_fraction,
+                       "Adaptive: fraction of cells with the largest Kelly "
+                       "indicator refined per level (default 0.1)");
+  converge->add_option("--jump-fraction", options.jump_fraction,
+                       "Adaptive: joint segments whose normal-traction jump "
+                       "exceeds this fraction of the largest are refined "
+                       "(default 0.25)");
+  converge->add_option("--target-error", options.target_error,
+                       "Relative error at which uniform and adaptive costs "
+                       "are compared (default 0.01)");
 
   try
     {

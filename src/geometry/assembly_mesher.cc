@@ -7,6 +7,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <set>
@@ -39,8 +40,9 @@ namespace FloorBlock::Geometry
       1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
     void
-    set_size_field(const AssemblyOutline     &outline,
-                   const AssemblyDescription &description)
+    set_size_field(const AssemblyOutline        &outline,
+                   const AssemblyDescription    &description,
+                   const std::vector<LocalSize> &local_sizes)
     {
       // Refinement points become Gmsh points only for the field: they are
       // not part of any surface and carry no physical group.
@@ -60,7 +62,16 @@ namespace FloorBlock::Geometry
               << description.mesh_growth_rate - 1.0 << " * F" << distance
               << ")";
       mesh::field::setString(size, "F", formula.str());
-      mesh::field::setAsBackgroundMesh(size);
+      const int local =
+        add_local_size_field(local_sizes, description.mesh_growth_rate);
+      int background = size;
+      if (local >= 0)
+        {
+          background = mesh::field::add("Min");
+          mesh::field::setNumbers(background, "FieldsList",
+                                  {double(size), double(local)});
+        }
+      mesh::field::setAsBackgroundMesh(background);
 
       gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
       gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
@@ -124,18 +135,24 @@ namespace FloorBlock::Geometry
      * the joint (Contact::pair_joint_nodes).
      */
     void
-    mesh_fillets(const AssemblyOutline     &outline,
-                 const GmshAssembly        &assembly,
-                 const AssemblyDescription &description)
+    mesh_fillets(const AssemblyOutline        &outline,
+                 const GmshAssembly           &assembly,
+                 const AssemblyDescription    &description,
+                 const std::vector<LocalSize> &local_sizes)
     {
       const auto n_nodes = [&](const SegmentRef &ref) {
         const Segment &arc = outline.bodies[ref.body].segments[ref.segment];
+        const double   growth = description.mesh_growth_rate;
+        const double   spacing =
+          std::min({description.mesh_corner_size,
+                    local_size_at(local_sizes, growth, arc.start),
+                    local_size_at(local_sizes, growth, arc.end)});
         // Blossom full-quad recombination meshes half the intervals and
         // halves them, so the number of intervals must be even.
         const int half_intervals = std::max(
           min_fillet_intervals / 2,
           static_cast<int>(std::ceil(
-            arc_length(arc) / (2.0 * description.mesh_corner_size))));
+            arc_length(arc) / (2.0 * spacing))));
         return 2 * half_intervals + 1;
       };
       for (unsigned int body = 0; body < outline.bodies.size(); ++body)
@@ -176,10 +193,12 @@ namespace FloorBlock::Geometry
   } // namespace
 
   MeshStatistics
-  write_gmsh_mesh(const AssemblyDescription &description,
-                  const std::string         &msh_path)
+  write_gmsh_mesh(const AssemblyDescription    &description,
+                  const std::string            &msh_path,
+                  const std::vector<LocalSize> &local_sizes)
   {
     validate(description);
+    validate_local_sizes(local_sizes, description);
     const auto start = std::chrono::steady_clock::now();
 
     const AssemblyOutline outline = build_outline(description);
@@ -190,10 +209,10 @@ namespace FloorBlock::Geometry
         GmshSession session;
         gmsh::model::add("floorblock_assembly");
         const GmshAssembly assembly = build_gmsh_geometry(outline);
-        set_size_field(outline, description);
+        set_size_field(outline, description, local_sizes);
         statistics.n_matched_pairs =
           constrain_joint_sides(outline, assembly, description);
-        mesh_fillets(outline, assembly, description);
+        mesh_fillets(outline, assembly, description, local_sizes);
         mesh::generate(2);
         count_cells_and_nodes(statistics);
         statistics.n_bodies = outline.bodies.size();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <geometry/assembly_description.h>
+#include <geometry/local_size_field.h>
 
 #include <cstddef>
 #include <string>
@@ -38,12 +39,17 @@ namespace FloorBlock::Geometry
    *
    * @param[in] description The scene; checked with validate() first.
    * @param[in] msh_path File to write; its directory must exist.
+   * @param[in] local_sizes Extra requested sizes (adaptive re-meshing): the
+   *   cell size is the minimum of h(d) above and local_size_at(); fillet
+   *   arcs use the smaller of the corner size and the local size at their
+   *   ends. Checked with validate_local_sizes().
    * @throws FloorBlock::InputError for bad geometry (before Gmsh runs).
    * @throws std::runtime_error if Gmsh fails or leaves non-quad cells.
    */
   MeshStatistics
-  write_gmsh_mesh(const AssemblyDescription &description,
-                  const std::string         &msh_path);
+  write_gmsh_mesh(const AssemblyDescription   &description,
+                  const std::string           &msh_path,
+                  const std::vector<LocalSize> &local_sizes = {});
 
   /**
    * @brief Area of every body as OpenCASCADE integrates it on the exact

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <convergence/level_record.h>
+#include <convergence/size_targets.h>
+#include <output/result_folder.h>
+#include <parameters/scenario_parameters.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace FloorBlock::App
+{
+  /** How the levels of a ladder are refined. */
+  enum class RefinementMode
+  {
+    /**
+     * Every level halves the whole size function of the Gmsh mesh:
+     * corner size, far size and (growth rate - 1), i.e.
+     * h_l(d) = min(far, corner + (g - 1) d) / 2^l everywhere. Halving only
+     * the corner and far sizes would leave the graded zone between them
+     * (where the face-joint contact ends) almost unchanged.
+     */
+    uniform,
+    /**
+     * Level 0 is the scene's mesh; each further level re-meshes with the
+     * size requests of all previous levels' indicators added
+     * (Convergence::joint_size_targets, bulk_size_targets).
+     */
+    adaptive
+  };
+
+  /** @brief "uniform" or "adaptive". */
+  std::string
+  mode_name(const RefinementMode mode);
+
+  /** @brief The scene of uniform level @p level (sizes scaled by 2^-level). */
+  Parameters::ScenarioParameters
+  uniform_level_scene(Parameters::ScenarioParameters scene,
+                      const unsigned int             level);
+
+  /** Called after every level with all levels so far (partial results). */
+  using LevelCallback =
+    std::function<void(const std::vector<Convergence::LevelRecord> &)>;
+
+  /**
+   * @brief Runs @p n_levels full solves of the loading path, each into
+   * <folder>/<mode>/level_<l>/ (mesh.msh, fem.json, joints.csv). A level
+   * that does not converge or fails (mesh or solver error) is recorded
+   * with its status and the ladder goes on; an adaptive ladder stops early
+   * if a level leaves no solution to refine from.
+   */
+  std::vector<Convergence::LevelRecord>
+  run_ladder(const Parameters::ScenarioParameters   &scene,
+             const RefinementMode                    mode,
+             const unsigned int                      n_levels,
+             const Convergence::RefinementSettings  &refinement,
+             const Output::ResultFolder             &folder,
+             const LevelCallback                    &after_level);
+} // namespace FloorBlock::App

@@ -1,0 +1,106 @@
+#include <convergence/size_targets.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace FloorBlock::Convergence
+{
+  namespace
+  {
+    Geometry::Point2
+    point2(const dealii::Point<2> &point)
+    {
+      return {point[0], point[1]};
+    }
+
+    bool
+    is_closed(const Contact::JointState state)
+    {
+      return state != Contact::JointState::open;
+    }
+
+    double
+    largest_traction_jump(const std::vector<Contact::JointReport> &joints)
+    {
+      double largest = 0.;
+      for (const auto &joint : joints)
+        for (std::size_t k = 0; k + 1 < joint.profile.size(); ++k)
+          largest = std::max(largest,
+                             std::abs(joint.profile[k + 1].normal_traction -
+                                      joint.profile[k].normal_traction));
+      return largest;
+    }
+  } // namespace
+
+  std::vector<Geometry::LocalSize>
+  joint_size_targets(const std::vector<Contact::JointReport> &joints,
+                     const RefinementSettings                &settings)
+  {
+    const double jump_threshold =
+      settings.traction_jump_fraction * largest_traction_jump(joints);
+    std::vector<Geometry::LocalSize> targets;
+    for (const auto &joint : joints)
+      for (std::size_t k = 0; k + 1 < joint.profile.size(); ++k)
+        {
+          const Contact::JointNodeSample &first  = joint.profile[k];
+          const Contact::JointNodeSample &second = joint.profile[k + 1];
+          const bool state_changes =
+            is_closed(first.state) != is_closed(second.state);
+          const double jump =
+            std::abs(second.normal_traction - first.normal_traction);
+          // jump > 0 keeps a joint without any traction from being marked
+          // everywhere when the threshold is 0.
+          const bool steep = jump > 0. && jump >= jump_threshold;
+          if (!state_changes && !steep)
+            continue;
+          const double size =
+            std::max(settings.smallest_size,
+                     first.position.distance(second.position) / 2.);
+          targets.push_back({point2(first.position), size});
+          targets.push_back({point2(second.position), size});
+        }
+    return targets;
+  }
+
+  std::vector<Geometry::LocalSize>
+  bulk_size_targets(const Fem::FeSpace<2>                       &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution,
+                    const RefinementSettings                    &settings)
+  {
+    const auto &dofs = space.dof_handler();
+    // A serial copy: the estimator reads neighbour values across every
+    // face, and the solver's vector is one rank's non-ghosted vector.
+    const dealii::Vector<double> displacement(solution);
+    dealii::Vector<float> indicator(dofs.get_triangulation().n_active_cells());
+    dealii::KellyErrorEstimator<2>::estimate(
+      space.mapping(), dofs, dealii::QGauss<1>(space.degree() + 1), {},
+      displacement, indicator);
+
+    std::vector<unsigned int> order(indicator.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const std::size_t n_marked = std::min<std::size_t>(
+      order.size(),
+      static_cast<std::size_t>(std::ceil(settings.bulk_fraction *
+                                         order.size())));
+    std::partial_sort(order.begin(), order.begin() + n_marked, order.end(),
+                      [&](const unsigned int a, const unsigned int b) {
+                        return indicator[a] > indicator[b];
+                      });
+    std::vector<bool> marked(order.size(), false);
+    for (std::size_t k = 0; k < n_marked; ++k)
+      marked[order[k]] = indicator[order[k]] > 0.f;
+
+    std::vector<Geometry::LocalSize> targets;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (marked[cell->active_cell_index()])
+        targets.push_back(
+          {point2(cell->center()),
+           std::max(settings.smallest_size, std::sqrt(cell->measure()) / 2.)});
+    return targets;
+  }
+} // namespace FloorBlock::Convergence

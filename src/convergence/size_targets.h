@@ -1,0 +1,67 @@
+#pragma once
+
+#include <contact/results.h>
+#include <fem/fe_space.h>
+#include <geometry/local_size_field.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <vector>
+
+namespace FloorBlock::Convergence
+{
+  /**
+   * @brief What the adaptive re-meshing refines, and how much.
+   *
+   * Each marked place asks for half its current cell size; the requests of
+   * all levels are kept, so the mesh never coarsens from level to level.
+   */
+  struct RefinementSettings
+  {
+    /**
+     * A joint segment (two neighbouring joint nodes) is refined where the
+     * normal traction jumps across it by at least this fraction of the
+     * largest jump on any joint. Units: 1.
+     */
+    double traction_jump_fraction = 0.25;
+    /** Fraction of all cells, those with the largest Kelly indicator, refined in the bulk. Units: 1. */
+    double bulk_fraction = 0.1;
+    /** No request goes below this size (m); see Geometry::validate_local_sizes(). */
+    double smallest_size = 1e-3;
+  };
+
+  /**
+   * @brief Size requests along the joints, from the converged joint state.
+   *
+   * Along each joint (nodes sorted along it, JointReport::profile), a
+   * segment between neighbouring nodes is marked
+   *  - where the contact state changes (open on one node, closed on the
+   *    other): the ends of the closed zones, which decide the contact
+   *    length to one cell; and
+   *  - where the normal traction jump \f$|t_{n,k+1} - t_{n,k}|\f$ is at
+   *    least RefinementSettings::traction_jump_fraction of the largest jump
+   *    on any joint: the jump is the size of the traction gradient times the
+   *    spacing, i.e. the local interpolation error of the linear traction.
+   * Both nodes of a marked segment ask for half its length (not below
+   * RefinementSettings::smallest_size). Positions are those of side A;
+   * side B has the same nodes.
+   */
+  std::vector<Geometry::LocalSize>
+  joint_size_targets(const std::vector<Contact::JointReport> &joints,
+                     const RefinementSettings                &settings);
+
+  /**
+   * @brief Size requests in the bodies, from the Kelly indicator of the
+   * displacement (the jump of the normal derivative, i.e. of the traction,
+   * across interior faces; joint faces are boundaries and add nothing,
+   * joint_size_targets() covers them).
+   *
+   * The RefinementSettings::bulk_fraction of cells with the largest
+   * indicator ask at their centre for half their size (square root of the
+   * area).
+   */
+  std::vector<Geometry::LocalSize>
+  bulk_size_targets(const Fem::FeSpace<2>                       &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution,
+                    const RefinementSettings                    &settings);
+} // namespace FloorBlock::Convergence

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <geometry/assembly_description.h>
+#include <geometry/body_outline.h>
+
+#include <vector>
+
+namespace FloorBlock::Geometry
+{
+  /**
+   * @brief A requested cell size at one point, from a solution-driven
+   * refinement indicator (`floorblock converge --mode adaptive`).
+   *
+   * Adaptive refinement re-meshes with Gmsh instead of refining cells in
+   * deal.II: the joints pair nodes one-to-one on matching meshes
+   * (Contact::pair_joint_nodes), and a hanging node on one side of a joint
+   * would have no partner. A size field is global, and the joint sides stay
+   * periodic copies of each other, so both sides of every joint get the
+   * same refined nodes.
+   */
+  struct LocalSize
+  {
+    Point2 position; ///< m
+    double size;     ///< requested cell size at position (m)
+  };
+
+  /**
+   * @brief Refuses local sizes that are not finite and positive or are
+   * below the smallest corner size validate() accepts for this scene
+   * (min_relative_corner_size times the smaller block side), so a run-away
+   * indicator cannot ask for millions of cells.
+   * @throws FloorBlock::InputError naming the point and the size.
+   */
+  void
+  validate_local_sizes(const std::vector<LocalSize>  &local_sizes,
+                       const AssemblyDescription     &description);
+
+  /**
+   * @brief The graded size the points ask for at @p point:
+   * \f$h(x) = \min_p (h_p + (g - 1)\,|x - x_p|)\f$, the same grading law as
+   * the corner refinement of write_gmsh_mesh() (g = growth rate).
+   * Units: m; a very large number when @p local_sizes is empty.
+   */
+  double
+  local_size_at(const std::vector<LocalSize> &local_sizes,
+                const double                  growth_rate,
+                const Point2                 &point);
+
+  /**
+   * @brief Size class a requested size is rounded down to: the next lower
+   * power of 2^(1/4). Points of one class share one Gmsh Distance field,
+   * so the number of fields stays small (a factor 1000 in size is 40
+   * classes) however many points an indicator produces; rounding down
+   * never coarsens a request, by at most 16 %. Units: m.
+   */
+  double
+  local_size_class(const double size);
+
+  /**
+   * @brief Adds Gmsh fields that evaluate to local_size_at() with the sizes
+   * rounded down to their local_size_class(): per class one Distance field
+   * over the class's points and a MathEval `size + (g - 1) * distance`,
+   * then the Min of all classes.
+   *
+   * Pre-condition: a GmshSession with the current model is open; the points
+   * become OCC points that belong to no surface and no physical group.
+   * @return The tag of the Min field, or -1 if @p local_sizes is empty.
+   */
+  int
+  add_local_size_field(const std::vector<LocalSize> &local_sizes,
+                       const double                  growth_rate);
+} // namespace FloorBlock::Geometry

@@ -1,0 +1,263 @@
+#include <output/convergence_report.h>
+#include <output/numbering_note.h>
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <optional>
+#include <set>
+
+namespace FloorBlock::Output
+{
+  using nlohmann::json;
+  using Convergence::Ladder;
+  using Convergence::LevelRecord;
+  using Convergence::Quantity;
+
+  namespace
+  {
+    /** "Contact: linear solve" -> "wall_time_linear_solve_s". */
+    std::string
+    stage_column(const std::string &stage)
+    {
+      const std::string prefix = "Contact: ";
+      std::string name =
+        stage.rfind(prefix, 0) == 0 ? stage.substr(prefix.size()) : stage;
+      for (char &character : name)
+        if (!std::isalnum(static_cast<unsigned char>(character)))
+          character = '_';
+      return "wall_time_" + name + "_s";
+    }
+
+    std::set<std::string>
+    all_stages(const std::vector<Ladder> &ladders)
+    {
+      std::set<std::string> stages;
+      for (const Ladder &ladder : ladders)
+        for (const LevelRecord &record : ladder.levels)
+          for (const auto &entry : record.stage_wall_times)
+            stages.insert(entry.first);
+      return stages;
+    }
+
+    std::string
+    number(const std::optional<double> &value)
+    {
+      return value ? fmt::format("{:.9e}", *value) : std::string();
+    }
+
+    /** CSV field in double quotes (status texts contain commas). */
+    std::string
+    quoted(const std::string &text)
+    {
+      std::string field = "\"";
+      for (const char character : text)
+        field += character == '"' ? std::string("\"\"") :
+                                    std::string(1, character);
+      return field + "\"";
+    }
+
+    json
+    optional_json(const std::optional<double> &value)
+    {
+      return value ? json(*value) : json(nullptr);
+    }
+
+    json
+    optional_list(const std::vector<std::optional<double>> &values)
+    {
+      json list = json::array();
+      for (const auto &value : values)
+        list.push_back(optional_json(value));
+      return list;
+    }
+
+    json
+    level_json(const LevelRecord &record, const std::vector<Quantity> &quantities)
+    {
+      json values = json::object();
+      if (record.converged())
+        for (const Quantity &quantity : quantities)
+          values[quantity.name + "_" + quantity.unit] = quantity.value(record);
+      return {{"level", record.level},
+              {"status", record.status},
+              {"status_text", record.status_text},
+              {"converged", record.converged()},
+              {"corner_size_m", record.corner_size},
+              {"far_size_m", record.far_size},
+              {"growth_rate", record.growth_rate},
+              {"n_local_sizes", record.n_local_sizes},
+              {"n_cells", record.n_cells},
+              {"n_dofs", record.n_dofs},
+              {"n_contact_pairs", record.n_contact_pairs},
+              {"n_increments", record.n_increments},
+              {"newton_iterations", record.newton_iterations},
+              {"cutbacks", record.cutbacks},
+              {"force_balance_relative_error", record.force_balance_error},
+              {"wall_time_s_per_stage", record.stage_wall_times},
+              {"wall_time_s", record.wall_time},
+              {"cost_wall_time_s", record.cost_wall_time},
+              {"quantities", values}};
+    }
+  } // namespace
+
+  std::string
+  convergence_csv(const std::vector<Ladder>   &ladders,
+                  const std::vector<Quantity> &quantities)
+  {
+    const std::set<std::string> stages = all_stages(ladders);
+    std::string csv = fmt::format(
+      "# {}\n# Q_face = Q_n (vertical joint n, next to the face block); "
+      "forces per metre of face.\n# cost_wall_time_s: wall time to obtain "
+      "the level from nothing (adaptive: all levels so far).\n# *_error_*: "
+      "estimated discretisation error; *_error_method: richardson or "
+      "finest_difference (see convergence.json for the reason).\n",
+      numbering_note);
+    csv += "mode,level,status,converged,corner_size_m,far_size_m,growth_rate,"
+           "n_local_sizes,n_cells,n_dofs,n_contact_pairs,n_increments,"
+           "newton_iterations,cutbacks,force_balance_relative_error";
+    for (const std::string &stage : stages)
+      csv += "," + stage_column(stage);
+    csv += ",wall_time_s,cost_wall_time_s";
+    for (const Quantity &quantity : quantities)
+      csv += fmt::format(",{0}_{1},{0}_error_{1},{0}_relative_error,"
+                         "{0}_error_method",
+                         quantity.name, quantity.unit);
+    csv += ",status_text\n";
+
+    for (const Ladder &ladder : ladders)
+      for (std::size_t level = 0; level < ladder.levels.size(); ++level)
+        {
+          const LevelRecord &record = ladder.levels[level];
+          csv += fmt::format(
+            "{},{},{},{},{:.9e},{:.9e},{:.9e},{},{},{},{},{},{},{},{:.3e}",
+            record.mode, record.level, record.status,
+            record.converged() ? "true" : "false", record.corner_size,
+            record.far_size, record.growth_rate, record.n_local_sizes,
+            record.n_cells, record.n_dofs, record.n_contact_pairs,
+            record.n_increments, record.newton_iterations, record.cutbacks,
+            record.force_balance_error);
+          for (const std::string &stage : stages)
+            {
+              const auto found = record.stage_wall_times.find(stage);
+              csv += "," + (found == record.stage_wall_times.end() ?
+                              std::string() :
+                              fmt::format("{:.4f}", found->second));
+            }
+          csv += fmt::format(",{:.4f},{:.4f}", record.wall_time,
+                             record.cost_wall_time);
+          for (std::size_t q = 0; q < quantities.size(); ++q)
+            {
+              const auto &errors = ladder.errors.at(q);
+              csv += "," + number(record.converged() ?
+                                    std::optional<double>(
+                                      quantities[q].value(record)) :
+                                    std::nullopt);
+              csv += "," + number(errors.errors.at(level));
+              csv += "," + number(errors.relative_errors.at(level));
+              csv += "," + Convergence::method_name(errors.method);
+            }
+          csv += "," + quoted(record.status_text) + "\n";
+        }
+    return csv;
+  }
+
+  json
+  convergence_json(
+    const std::vector<Ladder>                             &ladders,
+    const std::vector<Quantity>                           &quantities,
+    const std::vector<Convergence::EqualErrorComparison> &comparisons)
+  {
+    json modes = json::object();
+    for (const Ladder &ladder : ladders)
+      {
+        json levels = json::array();
+        for (const LevelRecord &record : ladder.levels)
+          levels.push_back(level_json(record, quantities));
+        json estimates = json::object();
+        for (std::size_t q = 0; q < quantities.size(); ++q)
+          {
+            const auto &errors = ladder.errors.at(q);
+            estimates[quantities[q].name] = {
+              {"unit", quantities[q].unit},
+              {"method", Convergence::method_name(errors.method)},
+              {"reason", errors.reason},
+              {"observed_orders", optional_list(errors.observed_orders)},
+              {"reference_value", optional_json(errors.reference)},
+              {"errors", optional_list(errors.errors)},
+              {"relative_errors", optional_list(errors.relative_errors)}};
+          }
+        modes[ladder.mode] = {{"levels", levels}, {"quantities", estimates}};
+      }
+
+    json equal_error = json::array();
+    for (const auto &comparison : comparisons)
+      {
+        const auto level = [](const std::optional<unsigned int> &value) {
+          return value ? json(*value) : json(nullptr);
+        };
+        equal_error.push_back(
+          {{"quantity", comparison.quantity},
+           {"target_relative_error", comparison.target_relative_error},
+           {"reference_value", optional_json(comparison.reference)},
+           {"reference_source", comparison.reference_source},
+           {"uniform_level", level(comparison.uniform_level)},
+           {"adaptive_level", level(comparison.adaptive_level)},
+           {"dofs_ratio_adaptive_over_uniform",
+            optional_json(comparison.dofs_ratio)},
+           {"cost_wall_time_ratio_adaptive_over_uniform",
+            optional_json(comparison.cost_ratio)}});
+      }
+    return {{"numbering", numbering_note},
+            {"observed_order",
+             "p_l = log2(|q_{l-1} - q_{l-2}| / |q_l - q_{l-1}|), per level "
+             "halving of the element size (adaptive: of the requested "
+             "sizes where refined)"},
+            {"modes", modes},
+            {"equal_error_comparison", equal_error}};
+  }
+
+  std::string
+  error_vs_time_plot(const std::vector<Ladder>   &ladders,
+                     const std::vector<Quantity> &quantities,
+                     const std::string           &title)
+  {
+    std::string script = fmt::format(
+      "set title '{}'\nset logscale xy\nset format y '%.0e'\n"
+      "set xlabel 'wall time to obtain the level (s)'\n"
+      "set ylabel 'estimated relative error'\nset grid\n"
+      "set key outside right top\n",
+      title);
+    std::string plot  = "plot ";
+    unsigned int block = 0;
+    for (const Ladder &ladder : ladders)
+      for (std::size_t q = 0; q < quantities.size(); ++q)
+        {
+          std::string rows;
+          for (std::size_t level = 0; level < ladder.levels.size(); ++level)
+            {
+              const auto &relative = ladder.errors.at(q).relative_errors.at(level);
+              // Round-off differences are no discretisation error.
+              if (relative && *relative > Convergence::round_off_level &&
+                  ladder.levels[level].cost_wall_time > 0.)
+                rows += fmt::format("{:.6e} {:.6e}\n",
+                                    ladder.levels[level].cost_wall_time,
+                                    *relative);
+            }
+          if (rows.empty())
+            continue;
+          script += fmt::format("$d{} << EOD\n{}EOD\n", block, rows);
+          plot += fmt::format(
+            "{}$d{} with linespoints lc {} dt {} pt {} title '{} {}'",
+            plot == "plot " ? "" : ", ", block, q % 8 + 1,
+            ladder.mode == "uniform" ? 1 : 2,
+            ladder.mode == "uniform" ? 7 : 6, ladder.mode,
+            quantities[q].name);
+          ++block;
+        }
+    if (block == 0)
+      return script + "set label 'no error estimates' at graph 0.4,0.5\n"
+                      "unset logscale\nplot [0:1][0:1] NaN notitle\n";
+    return script + plot + "\n";
+  }
+} // namespace FloorBlock::Output
