@@ -11,16 +11,22 @@ namespace FloorBlock::App
   {
     scene.mesh.corner_size /= 2;
     scene.mesh.far_size /= 2;
+    // The rigid-block model's only discretisation: points along each joint.
+    scene.model.rigid_points_per_joint *= 2;
     return scene;
   }
 
   json
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
   {
+    const std::string method =
+      coarse.fem["model"] == "rigid blocks" ?
+        "difference to one solve with twice the points per joint" :
+        "difference to one solve with halved element sizes";
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)
-      return {{"method", "difference to one solve with halved element sizes"},
+      return {{"method", method},
               {"status", "unavailable"},
               {"status_text", "the refined solve did not converge: " +
                                 fine.fem["status_text"].get<std::string>()}};
@@ -48,7 +54,7 @@ namespace FloorBlock::App
           }
         joints[coarse_joints[k]["name"].get<std::string>()] = quantities;
       }
-    return {{"method", "difference to one solve with halved element sizes"},
+    return {{"method", method},
             {"status", "available"},
             {"refined_n_dofs", fine.result.n_dofs},
             {"refined_status", fine.fem["status"]},

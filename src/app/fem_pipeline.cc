@@ -1,9 +1,11 @@
 #include <app/fem_pipeline.h>
+#include <app/rigid_pipeline.h>
 #include <common/units.h>
 #include <contact/contact_solver.h>
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
+#include <scene/rigid_inputs.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -31,6 +33,8 @@ namespace FloorBlock::App
               const bool                            write_vtu,
               const SolveExtras &                   extras)
   {
+    if (Scene::uses_rigid_blocks(scene))
+      return solve_rigid_scene(scene, folder);
     FemOutcome outcome;
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
@@ -65,6 +69,8 @@ namespace FloorBlock::App
       extras.inspect(solver);
 
     outcome.fem = Output::fem_json(outcome.result, context);
+    outcome.fem["model"]        = "elastic FEM";
+    outcome.fem["model_choice"] = scene.model.choice_reason;
     outcome.fem["mesh"] = {{"n_cells", outcome.mesh.n_cells},
                            {"n_nodes", outcome.mesh.n_nodes},
                            {"wall_time_s", outcome.mesh.wall_time}};
@@ -78,11 +84,14 @@ namespace FloorBlock::App
   {
     constexpr double kN  = Units::newtons_per_kilonewton;
     constexpr double MPa = Units::pascals_per_megapascal;
-    std::string text = fmt::format(
-      "FEM: {} ({}), {} cells, {} DoFs, {} increments, {} Newton "
+    const bool  meshed = outcome.fem["mesh"].is_object();
+    std::string text   = fmt::format(
+      "{}: {} ({}), {}{} DoFs, {} increments, {} Newton "
       "iterations, force balance error {:.1e}\n",
+      outcome.fem["model"].get<std::string>(),
       outcome.fem["status"].get<std::string>(),
-      outcome.fem["status_text"].get<std::string>(), outcome.mesh.n_cells,
+      outcome.fem["status_text"].get<std::string>(),
+      meshed ? fmt::format("{} cells, ", outcome.mesh.n_cells) : "",
       outcome.result.n_dofs, outcome.result.increments.size(),
       outcome.fem["newton_iterations"].get<unsigned int>(),
       outcome.fem["force_balance_relative_error"].get<double>());
@@ -98,9 +107,11 @@ namespace FloorBlock::App
         joint["sigma_max_Pa"].get<double>() / MPa,
         joint["sigma_max_averaged_Pa"].get<double>() / MPa,
         joint["state"].get<std::string>());
-    text += fmt::format("  mesh {:.3f} s", outcome.mesh.wall_time);
+    std::string times =
+      meshed ? fmt::format("mesh {:.3f} s", outcome.mesh.wall_time) : "";
     for (const auto &[section, seconds] : outcome.result.wall_times)
-      text += fmt::format(", {} {:.3f} s", section, seconds);
-    return text + "\n";
+      times += fmt::format("{}{} {:.3f} s", times.empty() ? "" : ", ",
+                           section, seconds);
+    return text + "  " + times + "\n";
   }
 } // namespace FloorBlock::App

@@ -46,6 +46,9 @@ namespace FloorBlock::App
    * and joints.csv (and VTU files under vtu/). A solve that fails after
    * its cutbacks is reported, not thrown: fem.json then holds the last
    * converged increment with status "not converged" and what was tried.
+   * A scene with Model/Blocks = rigid (or auto choosing rigid) is solved
+   * by solve_rigid_scene() instead (rigid_pipeline.h): no mesh, no VTU,
+   * the same fem.json and joints.csv; fem.json's "model" names the model.
    */
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,

@@ -112,6 +112,7 @@ namespace FloorBlock::App
     const FemOutcome outcome = solve_scene(scene, folder);
     std::cout << fem_summary_text(outcome);
     json summary = {{"scene", scene.scene_name},
+                    {"model", outcome.fem["model"]},
                     {"inputs", scene.expanded_text},
                     {"analytic", analytic},
                     {"fem", outcome.fem}};

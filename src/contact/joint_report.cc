@@ -19,62 +19,55 @@ namespace FloorBlock
         return tangent;
       }
 
-      /**
-       * Pointwise peak, and the largest mean of t_n over a window of length
-       * report.averaging_length. Each node's force w_i t_i is spread
-       * uniformly over its tributary interval (midpoints to its neighbours),
-       * so a window integrates force, whatever the node spacing; windows are
-       * centred on nodes and shifted to stay inside the joint (the whole
-       * joint if it is shorter than the window).
-       */
-      void
-      add_peaks(JointReport &report, const std::vector<double> &weights)
-      {
-        const auto        &profile = report.profile;
-        const unsigned int n_nodes = profile.size();
-        std::vector<double> lower(n_nodes), upper(n_nodes);
-        for (unsigned int k = 0; k < n_nodes; ++k)
-          {
-            lower[k] = k == 0 ? profile[k].arc_position :
-                                (profile[k - 1].arc_position +
-                                 profile[k].arc_position) / 2.;
-            upper[k] = k + 1 == n_nodes ? profile[k].arc_position :
-                                          (profile[k].arc_position +
-                                           profile[k + 1].arc_position) / 2.;
-          }
-        const double joint_start  = profile.front().arc_position;
-        const double joint_end    = profile.back().arc_position;
-        const double window_length =
-          std::min(report.averaging_length, joint_end - joint_start);
-        for (unsigned int centre = 0; centre < n_nodes; ++centre)
-          {
-            if (profile[centre].normal_traction > report.peak_normal_stress)
-              {
-                report.peak_normal_stress = profile[centre].normal_traction;
-                report.peak_position      = profile[centre].position;
-              }
-            if (!(window_length > 0.))
-              continue;
-            const double start =
-              std::clamp(profile[centre].arc_position - window_length / 2.,
-                         joint_start,
-                         joint_end - window_length);
-            const double end   = start + window_length;
-            double       force = 0.;
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              {
-                const double length = upper[k] - lower[k];
-                if (!(length > 0.))
-                  continue;
-                const double overlap =
-                  std::max(0., std::min(end, upper[k]) - std::max(start, lower[k]));
-                force += weights[k] * profile[k].normal_traction * overlap / length;
-              }
-            report.averaged_peak_normal_stress =
-              std::max(report.averaged_peak_normal_stress, force / window_length);
-          }
-      }
     } // namespace
+
+    void
+    add_peak_stresses(JointReport &report, const std::vector<double> &weights)
+    {
+      const auto        &profile = report.profile;
+      const unsigned int n_nodes = profile.size();
+      std::vector<double> lower(n_nodes), upper(n_nodes);
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        {
+          lower[k] = k == 0 ? profile[k].arc_position :
+                              (profile[k - 1].arc_position +
+                               profile[k].arc_position) / 2.;
+          upper[k] = k + 1 == n_nodes ? profile[k].arc_position :
+                                        (profile[k].arc_position +
+                                         profile[k + 1].arc_position) / 2.;
+        }
+      const double joint_start  = profile.front().arc_position;
+      const double joint_end    = profile.back().arc_position;
+      const double window_length =
+        std::min(report.averaging_length, joint_end - joint_start);
+      for (unsigned int centre = 0; centre < n_nodes; ++centre)
+        {
+          if (profile[centre].normal_traction > report.peak_normal_stress)
+            {
+              report.peak_normal_stress = profile[centre].normal_traction;
+              report.peak_position      = profile[centre].position;
+            }
+          if (!(window_length > 0.))
+            continue;
+          const double start =
+            std::clamp(profile[centre].arc_position - window_length / 2.,
+                       joint_start,
+                       joint_end - window_length);
+          const double end   = start + window_length;
+          double       force = 0.;
+          for (unsigned int k = 0; k < n_nodes; ++k)
+            {
+              const double length = upper[k] - lower[k];
+              if (!(length > 0.))
+                continue;
+              const double overlap =
+                std::max(0., std::min(end, upper[k]) - std::max(start, lower[k]));
+              force += weights[k] * profile[k].normal_traction * overlap / length;
+            }
+          report.averaged_peak_normal_stress =
+            std::max(report.averaged_peak_normal_stress, force / window_length);
+        }
+    }
 
     std::vector<JointReport>
     make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
@@ -131,7 +124,7 @@ namespace FloorBlock
             report.closed_length > 0. ?
               report.normal_force / report.closed_length :
               0.;
-          add_peaks(report, weights);
+          add_peak_stresses(report, weights);
         }
       return reports;
     }

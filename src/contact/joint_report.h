@@ -30,5 +30,22 @@ namespace FloorBlock
                        const std::vector<JointResponse<2>> &responses,
                        const std::vector<std::string>      &names,
                        const double                         averaging_length);
+
+    /**
+     * @brief Pointwise peak (and where), and the largest mean of t_n over a
+     * window of length report.averaging_length, from report.profile.
+     *
+     * Each node's force w_i t_i is spread uniformly over its tributary
+     * interval (midpoints to its neighbours), so a window integrates force,
+     * whatever the node spacing; windows are centred on nodes and shifted to
+     * stay inside the joint (the whole joint if it is shorter than the
+     * window). Shared with the rigid-block model so both report the same
+     * averaged peak.
+     *
+     * @param[in,out] report Profile sorted by arc_position, peaks zero.
+     * @param[in] weights Length each profile node stands for (m).
+     */
+    void
+    add_peak_stresses(JointReport &report, const std::vector<double> &weights);
   } // namespace Contact
 } // namespace FloorBlock

@@ -124,8 +124,8 @@ namespace FloorBlock::Output
       "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "
       "{:.1f} deg, support load {:.0f} t on blocks {} from the face, b = {} "
       "m, floor lift {} m ({}), joints {}.\n\n"
-      "FEM: {} ({}); {} DoFs, {} increments, {} Newton iterations, "
-      "force-balance error {:.1e}.\n\n",
+      "Model: {} ({}): {} ({}); {} DoFs, {} increments, {} Newton "
+      "iterations, force-balance error {:.1e}.\n\n",
       scene.scene_name, numbering_note, scene.geometry.n_blocks,
       scene.geometry.block_width, scene.geometry.block_height,
       scene.bedding.shape == Parameters::BeddingShape::planar ?
@@ -139,11 +139,15 @@ namespace FloorBlock::Output
       scene.geometry.support_width, scene.loading.floor_lift,
       fem["status"].get<std::string>() == "converged" ? "reached" : "not reached",
       scene.joints.law == Parameters::JointLaw::rigid ? "rigid" : "compliant",
+      fem.value("model", "elastic FEM"), fem.value("model_choice", ""),
       fem["status"].get<std::string>(), fem["status_text"].get<std::string>(),
       fem["n_dofs"].dump(), fem["n_increments"].dump(),
       fem["newton_iterations"].dump(),
       fem["force_balance_relative_error"].get<double>());
 
+    if (fem.value("model", "elastic FEM") != "elastic FEM")
+      text += "Columns and verdicts marked FEM hold the numbers of the " +
+              fem["model"].get<std::string>() + " model.\n\n";
     text += "## Verdicts (face joint, final lift)\n\n";
     for (const auto &line : verdicts)
       text += "- " + line + "\n";
@@ -157,8 +161,9 @@ namespace FloorBlock::Output
             "## Discretisation error\n\n" +
             error_section(summary);
     text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
-    text += fmt::format("| mesh | {:.3f} |\n",
-                        fem["mesh"]["wall_time_s"].get<double>());
+    if (fem["mesh"].is_object())
+      text += fmt::format("| mesh | {:.3f} |\n",
+                          fem["mesh"]["wall_time_s"].get<double>());
     for (const auto &[section, seconds] : fem["wall_time_s"].items())
       text += fmt::format("| {} | {:.3f} |\n", section, seconds.get<double>());
     return text;

@@ -22,6 +22,7 @@ namespace FloorBlock::Parameters
     MeshParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm);
     VerifyParameters::declare_parameters(prm);
+    ModelParameters::declare_parameters(prm);
   }
 
   void
@@ -35,6 +36,7 @@ namespace FloorBlock::Parameters
     mesh.parse_parameters(prm);
     solver.parse_parameters(prm);
     verify.parse_parameters(prm);
+    model.parse_parameters(prm);
 
     // Fillet pairs start with a gap; the joint law treats a pair as closed
     // while kn * gap stays below the tensile strength, so any tensile
@@ -52,6 +54,8 @@ namespace FloorBlock::Parameters
                          "each loaded block must be between 1 and "
                          "Geometry/Number of blocks = " +
                            std::to_string(geometry.n_blocks));
+
+    model.choose(bedding, joints, loading);
   }
 
   std::vector<unsigned int>

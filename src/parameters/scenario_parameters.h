@@ -25,6 +25,7 @@ namespace FloorBlock::Parameters
     MeshParameters     mesh;
     SolverParameters   solver;
     VerifyParameters   verify;
+    ModelParameters    model;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).
     std::string scene_name;

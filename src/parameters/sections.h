@@ -194,4 +194,53 @@ namespace FloorBlock::Parameters
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
+
+  /** Which model of the blocks solves a scene (subsection "Model"). */
+  enum class BlockModel
+  {
+    elastic,  ///< contact FEM: deformable blocks, face block and base
+    rigid,    ///< rigid blocks, 3 DOF each, same joints (src/rigid/)
+    automatic ///< chosen by the requested outputs (ModelParameters::choose)
+  };
+
+  /** What a run is asked for; decides Model/Blocks = auto. */
+  enum class RequestedOutputs
+  {
+    forces,        ///< lateral forces Q_j and joint shear
+    contact_stress ///< contact length/area and peak stress at the corners
+  };
+
+  /**
+   * Subsection "Model": which level of the model hierarchy (closed form,
+   * rigid blocks, elastic FEM) computes the numbers of `solve` and `run`.
+   */
+  struct ModelParameters
+  {
+    BlockModel       blocks;  ///< as written (auto stays automatic)
+    RequestedOutputs outputs;
+    /// Trapezoid points per joint of the rigid-block model (>= 2).
+    unsigned int     rigid_points_per_joint;
+    /// The model that runs (never automatic once choose() has run).
+    BlockModel       chosen = BlockModel::elastic;
+    /// Why that model runs, in words (echoed into fem.json).
+    std::string      choice_reason;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Sets chosen and choice_reason: Blocks as written, or for auto
+     * rigid when only forces are requested and the rigid model can
+     * represent the scene, elastic otherwise.
+     * @throws InputError for Blocks = rigid on a scene the rigid model
+     * cannot represent (Joints/Law = rigid; a support load normal to an
+     * inclined block top).
+     */
+    void
+    choose(const BeddingParameters &bedding,
+           const JointParameters &  joints,
+           const LoadingParameters &loading);
+  };
 } // namespace FloorBlock::Parameters

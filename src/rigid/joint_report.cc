@@ -85,6 +85,7 @@ namespace FloorBlock::RigidBlocks
                                       point.position,
                                       response.normal_traction,
                                       shear,
+                                      response.gap,
                                       response.state});
         }
       report.counts = Contact::count_states(states);

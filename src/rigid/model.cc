@@ -164,8 +164,10 @@ namespace FloorBlock::RigidBlocks
                 // Grow back after a cutback, never beyond the nominal step.
                 step = std::min(nominal_step, 2. * step);
                 increment.wall_time = seconds_since(clock);
-                // Profiles only for the last increment: drop the previous.
-                if (!path.result.increments.empty())
+                // Profiles only for the last increment unless asked:
+                // drop the previous.
+                if (!settings.profiles_of_every_increment &&
+                    !path.result.increments.empty())
                   for (JointReport &joint : path.result.increments.back().joints)
                     joint.profile.clear();
                 path.result.increments.push_back(std::move(increment));

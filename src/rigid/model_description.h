@@ -55,6 +55,12 @@ namespace FloorBlock::RigidBlocks
      * round-off.
      */
     double singular_pivot_tolerance = 1e-12;
+    /**
+     * Keep the point profiles of every converged increment (true), not only
+     * of the last one: the scene pipeline needs them for the averaged peak
+     * stress along the lift (about 50 bytes per point and increment).
+     */
+    bool profiles_of_every_increment = false;
   };
 
   /**

@@ -25,6 +25,8 @@ namespace FloorBlock::RigidBlocks
     double normal_traction = 0.;
     /** Shear traction in the sense of JointReport::shear_force (Pa). */
     double shear_traction = 0.;
+    /** Normal gap, negative in overlap (m). */
+    double gap = 0.;
     Contact::JointState state = Contact::JointState::open;
   };
 
