@@ -4,6 +4,7 @@
 #include <common/units.h>
 #include <output/fem_sweep_report.h>
 #include <output/gnuplot.h>
+#include <scene/rigid_inputs.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -30,6 +31,15 @@ namespace FloorBlock::App
       }
     };
 
+    /// Case file name: rigid-block cases are stored apart, so a rigid and
+    /// an elastic sweep into one folder never take each other's cases.
+    std::string
+    case_id(const Scene::FigurePoint &point)
+    {
+      return Scene::uses_rigid_blocks(point.scene) ? point.id() + "_rigid" :
+                                                     point.id();
+    }
+
     json
     fem_case(const Scene::FigurePoint &point)
     {
@@ -53,7 +63,7 @@ namespace FloorBlock::App
     std::vector<SweepCase>  cases;
     for (const auto &point : points)
       if (limit == 0 || cases.size() < limit)
-        cases.push_back({point.id(), [&point] { return fem_case(point); }});
+        cases.push_back({case_id(point), [&point] { return fem_case(point); }});
 
     run_cases(cases, store, MPI_COMM_WORLD, std::cout);
     MPI_Barrier(MPI_COMM_WORLD);
@@ -62,8 +72,8 @@ namespace FloorBlock::App
 
     std::vector<json> records;
     for (const auto &point : points)
-      if (store.has(point.id()))
-        records.push_back(store.load(point.id()));
+      if (store.has(case_id(point)))
+        records.push_back(store.load(case_id(point)));
     std::set<std::string> figures;
     for (const auto &record : records)
       figures.insert(record["figure"].get<std::string>());

@@ -3,9 +3,11 @@
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace FloorBlock::Output
 {
@@ -77,6 +79,7 @@ namespace FloorBlock::Output
       {"fem",
        {{"status", fem["status"]},
         {"status_text", fem["status_text"]},
+        {"model", fem.value("model", "elastic FEM")},
         {"Q_face_N_per_m",
          face.is_null() ? json(nullptr) : face["normal_force_N_per_m"]},
         {"contact_length_m",
@@ -99,6 +102,13 @@ namespace FloorBlock::Output
       "k_m,phi_h_deg,phi_v_deg,support_load_t,fem_status,fem_Q_face_N_per_m,"
       "fem_contact_length_m,fem_sigma_max_Pa,fem_sigma_max_averaged_Pa",
       numbering_note);
+    std::set<std::string> models;
+    for (const auto &record : records)
+      if (record["figure"] == figure)
+        models.insert(record["fem"].value("model", "elastic FEM"));
+    csv.insert(csv.find("\nk_m,") + 1,
+               fmt::format("# fem_* columns computed by: {}.\n",
+                           fmt::join(models, ", ")));
     const std::vector<std::string> mechanisms = {
       "no_rotation", "rotation_no_vertical_slip", "rotation_vertical_slip"};
     for (const auto &mechanism : mechanisms)

@@ -47,8 +47,9 @@ namespace FloorBlock::Parameters
       "(Gmsh mesh; deformable blocks, face block and base). rigid: rigid "
       "blocks, 3 DOF each, on the same compliant Coulomb joints "
       "integrated along every joint, with the same loads, uplift and load "
-      "steps (src/rigid/README.md); about 50 times cheaper, no mesh and "
-      "no VTU files; sharp corners (Geometry/Corner rounding radius is "
+      "steps (src/rigid/README.md); its solve is about 40 times cheaper "
+      "(0.1 s against 5 s on params/default.prm), no mesh and no VTU "
+      "files; sharp corners (Geometry/Corner rounding radius is "
       "ignored); needs Joints/Law = compliant. auto: rigid when Model/"
       "Outputs = forces and the scene is one the rigid model represents, "
       "elastic otherwise. The rigid model also uses Solver/Gravity steps, "
@@ -59,13 +60,14 @@ namespace FloorBlock::Parameters
       "Outputs", "contact stress", Selection("forces|contact stress"),
       "What the run is for; read only when Model/Blocks = auto. forces: "
       "the lateral forces Q_j and the joint shear forces, which the rigid "
-      "blocks reproduce (face-joint Q within 3 % of the elastic FEM on "
-      "params/default.prm and tests/scenarios/three_blocks.prm, "
+      "blocks reproduce (face-joint Q within 0.2 % of the elastic FEM with "
+      "sharp corners and 1.8 % of it with the default 1 cm rounding on "
+      "params/default.prm, 0.5 % on tests/scenarios/three_blocks.prm; "
       "src/rigid/README.md); contact stress: the contact length and area "
       "and the peak stress at the block corners (Eqs. 6.51-6.53), which "
       "depend on the deformation of the blocks near the corner and need "
       "the elastic FEM (rigid blocks on joint springs give a face-joint "
-      "contact 20 % shorter and a peak stress 20-25 % higher on the "
+      "contact 11-18 % shorter and a peak stress 22-24 % higher on the "
       "default scene). Units: none.");
     prm.declare_entry(
       "Rigid points per joint", "400", Integer(2, 100000),
