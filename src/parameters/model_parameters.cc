@@ -47,7 +47,7 @@ namespace FloorBlock::Parameters
       "(Gmsh mesh; deformable blocks, face block and base). rigid: rigid "
       "blocks, 3 DOF each, on the same compliant Coulomb joints "
       "integrated along every joint, with the same loads, uplift and load "
-      "steps (src/rigid/README.md); its solve is about 40 times cheaper "
+      "steps (src/rigid/README.md); its solve is about 50 times cheaper "
       "(0.1 s against 5 s on params/default.prm), no mesh and no VTU "
       "files; sharp corners (Geometry/Corner rounding radius is "
       "ignored); needs Joints/Law = compliant. auto: rigid when Model/"
