@@ -33,6 +33,16 @@ namespace FloorBlock
        */
       constexpr double displacement_scale_floor = 1e-30;
 
+      /**
+       * Fraction of a stage treated as its end (-): ten steps of 0.1 sum to
+       * 0.9999999999999999, and the round-off remainder must not become an
+       * increment of its own (a zero load step re-tests every slipping pair
+       * exactly on its Coulomb limit, where the stick/slip decision is
+       * round-off and the active set can cycle). Same value as the rigid
+       * model's stage end.
+       */
+      constexpr double stage_end_tolerance = 1e-12;
+
       const char *
       stage_name(const LoadStage stage)
       {
@@ -396,7 +406,7 @@ namespace FloorBlock
           // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
           // solve, so nothing half-computed reaches a result file.
           stop_if_interrupted();
-          const bool   last   = reached + step >= 1.;
+          const bool   last   = reached + step >= 1. - stage_end_tolerance;
           const double target = last ? 1. : reached + step;
           LoadFactors  factors = committed_factors;
           switch (stage)
