@@ -122,10 +122,10 @@ namespace FloorBlock::App
       for (std::size_t q = 0; q < quantities.size(); ++q)
         {
           const auto &errors = ladder.errors[q];
-          std::string order = "-";
-          if (!errors.observed_orders.empty() &&
-              errors.observed_orders.back())
-            order = fmt::format("{:.2f}", *errors.observed_orders.back());
+          std::string order = "-"; // of the finest level that has one
+          for (const auto &observed : errors.observed_orders)
+            if (observed)
+              order = fmt::format("{:.2f}", *observed);
           text += fmt::format(
             "  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
             quantities[q].name, Convergence::method_name(errors.method),

@@ -47,10 +47,13 @@ namespace FloorBlock::App
     {
       record.status      = outcome.fem["status"].get<std::string>();
       record.status_text = outcome.fem["status_text"].get<std::string>();
-      record.n_cells     = outcome.mesh.n_cells;
-      record.n_dofs      = outcome.result.n_dofs;
-      record.n_contact_pairs = outcome.result.n_contact_pairs;
-      record.n_increments    = outcome.result.increments.size();
+      record.n_cells      = outcome.mesh.n_cells;
+      record.n_increments = outcome.result.increments.size();
+      if (record.n_dofs == 0) // no solver was inspected
+        {
+          record.n_dofs          = outcome.result.n_dofs;
+          record.n_contact_pairs = outcome.result.n_contact_pairs;
+        }
       record.newton_iterations =
         outcome.fem["newton_iterations"].get<unsigned int>();
       record.cutbacks = outcome.fem["cutbacks"].get<unsigned int>();
@@ -96,13 +99,17 @@ namespace FloorBlock::App
       SolveExtras extras;
       extras.local_sizes = local_sizes;
       double indicator_time = 0.;
-      if (next_targets)
-        extras.inspect = [&](const Contact::ContactSolver &solver) {
-          dealii::Timer indicator_timer;
-          *next_targets = Convergence::bulk_size_targets(
-            solver.space(), solver.solution(), refinement);
-          indicator_time = indicator_timer.wall_time();
-        };
+      extras.inspect = [&](const Contact::ContactSolver &solver) {
+        // Also for a solve that stopped early, whose result has no DoFs.
+        record.n_dofs          = solver.space().dof_handler().n_dofs();
+        record.n_contact_pairs = solver.contact_nodes().size();
+        if (!next_targets)
+          return;
+        dealii::Timer indicator_timer;
+        *next_targets = Convergence::bulk_size_targets(
+          solver.space(), solver.solution(), refinement);
+        indicator_time = indicator_timer.wall_time();
+      };
       try
         {
           const FemOutcome outcome = solve_scene(

@@ -45,25 +45,39 @@ namespace FloorBlock::Convergence
       settings.traction_jump_fraction * largest_traction_jump(joints);
     std::vector<Geometry::LocalSize> targets;
     for (const auto &joint : joints)
-      for (std::size_t k = 0; k + 1 < joint.profile.size(); ++k)
-        {
-          const Contact::JointNodeSample &first  = joint.profile[k];
-          const Contact::JointNodeSample &second = joint.profile[k + 1];
-          const bool state_changes =
-            is_closed(first.state) != is_closed(second.state);
-          const double jump =
-            std::abs(second.normal_traction - first.normal_traction);
-          // jump > 0 keeps a joint without any traction from being marked
-          // everywhere when the threshold is 0.
-          const bool steep = jump > 0. && jump >= jump_threshold;
-          if (!state_changes && !steep)
-            continue;
-          const double size =
-            std::max(settings.smallest_size,
-                     first.position.distance(second.position) / 2.);
-          targets.push_back({point2(first.position), size});
-          targets.push_back({point2(second.position), size});
-        }
+      {
+        const auto &profile = joint.profile;
+        if (profile.size() < 2)
+          continue;
+        const std::size_t n_segments = profile.size() - 1;
+        std::vector<bool> marked(n_segments, false);
+        for (std::size_t k = 0; k < n_segments; ++k)
+          {
+            const double jump = std::abs(profile[k + 1].normal_traction -
+                                         profile[k].normal_traction);
+            // jump > 0 keeps a joint without any traction from being
+            // marked everywhere when the threshold is 0.
+            if (jump > 0. && jump >= jump_threshold)
+              marked[k] = true;
+            // The end of a closed zone moves by up to a segment when the
+            // mesh changes: its neighbours are refined with it, so that the
+            // next level still finds the end inside the refined patch.
+            if (is_closed(profile[k].state) != is_closed(profile[k + 1].state))
+              for (std::size_t m = (k > 0 ? k - 1 : 0);
+                   m <= std::min(k + 1, n_segments - 1);
+                   ++m)
+                marked[m] = true;
+          }
+        for (std::size_t k = 0; k < n_segments; ++k)
+          if (marked[k])
+            {
+              const double size = std::max(
+                settings.smallest_size,
+                profile[k].position.distance(profile[k + 1].position) / 2.);
+              targets.push_back({point2(profile[k].position), size});
+              targets.push_back({point2(profile[k + 1].position), size});
+            }
+      }
     return targets;
   }
 

@@ -36,8 +36,9 @@ namespace FloorBlock::Convergence
    * Along each joint (nodes sorted along it, JointReport::profile), a
    * segment between neighbouring nodes is marked
    *  - where the contact state changes (open on one node, closed on the
-   *    other): the ends of the closed zones, which decide the contact
-   *    length to one cell; and
+   *    other), and the segment on either side: the ends of the closed
+   *    zones, which decide the contact length to one cell and move by up
+   *    to a segment from one mesh to the next; and
    *  - where the normal traction jump \f$|t_{n,k+1} - t_{n,k}|\f$ is at
    *    least RefinementSettings::traction_jump_fraction of the largest jump
    *    on any joint: the jump is the size of the traction gradient times the

@@ -79,16 +79,17 @@ namespace
   {
     Convergence::RefinementSettings settings;
     // Threshold 0.5 x 0.36 = 0.18 x peak: the three segments nearest the
-    // top are steep; 1.5-1.6 m is the state change; 1.6-1.7 m is neither.
+    // top are steep; 1.5-1.6 m is the state change, which also marks its
+    // neighbours 1.4-1.5 and 1.6-1.7 m; below 1.4 m nothing.
     settings.traction_jump_fraction = 0.5;
     settings.smallest_size          = 1e-3;
     const auto targets =
       Convergence::joint_size_targets({vertical_joint(), open_joint()},
                                       settings);
-    // Two nodes per marked segment: 1.5-1.6, 1.7-1.8, 1.8-1.9, 1.9-2.0.
-    EXPECT_EQ(targets.size(), 8u);
+    // Two nodes per marked segment, six segments from 1.4 to 2.0 m.
+    EXPECT_EQ(targets.size(), 12u);
     EXPECT_EQ(heights_in_mm(targets),
-              (std::set<long>{1500, 1600, 1700, 1800, 1900, 2000}));
+              (std::set<long>{1400, 1500, 1600, 1700, 1800, 1900, 2000}));
     for (const auto &target : targets)
       {
         EXPECT_DOUBLE_EQ(target.position.x, 0.); // none on the open joint
