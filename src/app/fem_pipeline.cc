@@ -1,4 +1,5 @@
 #include <app/fem_pipeline.h>
+#include <app/deformed_view.h>
 #include <app/rigid_pipeline.h>
 #include <common/units.h>
 #include <contact/contact_solver.h>
@@ -67,6 +68,8 @@ namespace FloorBlock::App
       }
     if (extras.inspect)
       extras.inspect(solver);
+    if (write_vtu)
+      write_deformed_view(solver, folder.path_of("deformed.png"));
 
     outcome.fem = Output::fem_json(outcome.result, context);
     outcome.fem["model"]        = "elastic FEM";

@@ -73,6 +73,19 @@ namespace FloorBlock::Output
       return text.empty() ? std::string("NaN NaN\n") : text;
     }
 
+    /** Marker colour by category: joint states first, others after. */
+    std::string
+    marker_colour(const std::string &category, const unsigned int index)
+    {
+      static const std::map<std::string, std::string> known = {
+        {"stick", "#1a9850"}, {"slip", "#f46d43"}, {"open", "#7b3294"}};
+      constexpr std::array<const char *, 3> others = {"#000000", "#2166ac",
+                                                      "#b2182b"};
+      const auto found = known.find(category);
+      return found != known.end() ? found->second :
+                                    others[index % others.size()];
+    }
+
     std::string
     quoted(const std::string &text)
     {
@@ -100,8 +113,8 @@ namespace FloorBlock::Output
         plot << (block_index == 0 ? "plot " : ", \\\n     ")
              << "$cells index " << block_index
              << " with filledcurves closed fc rgb '" << body_colour(material)
-             << "' fs solid 1.0 noborder, \\\n     $cells index "
-             << block_index << " with lines lc rgb '#505050' lw 0.4";
+             << "' fs solid 1.0 noborder notitle, \\\n     $cells index "
+             << block_index << " with lines lc rgb '#505050' lw 0.4 notitle";
         ++block_index;
       }
     // Inline data blocks: no scratch files to clean up.
@@ -114,8 +127,23 @@ namespace FloorBlock::Output
                                           Ids::BoundaryKind::floor_surface;
                                  }) +
                        "EOD\n";
-    plot << ", \\\n     $joints with lines lc rgb '#d01010' lw 2.5"
-         << ", \\\n     $floor with lines lc rgb '#1030d0' lw 2.5\n";
+    plot << ", \\\n     $joints with lines lc rgb '#d01010' lw 2.5 notitle"
+         << ", \\\n     $floor with lines lc rgb '#1030d0' lw 2.5 notitle";
+    std::map<std::string, std::ostringstream> marker_points;
+    for (const PictureMarker &marker : options.markers)
+      marker_points[marker.category]
+        << marker.position[0] << ' ' << marker.position[1] << '\n';
+    unsigned int marker_index = 0;
+    for (const auto &[category, points] : marker_points)
+      {
+        const std::string name = "$markers" + std::to_string(marker_index);
+        data += name + " << EOD\n" + points.str() + "EOD\n";
+        plot << ", \\\n     " << name << " with points pt 7 ps 0.6 lc rgb '"
+             << marker_colour(category, marker_index) << "' title "
+             << quoted(category);
+        ++marker_index;
+      }
+    plot << '\n';
 
     // Picture size follows the mesh extent so cells are not distorted.
     constexpr double huge  = std::numeric_limits<double>::max();
@@ -142,7 +170,9 @@ namespace FloorBlock::Output
     std::ostringstream script;
     script.precision(17);
     script << "set title " << quoted(options.title) << '\n'
-           << "unset key\nset size ratio -1\nset xlabel 'x (m)'\n"
+           << (options.markers.empty() ? "unset key\n" :
+                                         "set key outside right top\n")
+           << "set size ratio -1\nset xlabel 'x (m)'\n"
            << "set ylabel 'y (m)'\n"
            << "set xrange [" << x_min - margin << ':' << x_max + margin
            << "]\nset yrange [" << y_min - margin << ':' << y_max + margin

@@ -3,10 +3,19 @@
 #include <deal.II/grid/tria.h>
 
 #include <string>
+#include <vector>
 
 namespace FloorBlock::Output
 {
-  /** @brief Size and caption of a mesh picture. */
+  /** @brief A labelled point drawn over the mesh (e.g. a joint node's state). */
+  struct PictureMarker
+  {
+    dealii::Point<2> position;
+    /** Legend entry; markers of one category share a colour. */
+    std::string category;
+  };
+
+  /** @brief Size, caption and overlays of a mesh picture. */
   struct MeshPictureOptions
   {
     /** Image width. Units: pixels. */
@@ -15,6 +24,8 @@ namespace FloorBlock::Output
     unsigned int height_pixels = 0;
     /** Caption printed above the mesh (may be empty). */
     std::string title;
+    /** Points drawn on top, coloured by category, with a legend. */
+    std::vector<PictureMarker> markers;
   };
 
   /**

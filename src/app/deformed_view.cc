@@ -1,0 +1,41 @@
+#include <app/deformed_view.h>
+#include <output/deformed_picture.h>
+
+namespace FloorBlock::App
+{
+  namespace
+  {
+    std::string
+    state_name(const Contact::JointState state)
+    {
+      switch (state)
+        {
+          case Contact::JointState::open:
+            return "open";
+          case Contact::JointState::stick:
+            return "stick";
+          case Contact::JointState::slip:
+            return "slip";
+        }
+      return "unknown";
+    }
+  } // namespace
+
+  void
+  write_deformed_view(const Contact::ContactSolver &solver,
+                      const std::string            &png_path)
+  {
+    const auto &nodes     = solver.contact_nodes();
+    const auto  responses = solver.responses_at_solution();
+    std::vector<Output::PictureMarker> markers;
+    markers.reserve(nodes.size());
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      markers.push_back({nodes[p].position, state_name(responses[p].state)});
+    Output::write_deformed_picture(solver.space().dof_handler(),
+                                   solver.solution(),
+                                   markers,
+                                   png_path,
+                                   0.,
+                                   "joint node states");
+  }
+} // namespace FloorBlock::App

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <contact/contact_solver.h>
+
+#include <string>
+
+namespace FloorBlock::App
+{
+  /**
+   * @brief deformed.png: the blocks displaced by a magnified copy of the
+   * solver's last converged displacement, every joint node marked by its
+   * state (stick, slip, open). The picture the chapter's Figure 6.4 shows
+   * from UDEC.
+   */
+  void
+  write_deformed_view(const Contact::ContactSolver &solver,
+                      const std::string            &png_path);
+} // namespace FloorBlock::App
