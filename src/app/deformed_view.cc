@@ -27,6 +27,8 @@ namespace FloorBlock::App
   {
     const auto &nodes     = solver.contact_nodes();
     const auto  responses = solver.responses_at_solution();
+    if (responses.size() != nodes.size())
+      return; // nothing converged: no state to draw
     std::vector<Output::PictureMarker> markers;
     markers.reserve(nodes.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)

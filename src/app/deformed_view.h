@@ -10,7 +10,7 @@ namespace FloorBlock::App
    * @brief deformed.png: the blocks displaced by a magnified copy of the
    * solver's last converged displacement, every joint node marked by its
    * state (stick, slip, open). The picture the chapter's Figure 6.4 shows
-   * from UDEC.
+   * from UDEC. Writes nothing when no increment has converged.
    */
   void
   write_deformed_view(const Contact::ContactSolver &solver,

@@ -65,6 +65,9 @@ namespace FloorBlock::App
         context.status_text = failure_text(failure);
         if (failure.last_converged)
           outcome.result.increments.push_back(*failure.last_converged);
+        // The sizes are known even when no increment converged.
+        outcome.result.n_dofs = solver.space().dof_handler().n_dofs();
+        outcome.result.n_contact_pairs = solver.contact_nodes().size();
       }
     if (extras.inspect)
       extras.inspect(solver);

@@ -126,11 +126,18 @@ namespace FloorBlock::App
 
     // Written last: its presence marks a finished run.
     summary["status"]      = outcome.fem["status"];
+    summary["status_text"] = outcome.fem["status_text"];
     summary["wall_time_s"] = timer.wall_time();
     folder.write_summary(summary);
-    std::cout << "wrote " << folder.path_of("report.md") << " and "
-              << folder.path_of("summary.json") << " in " << timer.wall_time()
-              << " s" << std::endl;
+    if (outcome.result.increments.empty())
+      std::cout << "no load increment converged: no comparison and no "
+                   "report.md; wrote "
+                << folder.path_of("summary.json") << " in "
+                << timer.wall_time() << " s" << std::endl;
+    else
+      std::cout << "wrote " << folder.path_of("report.md") << " and "
+                << folder.path_of("summary.json") << " in "
+                << timer.wall_time() << " s" << std::endl;
     return outcome.converged ? exit_code::success : exit_code::failure;
   }
 } // namespace FloorBlock::App

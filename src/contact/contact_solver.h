@@ -68,7 +68,7 @@ namespace FloorBlock
       const std::vector<ContactNode<2>> &
       contact_nodes() const;
 
-      /** @brief Joint law evaluations at solution(). */
+      /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
       std::vector<JointResponse<2>>
       responses_at_solution() const;
 
