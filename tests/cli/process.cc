@@ -3,12 +3,32 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace FloorBlockTest
 {
+  std::string
+  read_text(const std::string &path)
+  {
+    std::ifstream      in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  bool
+  has_non_finite_value(const std::string &text)
+  {
+    static const std::regex non_finite(
+      "(^|[^A-Za-z])[-+]?(nan|inf)([^A-Za-z]|$)", std::regex::icase);
+    return std::regex_search(text, non_finite);
+  }
+
   ProcessResult
   run_floorblock(const std::string &arguments)
   {

@@ -33,6 +33,19 @@ namespace FloorBlockTest
   std::string
   fresh_output_folder(const std::string &name);
 
+  /** @brief The whole text of a file ("" if it cannot be read). */
+  std::string
+  read_text(const std::string &path);
+
+  /**
+   * @brief True if @p text holds a non-finite number as a value: "nan" or
+   * "inf" (fmt's spelling, any case, optional sign) not part of a word, so
+   * "information" does not count. nlohmann::json writes NaN/inf as null;
+   * check nulls separately where they are not allowed.
+   */
+  bool
+  has_non_finite_value(const std::string &text);
+
   /** @brief Quotes @p text for the shell. */
   std::string
   shell_quoted(const std::string &text);

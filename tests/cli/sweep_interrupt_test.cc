@@ -50,15 +50,6 @@ namespace
     record["fem"].erase("wall_time_s");
     return record;
   }
-
-  std::string
-  read_text(const std::string &path)
-  {
-    std::ifstream     in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
 } // namespace
 
 // The tool shall stop a sweep cleanly on SIGINT, keep the finished cases,
