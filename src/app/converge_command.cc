@@ -95,19 +95,27 @@ namespace FloorBlock::App
           if (std::find(target_quantities.begin(), target_quantities.end(),
                         comparison.quantity) == target_quantities.end())
             continue;
-          if (!comparison.dofs_ratio || !comparison.cost_ratio)
-            {
-              met = false;
-              text += comparison.quantity +
-                      ": one ladder never stays within the target; ";
-              continue;
-            }
-          const bool ok = *comparison.dofs_ratio <= target_dofs_ratio &&
+          const auto level = [](const std::optional<unsigned int> &value) {
+            return value ? std::to_string(*value) : std::string("never");
+          };
+          const bool ok = comparison.dofs_ratio && comparison.cost_ratio &&
+                          *comparison.dofs_ratio <= target_dofs_ratio &&
                           *comparison.cost_ratio < 1.;
           met = met && ok;
-          text += fmt::format("{}: DoFs x{:.3f}, time x{:.3f} ({}); ",
-                              comparison.quantity, *comparison.dofs_ratio,
-                              *comparison.cost_ratio, ok ? "met" : "missed");
+          text += fmt::format(
+            "{}: uniform level {}, adaptive level {}", comparison.quantity,
+            level(comparison.uniform_level),
+            level(comparison.adaptive_level));
+          if (comparison.dofs_ratio && comparison.cost_ratio)
+            text += fmt::format(": DoFs x{:.3f}, time x{:.3f}{}",
+                                *comparison.dofs_ratio, *comparison.cost_ratio,
+                                comparison.ratios_are_upper_bounds ?
+                                  " (upper bounds: uniform never reaches it)" :
+                                  "");
+          if (comparison.reference_difference)
+            text += fmt::format(", best values {:.2g} apart",
+                                *comparison.reference_difference);
+          text += ok ? " (met); " : " (missed); ";
         }
       return {{"status", met ? "met" : "not met"},
               {"text", text},
@@ -122,10 +130,12 @@ namespace FloorBlock::App
       for (std::size_t q = 0; q < quantities.size(); ++q)
         {
           const auto &errors = ladder.errors[q];
-          std::string order = "-"; // of the finest level that has one
-          for (const auto &observed : errors.observed_orders)
-            if (observed)
-              order = fmt::format("{:.2f}", *observed);
+          // The order used by the extrapolation; all orders are in the JSON.
+          std::string order = "-";
+          if (errors.method == Convergence::ErrorMethod::richardson)
+            for (const auto &observed : errors.observed_orders)
+              if (observed)
+                order = fmt::format("{:.2f}", *observed);
           text += fmt::format(
             "  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
             quantities[q].name, Convergence::method_name(errors.method),

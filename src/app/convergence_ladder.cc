@@ -210,8 +210,8 @@ namespace FloorBlock::App
                           << std::endl;
                 break;
               }
-            local_sizes.insert(local_sizes.end(), targets.begin(),
-                               targets.end());
+            Convergence::merge_size_requests(local_sizes, targets,
+                                             scene.mesh.growth_rate);
           }
       }
     return levels;

@@ -6,42 +6,31 @@ namespace FloorBlock::Convergence
 {
   namespace
   {
-    /** The converged value with the most DoFs of either ladder. */
-    std::optional<double>
-    finest_value(const Ladder &uniform, const Ladder &adaptive,
-                 const Quantity &quantity, std::string &source)
-    {
-      std::optional<double> value;
-      unsigned int          most_dofs = 0;
-      for (const auto *ladder : {&uniform, &adaptive})
-        for (const LevelRecord &record : ladder->levels)
-          if (record.converged() && record.n_dofs > most_dofs)
-            {
-              most_dofs = record.n_dofs;
-              value     = quantity.value(record);
-              source    = "finest converged level (" + record.mode +
-                       " level " + std::to_string(record.level) + ", " +
-                       std::to_string(record.n_dofs) +
-                       " DoFs); its own error is 0 by construction";
-            }
-      return value;
-    }
-
+    /**
+     * First level from which on the estimate stays within the target. The
+     * finest level of a finest_difference estimate has no estimate of its
+     * own (it is the reference) and neither breaks nor starts a run; a
+     * non-converged level breaks it.
+     */
     std::optional<unsigned int>
-    level_within(const Ladder &ladder, const Quantity &quantity,
-                 const double reference, const double target)
+    level_within(const Ladder &ladder, const std::size_t quantity_index,
+                 const double target)
     {
+      const auto &relative = ladder.errors.at(quantity_index).relative_errors;
       std::optional<unsigned int> first;
-      for (const LevelRecord &record : ladder.levels)
+      for (std::size_t level = 0; level < ladder.levels.size(); ++level)
         {
-          const bool within =
-            record.converged() &&
-            std::abs(quantity.value(record) - reference) <=
-              target * std::abs(reference);
-          if (!within)
+          if (!ladder.levels[level].converged())
+            {
+              first.reset();
+              continue;
+            }
+          if (!relative.at(level))
+            continue;
+          if (*relative[level] > target)
             first.reset();
           else if (!first)
-            first = record.level;
+            first = ladder.levels[level].level;
         }
       return first;
     }
@@ -61,46 +50,44 @@ namespace FloorBlock::Convergence
                          const Ladder     &adaptive,
                          const Quantity   &quantity,
                          const std::size_t quantity_index,
-                         const double     target_relative_error)
+                         const double      target_relative_error)
   {
     EqualErrorComparison comparison;
     comparison.quantity              = quantity.name;
     comparison.target_relative_error = target_relative_error;
-    const SequenceErrors &uniform_errors  = uniform.errors.at(quantity_index);
-    const SequenceErrors &adaptive_errors = adaptive.errors.at(quantity_index);
-    if (uniform_errors.method == ErrorMethod::richardson)
-      {
-        comparison.reference        = uniform_errors.reference;
-        comparison.reference_source = "Richardson value of the uniform ladder";
-      }
-    else if (adaptive_errors.method == ErrorMethod::richardson)
-      {
-        comparison.reference = adaptive_errors.reference;
-        comparison.reference_source =
-          "Richardson value of the adaptive ladder (the uniform one is "
-          "irregular)";
-      }
-    else
-      comparison.reference = finest_value(uniform, adaptive, quantity,
-                                          comparison.reference_source);
-    if (!comparison.reference || *comparison.reference == 0.)
-      return comparison;
+    const auto &uniform_reference = uniform.errors.at(quantity_index).reference;
+    const auto &adaptive_reference =
+      adaptive.errors.at(quantity_index).reference;
+    if (uniform_reference && adaptive_reference && *uniform_reference != 0.)
+      comparison.reference_difference =
+        std::abs(*uniform_reference - *adaptive_reference) /
+        std::abs(*uniform_reference);
 
-    comparison.uniform_level = level_within(
-      uniform, quantity, *comparison.reference, target_relative_error);
-    comparison.adaptive_level = level_within(
-      adaptive, quantity, *comparison.reference, target_relative_error);
-    if (comparison.uniform_level && comparison.adaptive_level)
+    comparison.uniform_level =
+      level_within(uniform, quantity_index, target_relative_error);
+    comparison.adaptive_level =
+      level_within(adaptive, quantity_index, target_relative_error);
+    const LevelRecord *fixed = nullptr;
+    if (comparison.uniform_level)
+      fixed = &uniform.levels.at(*comparison.uniform_level);
+    else if (comparison.adaptive_level)
       {
-        const LevelRecord &fixed =
-          uniform.levels.at(*comparison.uniform_level);
+        // Not reached by uniform refinement: compare with its finest
+        // converged level, which the uniform ladder would need to exceed.
+        for (const LevelRecord &record : uniform.levels)
+          if (record.converged())
+            fixed = &record;
+        comparison.ratios_are_upper_bounds = fixed != nullptr;
+      }
+    if (fixed && comparison.adaptive_level)
+      {
         const LevelRecord &adapted =
           adaptive.levels.at(*comparison.adaptive_level);
         comparison.dofs_ratio =
-          static_cast<double>(adapted.n_dofs) / fixed.n_dofs;
-        if (fixed.cost_wall_time > 0.)
+          static_cast<double>(adapted.n_dofs) / fixed->n_dofs;
+        if (fixed->cost_wall_time > 0.)
           comparison.cost_ratio =
-            adapted.cost_wall_time / fixed.cost_wall_time;
+            adapted.cost_wall_time / fixed->cost_wall_time;
       }
     return comparison;
   }

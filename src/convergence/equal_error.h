@@ -25,32 +25,43 @@ namespace FloorBlock::Convergence
   {
     std::string quantity;
     double      target_relative_error = 0.;
-    /** Common reference value of both ladders, and where it comes from. */
-    std::optional<double> reference;
-    std::string           reference_source;
-    /** First level from which on every finer level is within the target. */
+    /**
+     * First level from which on every finer level with an estimate has an
+     * estimated relative error within the target (each ladder's own
+     * estimate, as in convergence.csv and the plot).
+     */
     std::optional<unsigned int> uniform_level;
     std::optional<unsigned int> adaptive_level;
-    /** Adaptive over uniform at those levels: DoFs, cost wall time. */
+    /**
+     * Adaptive over uniform at those levels: DoFs, cost wall time. If only
+     * the adaptive ladder reaches the target, the uniform ladder would need
+     * more than its finest converged level: the ratios to that level are
+     * then upper bounds (ratios_are_upper_bounds).
+     */
     std::optional<double> dofs_ratio;
     std::optional<double> cost_ratio;
+    bool                  ratios_are_upper_bounds = false;
+    /**
+     * |uniform reference - adaptive reference| / |uniform reference|: the
+     * two ladders' best values (Richardson or finest level). Larger than the
+     * target means that at least one ladder's own estimate misses part of
+     * its error, and the comparison above is not at equal error.
+     */
+    std::optional<double> reference_difference;
   };
 
   /**
-   * @brief Compares both ladders against one common reference value, so
-   * that "equal error" means the same thing for both: the uniform
-   * Richardson value if the uniform ladder converges regularly, else the
-   * adaptive one, else the converged value with the most DoFs of either
-   * ladder (which then has error 0 by construction: a bias towards that
-   * ladder, stated in reference_source). The relative error of a level is
-   * |q - reference| / |reference|; each ladder's level is the first from
-   * which on all finer converged levels stay within @p target_relative_error
-   * (a non-converged finer level breaks the run).
+   * @brief The levels at which each ladder first reaches (and keeps) an
+   * estimated relative error of at most @p target_relative_error for
+   * quantity @p quantity_index, their DoF and cost ratios, and how far the
+   * two ladders' best values lie apart. A ladder whose non-converged level
+   * follows breaks the run (it has no estimate there and the next level
+   * starts over).
    */
   EqualErrorComparison
-  compare_at_equal_error(const Ladder   &uniform,
-                         const Ladder   &adaptive,
-                         const Quantity &quantity,
+  compare_at_equal_error(const Ladder     &uniform,
+                         const Ladder     &adaptive,
+                         const Quantity   &quantity,
                          const std::size_t quantity_index,
-                         const double   target_relative_error);
+                         const double      target_relative_error);
 } // namespace FloorBlock::Convergence

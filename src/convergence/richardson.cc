@@ -1,12 +1,21 @@
 #include <convergence/richardson.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace FloorBlock::Convergence
 {
   namespace
   {
     using Values = std::vector<std::optional<double>>;
+
+    std::string
+    text(const double value)
+    {
+      std::ostringstream stream;
+      stream << value;
+      return stream.str();
+    }
 
     /** Order p_l from levels l-2, l-1, l, if defined. */
     std::optional<double>
@@ -35,7 +44,7 @@ namespace FloorBlock::Convergence
       if (std::abs(*values[finest] - *values[finest - 1]) <= round_off ||
           std::abs(*values[finest - 1] - *values[finest - 2]) <= round_off)
         return "the last two differences are at round-off level (below " +
-               std::to_string(round_off_level) + " of the value)";
+               text(round_off_level) + " of the value)";
       if (!orders[finest])
         return "the last two differences are zero or change sign";
       if (!(*orders[finest] > 0.))
@@ -49,7 +58,7 @@ namespace FloorBlock::Convergence
               order_consistency_band)
             return "the observed orders of the last two level triples "
                    "differ by more than " +
-                   std::to_string(order_consistency_band);
+                   text(order_consistency_band);
         }
       return "";
     }

@@ -50,7 +50,8 @@ namespace FloorBlock::Convergence
         if (profile.size() < 2)
           continue;
         const std::size_t n_segments = profile.size() - 1;
-        std::vector<bool> marked(n_segments, false);
+        // Per segment: 0 = not refined, else the divisor of its length.
+        std::vector<double> divisor(n_segments, 0.);
         for (std::size_t k = 0; k < n_segments; ++k)
           {
             const double jump = std::abs(profile[k + 1].normal_traction -
@@ -58,7 +59,7 @@ namespace FloorBlock::Convergence
             // jump > 0 keeps a joint without any traction from being
             // marked everywhere when the threshold is 0.
             if (jump > 0. && jump >= jump_threshold)
-              marked[k] = true;
+              divisor[k] = std::max(divisor[k], 2.);
             // The end of a closed zone moves by up to a segment when the
             // mesh changes: its neighbours are refined with it, so that the
             // next level still finds the end inside the refined patch.
@@ -66,14 +67,15 @@ namespace FloorBlock::Convergence
               for (std::size_t m = (k > 0 ? k - 1 : 0);
                    m <= std::min(k + 1, n_segments - 1);
                    ++m)
-                marked[m] = true;
+                divisor[m] = std::max(divisor[m], settings.zone_end_refinement);
           }
         for (std::size_t k = 0; k < n_segments; ++k)
-          if (marked[k])
+          if (divisor[k] > 0.)
             {
               const double size = std::max(
                 settings.smallest_size,
-                profile[k].position.distance(profile[k + 1].position) / 2.);
+                profile[k].position.distance(profile[k + 1].position) /
+                  divisor[k]);
               targets.push_back({point2(profile[k].position), size});
               targets.push_back({point2(profile[k + 1].position), size});
             }
@@ -116,5 +118,23 @@ namespace FloorBlock::Convergence
           {point2(cell->center()),
            std::max(settings.smallest_size, std::sqrt(cell->measure()) / 2.)});
     return targets;
+  }
+
+  void
+  merge_size_requests(std::vector<Geometry::LocalSize> &requests,
+                      std::vector<Geometry::LocalSize>  candidates,
+                      const double                      growth_rate)
+  {
+    // Relative margin below which a candidate adds nothing (round-off of
+    // the distance and size arithmetic). Units: 1.
+    constexpr double redundancy_margin = 1e-9;
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Geometry::LocalSize &a, const Geometry::LocalSize &b) {
+                return a.size < b.size;
+              });
+    for (const auto &candidate : candidates)
+      if (Geometry::local_size_at(requests, growth_rate, candidate.position) >
+          candidate.size * (1. + redundancy_margin))
+        requests.push_back(candidate);
   }
 } // namespace FloorBlock::Convergence

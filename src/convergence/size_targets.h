@@ -24,6 +24,14 @@ namespace FloorBlock::Convergence
      * largest jump on any joint. Units: 1.
      */
     double traction_jump_fraction = 0.25;
+    /**
+     * The ends of the closed zones ask for their segment length divided by
+     * this, not by 2: the contact length is resolved to one node spacing
+     * there (an error of up to half a spacing at each end, first order and
+     * not improved by anything else), and refining a point of a line costs
+     * few cells. Units: 1.
+     */
+    double zone_end_refinement = 4.;
     /** Fraction of all cells, those with the largest Kelly indicator, refined in the bulk. Units: 1. */
     double bulk_fraction = 0.1;
     /** No request goes below this size (m); see Geometry::validate_local_sizes(). */
@@ -43,7 +51,8 @@ namespace FloorBlock::Convergence
    *    least RefinementSettings::traction_jump_fraction of the largest jump
    *    on any joint: the jump is the size of the traction gradient times the
    *    spacing, i.e. the local interpolation error of the linear traction.
-   * Both nodes of a marked segment ask for half its length (not below
+   * Both nodes of a marked segment ask for half its length, at a zone end
+   * for its length / RefinementSettings::zone_end_refinement (never below
    * RefinementSettings::smallest_size). Positions are those of side A;
    * side B has the same nodes.
    */
@@ -65,4 +74,15 @@ namespace FloorBlock::Convergence
   bulk_size_targets(const Fem::FeSpace<2>                       &space,
                     const dealii::TrilinosWrappers::MPI::Vector &solution,
                     const RefinementSettings                    &settings);
+  /**
+   * @brief Adds to @p requests those @p candidates that ask for less than
+   * the requests already give at their position
+   * (Geometry::local_size_at() with @p growth_rate), smallest first, so
+   * that repeated and overlapping requests (neighbouring cells, both ends
+   * of a segment, earlier levels) do not pile up in the mesher.
+   */
+  void
+  merge_size_requests(std::vector<Geometry::LocalSize>       &requests,
+                      std::vector<Geometry::LocalSize>        candidates,
+                      const double                            growth_rate);
 } // namespace FloorBlock::Convergence

@@ -62,8 +62,9 @@ namespace FloorBlock::Geometry
               << description.mesh_growth_rate - 1.0 << " * F" << distance
               << ")";
       mesh::field::setString(size, "F", formula.str());
-      const int local =
-        add_local_size_field(local_sizes, description.mesh_growth_rate);
+      const int local = add_local_size_field(local_sizes,
+                                             description.mesh_growth_rate,
+                                             description.mesh_far_size);
       int background = size;
       if (local >= 0)
         {

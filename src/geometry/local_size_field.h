@@ -57,9 +57,11 @@ namespace FloorBlock::Geometry
   local_size_class(const double size);
 
   /**
-   * @brief Adds Gmsh fields that evaluate to local_size_at() with the sizes
-   * rounded down to their local_size_class(): per class one Distance field
-   * over the class's points and a MathEval `size + (g - 1) * distance`,
+   * @brief Adds Gmsh fields that evaluate to
+   * min(local_size_at(), @p largest_size) with the sizes rounded down to
+   * their local_size_class(): per class one Distance field over the
+   * class's points and a Threshold field, size + (g - 1) distance up to
+   * @p largest_size (the far size: beyond it the request has no effect),
    * then the Min of all classes.
    *
    * Pre-condition: a GmshSession with the current model is open; the points
@@ -68,5 +70,6 @@ namespace FloorBlock::Geometry
    */
   int
   add_local_size_field(const std::vector<LocalSize> &local_sizes,
-                       const double                  growth_rate);
+                       const double                  growth_rate,
+                       const double                  largest_size);
 } // namespace FloorBlock::Geometry

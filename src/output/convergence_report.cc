@@ -199,16 +199,23 @@ namespace FloorBlock::Output
         equal_error.push_back(
           {{"quantity", comparison.quantity},
            {"target_relative_error", comparison.target_relative_error},
-           {"reference_value", optional_json(comparison.reference)},
-           {"reference_source", comparison.reference_source},
            {"uniform_level", level(comparison.uniform_level)},
            {"adaptive_level", level(comparison.adaptive_level)},
            {"dofs_ratio_adaptive_over_uniform",
             optional_json(comparison.dofs_ratio)},
            {"cost_wall_time_ratio_adaptive_over_uniform",
-            optional_json(comparison.cost_ratio)}});
+            optional_json(comparison.cost_ratio)},
+           {"ratios_are_upper_bounds", comparison.ratios_are_upper_bounds},
+           {"reference_difference_relative",
+            optional_json(comparison.reference_difference)}});
       }
     return {{"numbering", numbering_note},
+            {"equal_error_rule",
+             "per ladder, the first level from which on every finer level's "
+             "own estimated relative error is within the target; "
+             "reference_difference_relative compares the two ladders' best "
+             "values (an equal-error comparison only if it is within the "
+             "target too)"},
             {"observed_order",
              "p_l = log2(|q_{l-1} - q_{l-2}| / |q_l - q_{l-1}|), per level "
              "halving of the element size (adaptive: of the requested "

@@ -90,10 +90,18 @@ namespace
     EXPECT_EQ(targets.size(), 12u);
     EXPECT_EQ(heights_in_mm(targets),
               (std::set<long>{1400, 1500, 1600, 1700, 1800, 1900, 2000}));
-    for (const auto &target : targets)
+    // Requests come in pairs, one pair per marked segment.
+    for (std::size_t k = 0; k + 1 < targets.size(); k += 2)
       {
-        EXPECT_DOUBLE_EQ(target.position.x, 0.); // none on the open joint
-        EXPECT_NEAR(target.size, spacing / 2., 1e-15);
+        EXPECT_DOUBLE_EQ(targets[k].position.x, 0.); // none on the open joint
+        // The zone end (segments 1.4-1.5, 1.5-1.6, 1.6-1.7 m) asks for the
+        // spacing / zone_end_refinement, the steep segments above for half.
+        const double lower =
+          std::min(targets[k].position.y, targets[k + 1].position.y);
+        const double divisor =
+          lower < 1.65 ? settings.zone_end_refinement : 2.;
+        EXPECT_NEAR(targets[k].size, spacing / divisor, 1e-15) << lower;
+        EXPECT_NEAR(targets[k + 1].size, spacing / divisor, 1e-15) << lower;
       }
   }
 
@@ -155,6 +163,23 @@ namespace
         // e^3.5 and e^3 (the last column only one), and 8 equal cells.
         EXPECT_NEAR(target.position.x, 0.8125, 1e-12);
       }
+  }
+
+  TEST(MergeSizeRequests, OnlyRequestsThatRefineAreKept)
+  {
+    constexpr double growth = 1.3;
+    std::vector<Geometry::LocalSize> requests = {{{0., 0.}, 0.01}};
+    Convergence::merge_size_requests(
+      requests,
+      {{{0., 0.}, 0.01},   // repeated: adds nothing
+       {{0.1, 0.}, 0.05},  // existing gives 0.01 + 0.3 x 0.1 = 0.04 < 0.05
+       {{0.1, 0.}, 0.02},  // smaller than 0.04: kept
+       {{0.11, 0.}, 0.02}, // the one above gives 0.023 here: kept
+       {{0.1, 0.}, 0.02}}, // duplicate of a kept one: dropped
+      growth);
+    ASSERT_EQ(requests.size(), 3u);
+    EXPECT_DOUBLE_EQ(requests[1].size, 0.02);
+    EXPECT_DOUBLE_EQ(requests[2].position.x, 0.11);
   }
 
   TEST(LocalSizeField, GradedMinimumOverRequests)
