@@ -21,8 +21,9 @@ namespace FloorBlock::Parameters
                       "the way from a corner to the far field. Units: none.");
     prm.declare_entry("Matching joints", "true", Bool(),
                       "Whether both sides of every joint get the same nodes "
-                      "(node-to-node contact); false allows non-matching "
-                      "sides. Units: none.");
+                      "(node-to-node contact). false (non-matching sides) "
+                      "is refused while Model/Blocks chooses the elastic "
+                      "FEM, whose joints pair nodes one to one. Units: none.");
     prm.leave_subsection();
   }
 

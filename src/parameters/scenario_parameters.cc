@@ -56,6 +56,16 @@ namespace FloorBlock::Parameters
                            std::to_string(geometry.n_blocks));
 
     model.choose(bedding, joints, loading);
+
+    // The elastic FEM pairs the nodes of both joint sides one to one
+    // (src/contact/README.md). Non-matching sides used to pass here and stop
+    // only after meshing, with a message about a node instead of this entry
+    // and with files already written.
+    if (!mesh.matching_joints && model.chosen == BlockModel::elastic)
+      throw InputError("Mesh/Matching joints", "false",
+                       "must be true while the elastic FEM is the model "
+                       "(" + model.choice_reason + "): its joints pair the "
+                       "nodes of both sides one to one");
   }
 
   std::vector<unsigned int>
