@@ -16,6 +16,11 @@ namespace FloorBlock::Output
 
   namespace
   {
+    /** One colour per quantity (both modes), distinct for up to 12. */
+    const std::vector<std::string> curve_colours = {
+      "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02",
+      "#a6761d", "#666666", "#1f78b4", "#e31a1c", "#000000", "#b15928"};
+
     /** "Contact: linear solve" -> "wall_time_linear_solve_s". */
     std::string
     stage_column(const std::string &stage)
@@ -255,8 +260,9 @@ namespace FloorBlock::Output
             continue;
           script += fmt::format("$d{} << EOD\n{}EOD\n", block, rows);
           plot += fmt::format(
-            "{}$d{} with linespoints lc {} dt {} pt {} title '{} {}'",
-            plot == "plot " ? "" : ", ", block, q % 8 + 1,
+            "{}$d{} with linespoints lc rgb '{}' dt {} pt {} title '{} {}'",
+            plot == "plot " ? "" : ", ", block,
+            curve_colours[q % curve_colours.size()],
             ladder.mode == "uniform" ? 1 : 2,
             ladder.mode == "uniform" ? 7 : 6, ladder.mode,
             quantities[q].name);
