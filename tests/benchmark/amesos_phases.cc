@@ -1,4 +1,4 @@
-#include "amesos_phases.h"
+#include "direct_solver_phases.h"
 
 #include "measurements.h"
 

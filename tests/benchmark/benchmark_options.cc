@@ -64,6 +64,8 @@ namespace FloorBlock::Benchmark
         };
         if (!value_of("--scene").empty())
           options.scene_path = value_of("--scene");
+        else if (!value_of("--set").empty())
+          options.overrides.push_back(value_of("--set"));
         else if (!value_of("--refinements").empty())
           options.refinements =
             number_list<double>("--refinements", value_of("--refinements"));
@@ -91,6 +93,8 @@ namespace FloorBlock::Benchmark
   {
     return "FloorBlock benchmark flags (besides Google Benchmark's):\n"
            "  --scene=FILE            scene file (default params/default.prm)\n"
+           "  --set=\"Sub/Entry=v\"     override a scene parameter "
+           "(repeatable)\n"
            "  --refinements=0.5,1,2   divide Mesh/Corner size and Mesh/Far "
            "size by each\n"
            "  --laws=compliant,rigid  joint laws of the whole contact solve\n"

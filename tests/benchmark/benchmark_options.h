@@ -10,6 +10,8 @@ namespace FloorBlock::Benchmark
   {
     /** Scene read with the project's parameter reader. */
     std::string scene_path;
+    /** "Subsection/Entry=value" overrides applied to the scene. */
+    std::vector<std::string> overrides;
     /** Mesh/Corner size and Mesh/Far size are divided by each of these. */
     std::vector<double> refinements = {0.5, 1., 2., 4., 8.};
     /** Joint laws of the whole contact solve. */
@@ -26,8 +28,8 @@ namespace FloorBlock::Benchmark
   };
 
   /**
-   * @brief Takes --scene=, --refinements=, --laws=, --hertz_levels= and
-   * --level_time_limit= out of argv (the rest stays for Google Benchmark).
+   * @brief Takes --scene=, --set= (repeatable), --refinements=, --laws=,
+   * --hertz_levels= and --level_time_limit= out of argv (the rest stays for Google Benchmark).
    * @throws InputError naming the flag and the bad value.
    */
   BenchmarkOptions

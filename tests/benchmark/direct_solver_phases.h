@@ -24,4 +24,16 @@ namespace FloorBlock::Benchmark
   amesos_phase_times(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                      const dealii::TrilinosWrappers::MPI::Vector  &rhs,
                      const std::string                            &package);
+
+  /**
+   * @brief The same phases with SuiteSparse UMFPACK called directly (the
+   * Amesos_Umfpack wrapper fails in the Debian 12 Trilinos build, see
+   * src/solver/linear_solver.h): a multifrontal LU whose dense frontal
+   * matrices go through BLAS, unlike KLU, which never calls BLAS. Measures
+   * what a different direct solver would cost on the contact solver's
+   * matrix. Serial matrices only (one rank).
+   */
+  std::map<std::string, double>
+  umfpack_phase_times(const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                      const dealii::TrilinosWrappers::MPI::Vector  &rhs);
 } // namespace FloorBlock::Benchmark

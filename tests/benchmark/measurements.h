@@ -58,7 +58,8 @@ namespace FloorBlock::Benchmark
     unsigned int n_contact_pairs = 0;
     bool         direct_solver   = true;
     std::map<std::string, StageTime>          stages;   ///< by stage name
-    std::map<std::string, double>             klu_phases; ///< wall, s
+    /** CPU time (s) per phase, per direct solver ("KLU", "UMFPACK"). */
+    std::map<std::string, std::map<std::string, double>> direct_phases;
     std::map<std::string, ContactSolveRecord> solves;   ///< by joint law
   };
 

@@ -27,17 +27,20 @@ namespace FloorBlock::Benchmark
   } // namespace
 
   Parameters::ScenarioParameters
-  refined_parameters(const std::string &scene_path,
-                     const double       refinement,
-                     const std::string &joint_law)
+  refined_parameters(const std::string              &scene_path,
+                     const std::vector<std::string> &overrides,
+                     const double                    refinement,
+                     const std::string              &joint_law)
   {
     const Parameters::ScenarioParameters base =
-      Parameters::read_scenario(scene_path, {});
-    return Parameters::read_scenario(
-      scene_path,
-      {assignment("Mesh/Corner size", base.mesh.corner_size / refinement),
-       assignment("Mesh/Far size", base.mesh.far_size / refinement),
-       "Joints/Law=" + joint_law});
+      Parameters::read_scenario(scene_path, overrides);
+    std::vector<std::string> refined = overrides;
+    refined.push_back(
+      assignment("Mesh/Corner size", base.mesh.corner_size / refinement));
+    refined.push_back(
+      assignment("Mesh/Far size", base.mesh.far_size / refinement));
+    refined.push_back("Joints/Law=" + joint_law);
+    return Parameters::read_scenario(scene_path, refined);
   }
 
   Geometry::MeshStatistics
@@ -112,6 +115,24 @@ namespace FloorBlock::Benchmark
     targets.cache    = cache;
     Fem::assemble_elastic_system(
       space, scene.model, solution, constraints, targets);
+  }
+
+  void
+  LinearElasticSystem::reuse_bulk()
+  {
+    if (stored_bulk.m() == 0)
+      {
+        dealii::TrilinosWrappers::MPI::Vector current(solution);
+        solution = 0.;
+        assemble_bulk(&warm_cache);
+        stored_bulk.reinit(matrix);
+        stored_bulk.copy_from(matrix);
+        bulk_residual_at_zero = residual;
+        solution              = current;
+      }
+    matrix.copy_from(stored_bulk);
+    stored_bulk.vmult(residual, solution);
+    residual += bulk_residual_at_zero;
   }
 
   void

@@ -21,14 +21,16 @@
 namespace FloorBlock::Benchmark
 {
   /**
-   * @brief A scene read with the project's parameter reader, its Mesh/Corner
+   * @brief A scene read with the project's parameter reader and
+   * @p overrides ("Subsection/Entry=value"), its Mesh/Corner
    * size and Mesh/Far size divided by @p refinement and its Joints/Law set
    * to @p joint_law ("compliant" or "rigid").
    */
   Parameters::ScenarioParameters
-  refined_parameters(const std::string &scene_path,
-                     const double       refinement,
-                     const std::string &joint_law);
+  refined_parameters(const std::string              &scene_path,
+                     const std::vector<std::string> &overrides,
+                     const double                    refinement,
+                     const std::string              &joint_law);
 
   /**
    * @brief Meshes @p scene with Gmsh into @p msh_path and reads it back,
@@ -62,6 +64,16 @@ namespace FloorBlock::Benchmark
     /** @brief Bulk assembly of matrix and residual; @p cache may be null. */
     void
     assemble_bulk(Fem::CellMatrixCache *cache);
+
+    /**
+     * @brief What reusing the assembled bulk would cost instead of
+     * assemble_bulk(): the elastic stiffness is constant, so a Newton
+     * iteration could copy a stored bulk matrix (same sparsity: values
+     * only) and get the bulk residual \f$K u - f\f$ from one product.
+     * The first call stores the bulk; only later calls are representative.
+     */
+    void
+    reuse_bulk();
 
     /** @brief Joint law evaluation and assembly of the pair terms. */
     void
@@ -104,6 +116,8 @@ namespace FloorBlock::Benchmark
     Fem::CellMatrixCache                  warm_cache;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
+    dealii::TrilinosWrappers::SparseMatrix    stored_bulk;
+    dealii::TrilinosWrappers::MPI::Vector     bulk_residual_at_zero;
     dealii::TrilinosWrappers::MPI::Vector     solution;
     dealii::TrilinosWrappers::MPI::Vector     residual;
     dealii::TrilinosWrappers::MPI::Vector     update;

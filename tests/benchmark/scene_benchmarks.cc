@@ -1,6 +1,6 @@
 #include "scene_benchmarks.h"
 
-#include "amesos_phases.h"
+#include "direct_solver_phases.h"
 #include "measurements.h"
 #include "refined_scene.h"
 
@@ -65,7 +65,8 @@ namespace FloorBlock::Benchmark
           current             = std::make_unique<LevelFixture>();
           current->refinement = refinement;
           current->scene =
-            refined_parameters(options.scene_path, refinement, "compliant");
+            refined_parameters(options.scene_path, options.overrides,
+                               refinement, "compliant");
           mesh_scene(current->scene,
                      msh_path(options, refinement),
                      current->triangulation);
@@ -123,7 +124,8 @@ namespace FloorBlock::Benchmark
                    const double            refinement)
     {
       const auto scene =
-        refined_parameters(options.scene_path, refinement, "compliant");
+        refined_parameters(options.scene_path, options.overrides,
+                           refinement, "compliant");
       dealii::Triangulation<2> triangulation;
       time_stage(state, refinement, "mesh", [&]() {
         mesh_scene(scene, msh_path(options, refinement), triangulation);
@@ -154,6 +156,19 @@ namespace FloorBlock::Benchmark
     }
 
     void
+    bulk_reuse_benchmark(benchmark::State       &state,
+                         const BenchmarkOptions &options,
+                         const double            refinement)
+    {
+      LinearElasticSystem &system = linear_system(options, refinement);
+      system.reuse_bulk();
+      time_stage(state, refinement, "bulk_reuse", [&]() {
+        system.reuse_bulk();
+        return true;
+      });
+    }
+
+    void
     linear_solve_benchmark(benchmark::State       &state,
                            const BenchmarkOptions &options,
                            const double            refinement)
@@ -166,26 +181,29 @@ namespace FloorBlock::Benchmark
       });
     }
 
+    /** @p direct_solver: "KLU" (the contact solver's) or "UMFPACK". */
     void
-    klu_phase_benchmark(benchmark::State       &state,
-                        const BenchmarkOptions &options,
-                        const double            refinement)
+    direct_phase_benchmark(benchmark::State       &state,
+                           const BenchmarkOptions &options,
+                           const double            refinement,
+                           const std::string      &direct_solver)
     {
       LinearElasticSystem &system = linear_system(options, refinement);
-      if (!system.uses_direct_solver())
-        {
-          state.SkipWithError("this level uses the iterative solver");
-          return;
-        }
       system.assemble_bulk(nullptr);
       system.assemble_joints();
       const auto package =
         Scene::contact_solver_settings(fixture(options, refinement).scene, "")
           .linear.direct_package;
+      auto &phases =
+        level_record(refinement).direct_phases[direct_solver];
       for (auto _ : state)
-        level_record(refinement).klu_phases = amesos_phase_times(
-          system.system_matrix(), system.system_residual(), package);
-      for (const auto &[phase, seconds] : level_record(refinement).klu_phases)
+        phases = direct_solver == "KLU" ?
+                   amesos_phase_times(system.system_matrix(),
+                                      system.system_residual(),
+                                      package) :
+                   umfpack_phase_times(system.system_matrix(),
+                                       system.system_residual());
+      for (const auto &[phase, seconds] : phases)
         state.counters[phase + "_ms"] = 1e3 * seconds;
     }
 
@@ -260,7 +278,8 @@ namespace FloorBlock::Benchmark
           return;
         }
       const LevelFixture &level = fixture(options, refinement);
-      const auto scene = refined_parameters(options.scene_path, refinement, law);
+      const auto scene = refined_parameters(
+        options.scene_path, options.overrides, refinement, law);
       ContactSolveRecord record;
       for (auto _ : state)
         {
@@ -353,11 +372,17 @@ namespace FloorBlock::Benchmark
         add("assembly_warm", [=](benchmark::State &state) {
           assembly_benchmark(state, options, r, true);
         });
+        add("bulk_reuse", [=](benchmark::State &state) {
+          bulk_reuse_benchmark(state, options, r);
+        });
         add("linear_solve", [=](benchmark::State &state) {
           linear_solve_benchmark(state, options, r);
         });
         add("klu_phases", [=](benchmark::State &state) {
-          klu_phase_benchmark(state, options, r);
+          direct_phase_benchmark(state, options, r, "KLU");
+        })->Iterations(1);
+        add("umfpack_phases", [=](benchmark::State &state) {
+          direct_phase_benchmark(state, options, r, "UMFPACK");
         })->Iterations(1);
         add("newton_iteration", [=](benchmark::State &state) {
           newton_iteration_benchmark(state, options, r);

@@ -32,7 +32,7 @@ namespace FloorBlock::Benchmark
 
   /**
    * @brief Markdown tables of everything in @p all: per level the stage
-   * times, KLU phases, whole contact solves with their TimerOutput sections
+   * times, direct-solver phases, whole contact solves with their TimerOutput sections
    * and whole/linear cost ratio, the fitted exponents, the face-joint
    * contact length against the finest level, and the Hertz runs.
    */
