@@ -68,114 +68,113 @@ namespace
     return table;
   }
 
-
   double
   value_of(const Row &row, const std::string &column)
   {
     return std::stod(row.at(column));
   }
 
-// The tool shall record every level of both ladders with its mesh, cost,
-// quantities of interest and error estimate, units in the column names.
-void
-check_every_level_and_column(const std::string &output)
-{
-  for (const char *name : {"convergence.csv", "convergence.json",
-                           "error_vs_wall_time.png", "summary.json",
-                           "uniform/level_2/fem.json",
-                           "adaptive/level_2/mesh.msh"})
-    EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
+  // The tool shall record every level of both ladders with its mesh, cost,
+  // quantities of interest and error estimate, units in the column names.
+  void
+  check_every_level_and_column(const std::string &output)
+  {
+    for (const char *name : {"convergence.csv", "convergence.json",
+                             "error_vs_wall_time.png", "summary.json",
+                             "uniform/level_2/fem.json",
+                             "adaptive/level_2/mesh.msh"})
+      EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
 
-  const Table table = read_csv(output + "/convergence.csv");
-  for (const char *column :
-       {"mode", "level", "status", "converged", "n_cells", "n_dofs",
-        "n_increments", "newton_iterations", "force_balance_relative_error",
-        "wall_time_mesh_s", "wall_time_assemble_s", "wall_time_linear_solve_s",
-        "wall_time_s", "cost_wall_time_s", "Q_1_N_per_m", "Q_2_N_per_m",
-        "Q_face_N_per_m", "Q_face_error_N_per_m", "Q_face_relative_error",
-        "Q_face_error_method", "contact_length_face_m",
-        "contact_length_face_error_m", "sigma_max_face_Pa",
-        "sigma_max_averaged_face_Pa", "sigma_max_averaged_face_error_Pa",
-        "status_text"})
-    EXPECT_NE(std::find(table.columns.begin(), table.columns.end(), column),
-              table.columns.end())
-      << column;
+    const Table table = read_csv(output + "/convergence.csv");
+    for (const char *column :
+         {"mode", "level", "status", "converged", "n_cells", "n_dofs",
+          "n_increments", "newton_iterations", "force_balance_relative_error",
+          "wall_time_mesh_s", "wall_time_assemble_s", "wall_time_linear_solve_s",
+          "wall_time_s", "cost_wall_time_s", "Q_1_N_per_m", "Q_2_N_per_m",
+          "Q_face_N_per_m", "Q_face_error_N_per_m", "Q_face_relative_error",
+          "Q_face_error_method", "contact_length_face_m",
+          "contact_length_face_error_m", "sigma_max_face_Pa",
+          "sigma_max_averaged_face_Pa", "sigma_max_averaged_face_error_Pa",
+          "status_text"})
+      EXPECT_NE(std::find(table.columns.begin(), table.columns.end(), column),
+                table.columns.end())
+        << column;
 
-  ASSERT_EQ(table.rows.size(), 6u);
-  const std::vector<std::string> modes = {"uniform", "uniform", "uniform",
-                                          "adaptive", "adaptive", "adaptive"};
-  for (std::size_t k = 0; k < table.rows.size(); ++k)
-    {
-      const Row &row = table.rows[k];
-      EXPECT_EQ(row.at("mode"), modes[k]);
-      EXPECT_EQ(row.at("level"), std::to_string(k % 3));
-      EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
-      for (const auto &[column, value] : row)
-        EXPECT_TRUE(value.find("nan") == std::string::npos &&
-                    value.find("inf") == std::string::npos)
-          << column << " = " << value;
-    }
-  // Both ladders start from the same mesh.
-  EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[3].at("n_dofs"));
-}
-
-// The tool shall refine: uniform levels multiply the DoFs (each halves the
-// whole size function, so about x4 in 2D; the coarsest meshes are held up by
-// the minimum cell counts, hence the bound 2), adaptive levels add some.
-void
-check_levels_refine(const std::string &output)
-{
-  const Table table = read_csv(output + "/convergence.csv");
-  ASSERT_EQ(table.rows.size(), 6u);
-  for (std::size_t k : {1u, 2u})
-    EXPECT_GT(value_of(table.rows[k], "n_dofs"),
-              2. * value_of(table.rows[k - 1], "n_dofs"));
-  for (std::size_t k : {4u, 5u})
-    EXPECT_GT(value_of(table.rows[k], "n_dofs"),
-              value_of(table.rows[k - 1], "n_dofs"));
-}
-
-// The tool shall converge in the joint force Q at the face. Q is a
-// resultant of the joint tractions, and the contact README's refinement
-// study measured changes of at most 0.1 % per halving for corner sizes up to
-// 0.04 m (6-block scene); this ladder's finest step goes from 0.05 to
-// 0.025 m, so 0.25 % leaves room for the coarser start without hiding a
-// method that fails to converge (the first halving changes Q by about
-// 0.5 %, and the finest change must also be smaller than that one).
-void
-check_face_force_converges(const std::string &output)
-{
-  const Table table = read_csv(output + "/convergence.csv");
-  ASSERT_EQ(table.rows.size(), 6u);
-  const auto q = [&](const std::size_t k) {
-    return value_of(table.rows[k], "Q_face_N_per_m");
-  };
-  constexpr double tolerance = 2.5e-3;
-  EXPECT_LT(std::abs(q(2) - q(1)), tolerance * std::abs(q(2)));
-  EXPECT_LT(std::abs(q(2) - q(1)), std::abs(q(1) - q(0)));
-  // The adaptive ladder ends at the same Q.
-  EXPECT_LT(std::abs(q(5) - q(2)), tolerance * std::abs(q(2)));
-}
-
-// The tool shall state for every quantity how its error was estimated.
-void
-check_methods_and_orders(const std::string &output)
-{
-  std::ifstream in(output + "/convergence.json");
-  const json    report = json::parse(in);
-  for (const char *mode : {"uniform", "adaptive"})
-    for (const auto &[name, estimate] :
-         report["modes"][mode]["quantities"].items())
+    ASSERT_EQ(table.rows.size(), 6u);
+    const std::vector<std::string> modes = {"uniform", "uniform", "uniform",
+                                            "adaptive", "adaptive", "adaptive"};
+    for (std::size_t k = 0; k < table.rows.size(); ++k)
       {
-        const std::string method = estimate["method"];
-        EXPECT_TRUE(method == "richardson" || method == "finest_difference")
-          << mode << " " << name << ": " << method;
-        EXPECT_FALSE(estimate["reason"].get<std::string>().empty());
-        EXPECT_EQ(estimate["observed_orders"].size(), 3u);
+        const Row &row = table.rows[k];
+        EXPECT_EQ(row.at("mode"), modes[k]);
+        EXPECT_EQ(row.at("level"), std::to_string(k % 3));
+        EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
+        for (const auto &[column, value] : row)
+          EXPECT_TRUE(value.find("nan") == std::string::npos &&
+                      value.find("inf") == std::string::npos)
+            << column << " = " << value;
       }
-  EXPECT_EQ(report["equal_error_comparison"].size(), 6u); // Q_1, Q_2, Q_face + 3
-  EXPECT_TRUE(report.contains("adaptive_target"));
-}
+    // Both ladders start from the same mesh.
+    EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[3].at("n_dofs"));
+  }
+
+  // The tool shall refine: uniform levels multiply the DoFs (each halves the
+  // whole size function, so about x4 in 2D; the coarsest meshes are held up by
+  // the minimum cell counts, hence the bound 2), adaptive levels add some.
+  void
+  check_levels_refine(const std::string &output)
+  {
+    const Table table = read_csv(output + "/convergence.csv");
+    ASSERT_EQ(table.rows.size(), 6u);
+    for (std::size_t k : {1u, 2u})
+      EXPECT_GT(value_of(table.rows[k], "n_dofs"),
+                2. * value_of(table.rows[k - 1], "n_dofs"));
+    for (std::size_t k : {4u, 5u})
+      EXPECT_GT(value_of(table.rows[k], "n_dofs"),
+                value_of(table.rows[k - 1], "n_dofs"));
+  }
+
+  // The tool shall converge in the joint force Q at the face. Q is a
+  // resultant of the joint tractions, and the contact README's refinement
+  // study measured changes of at most 0.1 % per halving for corner sizes up to
+  // 0.04 m (6-block scene); this ladder's finest step goes from 0.05 to
+  // 0.025 m, so 0.25 % leaves room for the coarser start without hiding a
+  // method that fails to converge (the first halving changes Q by about
+  // 0.5 %, and the finest change must also be smaller than that one).
+  void
+  check_face_force_converges(const std::string &output)
+  {
+    const Table table = read_csv(output + "/convergence.csv");
+    ASSERT_EQ(table.rows.size(), 6u);
+    const auto q = [&](const std::size_t k) {
+      return value_of(table.rows[k], "Q_face_N_per_m");
+    };
+    constexpr double tolerance = 2.5e-3;
+    EXPECT_LT(std::abs(q(2) - q(1)), tolerance * std::abs(q(2)));
+    EXPECT_LT(std::abs(q(2) - q(1)), std::abs(q(1) - q(0)));
+    // The adaptive ladder ends at the same Q.
+    EXPECT_LT(std::abs(q(5) - q(2)), tolerance * std::abs(q(2)));
+  }
+
+  // The tool shall state for every quantity how its error was estimated.
+  void
+  check_methods_and_orders(const std::string &output)
+  {
+    std::ifstream in(output + "/convergence.json");
+    const json    report = json::parse(in);
+    for (const char *mode : {"uniform", "adaptive"})
+      for (const auto &[name, estimate] :
+           report["modes"][mode]["quantities"].items())
+        {
+          const std::string method = estimate["method"];
+          EXPECT_TRUE(method == "richardson" || method == "finest_difference")
+            << mode << " " << name << ": " << method;
+          EXPECT_FALSE(estimate["reason"].get<std::string>().empty());
+          EXPECT_EQ(estimate["observed_orders"].size(), 3u);
+        }
+    EXPECT_EQ(report["equal_error_comparison"].size(), 6u); // Q_1, Q_2, Q_face + 3
+    EXPECT_TRUE(report.contains("adaptive_target"));
+  }
 
 } // namespace
 
