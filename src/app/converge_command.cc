@@ -4,6 +4,7 @@
 #include <output/convergence_report.h>
 #include <output/gnuplot.h>
 #include <output/result_folder.h>
+#include <scene/rigid_inputs.h>
 
 #include <deal.II/base/timer.h>
 
@@ -154,6 +155,11 @@ namespace FloorBlock::App
     dealii::Timer timer;
     check_options(options);
     const auto scene = read_scene(options);
+    // The ladder refines the elastic FEM's mesh; rigid blocks have none, and
+    // every level would repeat the same rigid answer.
+    if (Scene::uses_rigid_blocks(scene))
+      throw InputError("Model/Blocks", "rigid (or auto choosing rigid)",
+                       "converge needs the elastic FEM: Model/Blocks = elastic");
     const Output::ResultFolder folder(convergence_folder(options, scene));
     folder.mark_unfinished();
     folder.write_inputs(scene);
