@@ -94,7 +94,8 @@ main(int argc, char **argv)
      {"Mesh and solve the scene with the frictional contact FEM",
       App::solve_command}},
     {"verify",
-     {"Run a verification case against its closed form (hertz)",
+     {"Run a verification case against its closed form "
+      "(hertz, patch, incline, two-blocks)",
       App::verify_command}},
     {"run", {"The main job: mesh, solve, compare", App::run_command}},
     {"converge",
@@ -108,7 +109,7 @@ main(int argc, char **argv)
   CLI::App *verify = cli.get_subcommand("verify");
   verify->remove_option(verify->get_option("scene"));
   verify->add_option("case", options.verification_case,
-                     "Verification case: hertz")
+                     "Verification case: hertz, patch, incline, two-blocks")
     ->required();
   cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
                                        "Print the material/boundary id scheme");

@@ -1,4 +1,4 @@
-#include "block_mesh.h"
+#include <contact/block_assembly_mesh.h>
 
 #include <deal.II/grid/tria_description.h>
 
@@ -6,7 +6,7 @@
 
 namespace FloorBlock
 {
-  namespace Testing
+  namespace Contact
   {
     void
     make_block_assembly(const std::vector<BlockSpec> &blocks,
@@ -60,5 +60,5 @@ namespace FloorBlock
               }
           }
     }
-  } // namespace Testing
+  } // namespace Contact
 } // namespace FloorBlock

@@ -188,6 +188,10 @@ namespace FloorBlock::Parameters
     double       hertz_youngs_modulus; ///< E of the cylinder (Pa)
     double       hertz_poissons_ratio; ///< nu of the cylinder
     unsigned int hertz_mesh_level;     ///< local refinements at the contact
+    double       patch_pressure;       ///< patch test pressure (Pa)
+    double       incline_margin;       ///< |tan(alpha)/mu - 1| either side
+    double       two_blocks_lateral_pressure; ///< Pa
+    unsigned int two_blocks_cells_per_metre;  ///< structured mesh density
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

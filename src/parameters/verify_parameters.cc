@@ -24,6 +24,28 @@ namespace FloorBlock::Parameters
                       "Local refinements towards the contact point; each "
                       "halves the cell size there. Units: none.");
     prm.leave_subsection();
+    prm.enter_subsection("Patch");
+    prm.declare_entry("Pressure", "2e6", Double(1, 1e9),
+                      "Pressure on the top of two unit squares pressed "
+                      "together over a flat joint (uses Joints/Law). "
+                      "Units: Pa.");
+    prm.leave_subsection();
+    prm.enter_subsection("Incline");
+    prm.declare_entry("Threshold margin", "0.1", Double(0.01, 0.9),
+                      "The block is solved twice, at tan(alpha) = (1 - m) "
+                      "tan(phi) (must stick) and (1 + m) tan(phi) (must "
+                      "slip); phi = Joints/Bedding friction angle. "
+                      "Units: none (relative to tan(phi)).");
+    prm.leave_subsection();
+    prm.enter_subsection("Two blocks");
+    prm.declare_entry("Lateral pressure", "4e5", Double(1, 1e8),
+                      "Pressure on the upper quarter of the free block's "
+                      "outer side, pushing it against the fixed block. "
+                      "Units: Pa.");
+    prm.declare_entry("Cells per metre", "4", Integer(2, 32),
+                      "Cells per metre of the structured block meshes. "
+                      "Units: 1/m.");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -37,6 +59,16 @@ namespace FloorBlock::Parameters
     hertz_youngs_modulus = prm.get_double("Young's modulus");
     hertz_poissons_ratio = prm.get_double("Poisson's ratio");
     hertz_mesh_level     = prm.get_integer("Mesh level");
+    prm.leave_subsection();
+    prm.enter_subsection("Patch");
+    patch_pressure = prm.get_double("Pressure");
+    prm.leave_subsection();
+    prm.enter_subsection("Incline");
+    incline_margin = prm.get_double("Threshold margin");
+    prm.leave_subsection();
+    prm.enter_subsection("Two blocks");
+    two_blocks_lateral_pressure = prm.get_double("Lateral pressure");
+    two_blocks_cells_per_metre  = prm.get_integer("Cells per metre");
     prm.leave_subsection();
     prm.leave_subsection();
   }

@@ -1,33 +1,14 @@
 #pragma once
 
-#include <deal.II/base/types.h>
-#include <deal.II/grid/tria.h>
-
-#include <vector>
+// The block-assembly mesher lives in the contact library, where the
+// verification cases share it; tests keep their Testing:: names.
+#include <contact/block_assembly_mesh.h>
 
 namespace FloorBlock
 {
   namespace Testing
   {
-    /** A structured rectangular body for test meshes. */
-    struct BlockSpec
-    {
-      double x_min, x_max, y_min, y_max;
-      unsigned int n_x, n_y;
-      dealii::types::material_id material;
-      dealii::types::boundary_id left, right, bottom, top;
-      /** Faces of the right side above split_y get right_upper instead. */
-      double                     split_y     = 1e300;
-      dealii::types::boundary_id right_upper = 0;
-    };
-
-    /**
-     * @brief Builds several bodies into one triangulation without merging
-     * their coincident vertices (each body has its own vertices), so joints
-     * carry duplicated nodes as in the Gmsh block assembly.
-     */
-    void
-    make_block_assembly(const std::vector<BlockSpec> &blocks,
-                        dealii::Triangulation<2>     &triangulation);
+    using Contact::BlockSpec;
+    using Contact::make_block_assembly;
   } // namespace Testing
 } // namespace FloorBlock
