@@ -11,12 +11,6 @@ using namespace FloorBlockTest;
 
 namespace
 {
-  nlohmann::json
-  read_json(const std::string &path)
-  {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-  }
 
   nlohmann::json
   analytic_for(const std::string &name, const std::string &overrides)

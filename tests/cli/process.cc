@@ -21,6 +21,12 @@ namespace FloorBlockTest
     return text.str();
   }
 
+  nlohmann::json
+  read_json(const std::string &path)
+  {
+    return nlohmann::json::parse(read_text(path));
+  }
+
   bool
   has_non_finite_value(const std::string &text)
   {

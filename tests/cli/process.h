@@ -1,5 +1,7 @@
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 
 namespace FloorBlockTest
@@ -32,6 +34,10 @@ namespace FloorBlockTest
   /** @brief A fresh, not yet existing folder under the system temp folder. */
   std::string
   fresh_output_folder(const std::string &name);
+
+  /** @brief A JSON file parsed (throws if it is missing or malformed). */
+  nlohmann::json
+  read_json(const std::string &path);
 
   /** @brief The whole text of a file ("" if it cannot be read). */
   std::string

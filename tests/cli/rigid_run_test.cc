@@ -19,12 +19,6 @@ using nlohmann::json;
 
 namespace
 {
-  json
-  read_json(const std::string &path)
-  {
-    std::ifstream in(path);
-    return json::parse(in);
-  }
 
   /// normal_force_N_per_m of every vertical joint, by name, from fem.json.
   std::map<std::string, double>

@@ -13,12 +13,6 @@ using nlohmann::json;
 
 namespace
 {
-  json
-  read_json(const std::string &path)
-  {
-    std::ifstream in(path);
-    return json::parse(in);
-  }
 
   /// Runs the 3-block scene once for all tests of this file.
   const std::string &
