@@ -65,6 +65,9 @@ main(int argc, char **argv)
   benchmark::Shutdown();
   std::filesystem::remove_all(options.work_directory);
 
+  // Nothing ran (--benchmark_list_tests, or a filter that matched nothing).
+  if (records().levels.empty() && records().hertz.empty())
+    return FloorBlock::exit_code::success;
   context.load_after = load_average();
   std::cout << "\n" << summary_markdown(records(), context);
   return FloorBlock::exit_code::success;
