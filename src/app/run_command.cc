@@ -2,6 +2,7 @@
 #include <app/error_estimate.h>
 #include <app/fem_pipeline.h>
 #include <compare/joint_comparison.h>
+#include <output/figure_summary.h>
 #include <output/analytic_report.h>
 #include <output/comparison_report.h>
 #include <output/gnuplot.h>
@@ -122,7 +123,18 @@ namespace FloorBlock::App
         solve_scene(refined_scene(scene),
                     Output::ResultFolder(folder.path_of("refined"))));
     if (!outcome.result.increments.empty())
-      compare_and_report(outcome, closed_forms, scene, folder, summary);
+      {
+        summary["face_joint_figures"] = Output::face_joint_figures(
+          outcome.fem,
+          summary.contains("fem_error_estimate") ?
+            summary["fem_error_estimate"] :
+            json(),
+          scene.geometry.n_blocks);
+        std::cout << "face joint: each figure with its estimated error and "
+                     "the time of the solve that gave it\n"
+                  << Output::figure_lines(summary["face_joint_figures"]);
+        compare_and_report(outcome, closed_forms, scene, folder, summary);
+      }
 
     // Written last: its presence marks a finished run.
     summary["status"]      = outcome.fem["status"];

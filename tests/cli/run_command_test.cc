@@ -81,6 +81,31 @@ TEST(RunCommand, SummaryHasDocumentedKeys)
 
 // The tool shall compare numbers that anyone can recompute from fem.json
 // and analytic.json (to 1e-12 relative: the same doubles, re-derived).
+// Every FEM figure at the face joint carries its error estimate (or says
+// why there is none) and the time of the solve, next to its value.
+TEST(RunCommand, FaceJointFiguresCarryErrorAndTime)
+{
+  const std::string &output  = three_block_run();
+  const json         fem     = read_json(output + "/fem.json");
+  const json         summary = read_json(output + "/summary.json");
+  json face;
+  for (const auto &joint : fem["joints"])
+    if (joint["name"] == "vertical 3")
+      face = joint;
+  const auto &figures = summary["face_joint_figures"];
+  ASSERT_EQ(figures.size(), 4u);
+  for (const auto &figure : figures)
+    {
+      const std::string field = figure["field"].get<std::string>();
+      EXPECT_DOUBLE_EQ(figure["value"].get<double>(), face[field].get<double>());
+      EXPECT_GT(figure["wall_time_s"].get<double>(), 0.);
+      // The scene asks for no estimate: the error is null and says why.
+      EXPECT_TRUE(figure["relative_error"].is_null());
+      EXPECT_NE(figure["error_method"].get<std::string>().find("none"),
+                std::string::npos);
+    }
+}
+
 TEST(RunCommand, ComparisonEqualsRecomputedValues)
 {
   const std::string &output   = three_block_run();

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace FloorBlock::Output
+{
+  /**
+   * @brief The face joint's FEM figures, each with its estimated relative
+   * discretisation error and the time it cost: what a user reads as
+   * "sigma_max = 15.7 MPa +- 0.1 % in 4.2 s".
+   *
+   * @param[in] fem fem.json content (joints, wall_time_s per section).
+   * @param[in] error_estimate summary.json's fem_error_estimate (may be
+   *   null or "unavailable": the errors are then null with that status).
+   * @param[in] n_blocks Face joint = "vertical n".
+   * @return [{"quantity", "value", "unit", "relative_error",
+   *   "error_method", "wall_time_s"}]; wall_time_s is the FEM solve's, the
+   *   same for every figure of one solve (they come out together).
+   */
+  nlohmann::json
+  face_joint_figures(const nlohmann::json &fem,
+                     const nlohmann::json &error_estimate,
+                     const unsigned int    n_blocks);
+
+  /** @brief One line per figure for the terminal and report.md. */
+  std::string
+  figure_lines(const nlohmann::json &figures);
+} // namespace FloorBlock::Output
