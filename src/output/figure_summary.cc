@@ -66,6 +66,8 @@ namespace FloorBlock::Output
            {"value", joint[figure.key]},
            {"unit", figure.unit},
            {"relative_error", error},
+           // A null error always comes with a status that says why.
+           {"status", error.is_number() ? "estimated" : "error not estimated"},
            {"error_method",
             estimated ? error_estimate["method"] :
                         json("none: no error estimate was made or it failed")},

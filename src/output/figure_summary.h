@@ -15,8 +15,9 @@ namespace FloorBlock::Output
    * @param[in] error_estimate summary.json's fem_error_estimate (may be
    *   null or "unavailable": the errors are then null with that status).
    * @param[in] n_blocks Face joint = "vertical n".
-   * @return [{"quantity", "value", "unit", "relative_error",
-   *   "error_method", "wall_time_s"}]; wall_time_s is the FEM solve's, the
+   * @return [{"quantity", "field", "value", "unit", "relative_error",
+   *   "status" ("estimated" or "error not estimated"), "error_method",
+   *   "wall_time_s"}]; wall_time_s is the FEM solve's, the
    *   same for every figure of one solve (they come out together).
    */
   nlohmann::json
