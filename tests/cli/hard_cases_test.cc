@@ -35,8 +35,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <regex>
-#include <sstream>
 #include <vector>
 
 using namespace FloorBlockTest;
@@ -46,15 +44,6 @@ namespace
 {
   /** Relative tolerance of balances and exact identities (see the top). */
   constexpr double balance_tolerance = 1e-8;
-
-  std::string
-  text_of(const std::string &path)
-  {
-    std::ifstream      in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
 
   double
   tan_degrees(const double angle)
@@ -134,12 +123,6 @@ namespace
     return outcome;
   }
 
-  json
-  json_of(const std::string &path)
-  {
-    return json::parse(text_of(path));
-  }
-
   /** Nulls in summary.json only in an object whose status says why. */
   void
   expect_nulls_only_with_a_status(const json &value, const std::string &path)
@@ -172,16 +155,14 @@ namespace
   void
   expect_finite_outputs(const std::string &folder)
   {
-    const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)([^A-Za-z]|$)",
-                                std::regex::icase);
     for (const std::string name : {"summary.json", "fem.json", "joints.csv"})
       if (std::filesystem::exists(folder + "/" + name))
-        EXPECT_FALSE(std::regex_search(text_of(folder + "/" + name), non_finite))
+        EXPECT_FALSE(has_non_finite_value(read_text(folder + "/" + name)))
           << name;
     ASSERT_TRUE(std::filesystem::exists(folder + "/fem.json"));
-    EXPECT_EQ(text_of(folder + "/fem.json").find("null"), std::string::npos);
+    EXPECT_EQ(read_text(folder + "/fem.json").find("null"), std::string::npos);
     if (std::filesystem::exists(folder + "/summary.json"))
-      expect_nulls_only_with_a_status(json_of(folder + "/summary.json"), "");
+      expect_nulls_only_with_a_status(read_json(folder + "/summary.json"), "");
   }
 
   std::map<std::string, json>
@@ -269,7 +250,7 @@ namespace
                                           const SceneNumbers &scene)
   {
     expect_finite_outputs(outcome.folder);
-    const json fem = json_of(outcome.folder + "/fem.json");
+    const json fem = read_json(outcome.folder + "/fem.json");
     if (outcome.process.exit_code == 0)
       {
         expect_physical_answer(fem, scene);
@@ -310,6 +291,28 @@ namespace
       }
     return rows;
   }
+  /** A case that must converge: its folder and fem.json. */
+  struct ConvergedCase
+  {
+    std::string folder;
+    json        fem;
+  };
+
+  /**
+   * Solves a case that must converge and checks what every converged case
+   * must satisfy: exit code 0, finite outputs, the physical checks above.
+   */
+  ConvergedCase
+  solve_converging_case(const std::string &name, const SceneNumbers &scene)
+  {
+    const CaseOutcome outcome = run_case("solve", name);
+    EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
+    expect_finite_outputs(outcome.folder);
+    ConvergedCase result{outcome.folder,
+                         read_json(outcome.folder + "/fem.json")};
+    expect_physical_answer(result.fem, scene);
+    return result;
+  }
 } // namespace
 
 // The tool shall stay finite and in balance as friction nears self-locking.
@@ -321,21 +324,15 @@ TEST(HardCases, FrictionNearSelfLocking)
   // 1 - tan(35) tan(45) = 0.30: the all-slip chain multiplies each block's
   // friction by 1/0.30.
   EXPECT_NEAR(1. - tan_degrees(35.) * tan_degrees(45.), 0.30, 0.01);
-  const CaseOutcome outcome = run_case("solve", "self_locking");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  expect_physical_answer(json_of(outcome.folder + "/fem.json"), scene);
+  solve_converging_case("self_locking", scene);
 }
 
 // The tool shall give the support-stage forces back when the floor barely
 // lifts.
 TEST(HardCases, TinyFloorLiftKeepsTheSupportStageForces)
 {
-  const CaseOutcome outcome = run_case("solve", "small_lift");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, SceneNumbers{});
+  const ConvergedCase outcome = solve_converging_case("small_lift", SceneNumbers{});
+  const json &fem = outcome.fem;
 
   // No joint changes state during the uplift (same counts in every uplift
   // increment as at the end of the support stage), so the response to the
@@ -382,11 +379,8 @@ TEST(HardCases, TinyFloorLiftKeepsTheSupportStageForces)
 TEST(HardCases, LargeFloorLift)
 {
   SceneNumbers      scene;
-  const CaseOutcome outcome = run_case("solve", "large_lift");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, scene);
+  const ConvergedCase outcome = solve_converging_case("large_lift", scene);
+  const json &fem = outcome.fem;
   // At 4.4 times the scene's lift friction is mobilised almost everywhere:
   // measured 98.8 % of the all-slip value at the face (the scene's own lift:
   // 98.2 %; 1e-6 m: 0 %). 5 % leaves room for the mesh, not for a stuck joint.
@@ -399,10 +393,7 @@ TEST(HardCases, VeryHighSupportLoad)
 {
   SceneNumbers scene;
   scene.support_load_t = 900.;
-  const CaseOutcome outcome = run_case("solve", "heavy_support");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  expect_physical_answer(json_of(outcome.folder + "/fem.json"), scene);
+  solve_converging_case("heavy_support", scene);
 }
 
 // The tool shall give Q proportional to the weight when nothing else loads
@@ -411,11 +402,8 @@ TEST(HardCases, NoSupportLoadGivesQFromTheWeightAlone)
 {
   SceneNumbers scene;
   scene.support_load_t = 0.;
-  const CaseOutcome outcome = run_case("solve", "no_support");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, scene);
+  const ConvergedCase outcome = solve_converging_case("no_support", scene);
+  const json &fem = outcome.fem;
   // Every joint slips, so Q_n = n W tan(phi_h) / (1 - tan(phi_h) tan(phi_v))
   // (Eq. 6.23 at alpha = 0): proportional to the weight.
   auto joints = joints_by_name(fem);
@@ -432,11 +420,8 @@ TEST(HardCases, SlenderBlocks)
 {
   SceneNumbers scene;
   scene.block_height = 5.;
-  const CaseOutcome outcome = run_case("solve", "slender");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, scene);
+  const ConvergedCase outcome = solve_converging_case("slender", scene);
+  const json &fem = outcome.fem;
   // Measured: every joint slips, so the bound above is met with equality
   // at every joint (checked there); here only that this stays so.
   for (const auto &joint : fem["joints"])
@@ -448,11 +433,8 @@ TEST(HardCases, SquatBlocks)
 {
   SceneNumbers scene;
   scene.block_height = 0.5;
-  const CaseOutcome outcome = run_case("solve", "squat");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, scene);
+  const ConvergedCase outcome = solve_converging_case("squat", scene);
+  const json &fem = outcome.fem;
   // Eq. 6.25 puts Q above the top of every squat block (they would
   // rotate); the FEM keeps them seated (HARD_CASES.md). Only the chain
   // checks above are asserted: the seating is a measurement, not a law.
@@ -468,12 +450,12 @@ TEST(HardCases, OneBlockMatchesItsClosedForm)
   const CaseOutcome outcome = run_case("run", "one_block");
   EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
   expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
+  const json fem = read_json(outcome.folder + "/fem.json");
   expect_physical_answer(fem, scene);
 
   // Both joints slip: Q = (W+P) a/(1 - a c), a = tan(phi_h), c = tan(phi_v)
   // (Eq. 6.12, one block, alpha = 0: the FEM's lifted bed is level).
-  const json   summary = json_of(outcome.folder + "/summary.json");
+  const json   summary = read_json(outcome.folder + "/summary.json");
   const json  &blocks  = summary["analytic"]["blocks"];
   const double load    = blocks["W_N_per_m"][0].get<double>() +
                       blocks["P_N_per_m"][0].get<double>();
@@ -506,10 +488,7 @@ TEST(HardCases, TwentyBlocks)
   SceneNumbers scene;
   scene.n_blocks         = 20;
   scene.loaded_from_face = {4, 5, 6};
-  const CaseOutcome outcome = run_case("solve", "twenty_blocks");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  expect_physical_answer(json_of(outcome.folder + "/fem.json"), scene);
+  solve_converging_case("twenty_blocks", scene);
 }
 
 // The tool shall not write NaN or inf for badly scaled joints.
@@ -529,11 +508,8 @@ TEST(HardCases, VeryStiffJoints)
 // The tool shall solve the scene with rigid joints.
 TEST(HardCases, RigidJointLaw)
 {
-  const CaseOutcome rigid = run_case("solve", "rigid_law");
-  EXPECT_EQ(rigid.process.exit_code, 0) << rigid.process.output;
-  expect_finite_outputs(rigid.folder);
-  const json fem = json_of(rigid.folder + "/fem.json");
-  expect_physical_answer(fem, SceneNumbers{});
+  const ConvergedCase rigid = solve_converging_case("rigid_law", SceneNumbers{});
+  const json &fem = rigid.fem;
 
   // Q is set by friction, not by the joint stiffness: the compliant law
   // (kn = 9 GPa/m) gives nearly the same face Q. Measured -2.2 % on this
@@ -545,7 +521,7 @@ TEST(HardCases, RigidJointLaw)
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const double q_rigid = normal_force(joints_by_name(fem)["vertical 3"]);
   const double q_compliant = normal_force(
-    joints_by_name(json_of(compliant + "/fem.json"))["vertical 3"]);
+    joints_by_name(read_json(compliant + "/fem.json"))["vertical 3"]);
   EXPECT_NEAR(q_rigid, q_compliant, 0.05 * q_compliant);
 }
 
@@ -555,7 +531,7 @@ TEST(HardCases, JointThatLosesContactEntirely)
   const CaseOutcome outcome = run_case("run", "opening");
   EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
   expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
+  const json fem = read_json(outcome.folder + "/fem.json");
   expect_physical_answer(fem, SceneNumbers{});
 
   auto        joints = joints_by_name(fem);
@@ -576,7 +552,7 @@ TEST(HardCases, JointThatLosesContactEntirely)
 
   // The comparison with the closed forms: Q_fem = 0 is compared (-100 %),
   // the contact estimate has no answer and says why.
-  const json summary = json_of(outcome.folder + "/summary.json");
+  const json summary = read_json(outcome.folder + "/summary.json");
   const json &face_comparison = summary["comparison"]["final"][2];
   EXPECT_EQ(face_comparison["Q_fem_N_per_m"], 0.);
   EXPECT_NE(face_comparison["contact"]["status"], "ok");
@@ -586,11 +562,8 @@ TEST(HardCases, JointThatLosesContactEntirely)
 TEST(HardCases, BlockStartsToRotate)
 {
   SceneNumbers      scene;
-  const CaseOutcome outcome = run_case("solve", "rotation");
-  EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
-  expect_finite_outputs(outcome.folder);
-  const json fem = json_of(outcome.folder + "/fem.json");
-  expect_physical_answer(fem, scene);
+  const ConvergedCase outcome = solve_converging_case("rotation", scene);
+  const json &fem = outcome.fem;
 
   // Block 1's bedding: whole base at the end of the support stage, then the
   // heel lifts as the bed bends (measured 1.0 -> 0.74 -> 0.59 -> 0.41 m
