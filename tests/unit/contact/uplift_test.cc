@@ -24,8 +24,13 @@ namespace
   constexpr double density              = 2500.; // kg/m^3
   constexpr double gravity_acceleration = 9.81;  // m/s^2
 
-  IncrementResult
-  run_with_uplift(const UpliftSettings &uplift, IncrementResult &before_uplift)
+  /**
+   * A 1 m x 0.5 m block with gravity standing on a base (also the scene of
+   * the load-step test): the base bottom follows @p uplift in @p n_uplift
+   * increments after one gravity increment.
+   */
+  SolveResult
+  solve_block_on_base(const UpliftSettings &uplift, const unsigned int n_uplift)
   {
     dealii::Triangulation<2> mesh;
     Testing::make_block_assembly(
@@ -49,9 +54,15 @@ namespace
     joint.parameters.friction_angle   = 30. * M_PI / 180.;
     scene.joints                      = {joint};
     scene.uplift                      = uplift;
-    scene.steps                       = {1, 0, 2};
-    ContactSolver     solver(mesh, scene, Testing::test_settings());
-    const SolveResult result = solver.run();
+    scene.steps                       = {1, 0, n_uplift};
+    ContactSolver solver(mesh, scene, Testing::test_settings());
+    return solver.run();
+  }
+
+  IncrementResult
+  run_with_uplift(const UpliftSettings &uplift, IncrementResult &before_uplift)
+  {
+    const SolveResult result = solve_block_on_base(uplift, 2);
     EXPECT_EQ(result.increments.size(), 3u);
     before_uplift = result.increments.front();
     return result.increments.back();
@@ -120,5 +131,28 @@ namespace
     EXPECT_NEAR(uplift_displacement(uplift, 0.5, dealii::Point<2>(6., 0.))[1],
                 0.5 * 36. / 400., 1e-15);
     EXPECT_EQ(uplift_displacement(uplift, 1., dealii::Point<2>(-1., 0.))[1], 0.);
+  }
+
+  // Load stepping: n increments of 1/n reach the end of a stage in exactly n
+  // increments. Ten steps of 0.1 sum to 0.9999999999999999 in floating
+  // point; that remainder must not become an eleventh, zero-length increment
+  // (on refined meshes it made the default scene cycle in its last uplift
+  // increment: every slipping pair is re-tested exactly on its Coulomb limit).
+  TEST(LoadSteps, TenUpliftStepsAreTenIncrements)
+  {
+    UpliftSettings uplift;
+    uplift.mode                     = UpliftMode::vertical_translation;
+    uplift.magnitude                = 1e-3; // m
+    constexpr unsigned int n_uplift = 10;
+    const SolveResult result = solve_block_on_base(uplift, n_uplift);
+    ASSERT_EQ(result.increments.size(), 1u + n_uplift);
+    for (unsigned int k = 1; k <= n_uplift; ++k)
+      {
+        EXPECT_EQ(result.increments[k].stage, LoadStage::uplift);
+        // Summed steps: round-off of a few ulps, exactly 1 at the end.
+        EXPECT_NEAR(result.increments[k].stage_factor,
+                    static_cast<double>(k) / n_uplift, 1e-15);
+      }
+    EXPECT_EQ(result.increments.back().stage_factor, 1.);
   }
 } // namespace
