@@ -38,26 +38,28 @@ namespace FloorBlock
             scene.model.vertical_pressures.insert(Ids::floor_surface(block));
         }
 
+      const auto add_joint = [&](const std::string          &name,
+                                 const dealii::types::boundary_id side_a,
+                                 const dealii::types::boundary_id side_b,
+                                 const JointParameters           &parameters) {
+        JointDefinition<2> joint;
+        joint.name       = name;
+        joint.side_a     = side_a;
+        joint.side_b     = side_b;
+        joint.law        = settings.law;
+        joint.parameters = parameters;
+        scene.joints.push_back(joint);
+      };
       for (unsigned int j = 1; j <= settings.n_blocks; ++j)
-        {
-          JointDefinition<2> vertical;
-          vertical.name       = "vertical " + std::to_string(j);
-          vertical.side_a     = Ids::vertical_joint_face_side(j);
-          vertical.side_b     = Ids::vertical_joint_free_side(j);
-          vertical.law        = settings.law;
-          vertical.parameters = settings.vertical_joints;
-          scene.joints.push_back(vertical);
-        }
+        add_joint("vertical " + std::to_string(j),
+                  Ids::vertical_joint_face_side(j),
+                  Ids::vertical_joint_free_side(j),
+                  settings.vertical_joints);
       for (unsigned int i = 1; i <= settings.n_blocks; ++i)
-        {
-          JointDefinition<2> bedding;
-          bedding.name       = "bedding " + std::to_string(i);
-          bedding.side_a     = Ids::bedding_base_side(i);
-          bedding.side_b     = Ids::bedding_block_side(i);
-          bedding.law        = settings.law;
-          bedding.parameters = settings.bedding_joints;
-          scene.joints.push_back(bedding);
-        }
+        add_joint("bedding " + std::to_string(i),
+                  Ids::bedding_base_side(i),
+                  Ids::bedding_block_side(i),
+                  settings.bedding_joints);
 
       SupportDefinition<2> face_outer;
       face_outer.boundary_id            = Ids::face_block_outer_side;
