@@ -97,6 +97,15 @@ namespace FloorBlock
                          pair_dof_groups(nodes),
                          pattern);
       matrix.reinit(pattern);
+      bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
+        fe_space, scene.model, homogeneous_constraints, pattern);
+      const bool direct =
+        settings.linear.kind == Solver::LinearSolverKind::direct ||
+        (settings.linear.kind == Solver::LinearSolverKind::automatic &&
+         fe_space.dof_handler().n_dofs() <= settings.linear.max_direct_dofs);
+      if (direct)
+        direct_solver =
+          std::make_unique<Solver::ReusedFactorization>(settings.linear);
       const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
       // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
       // so that every rank of a sweep solves its own case independently.
@@ -106,6 +115,7 @@ namespace FloorBlock
       newton_base.reinit(owned, communicator);
       update.reinit(owned, communicator);
       residual.reinit(owned, communicator);
+      last_change.reinit(owned, communicator);
 
       const auto &fe = fe_space.fe();
       dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
@@ -206,17 +216,31 @@ namespace FloorBlock
     }
 
     double
-    ContactSolver::load_norm(const Fem::ElasticModel<2> &model)
+    ContactSolver::load_norm(const LoadFactors &factors)
     {
       dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
-      zero     = 0.;
-      residual = 0.;
-      Fem::ElasticAssemblyTargets<2> targets;
-        targets.cache = &cell_matrices;
-      targets.residual = &residual;
-      Fem::assemble_elastic_system(
-        fe_space, model, zero, homogeneous_constraints, targets);
+      zero = 0.;
+      bulk->residual(zero, factors.gravity, factors.pressure, residual);
       return residual.l2_norm();
+    }
+
+    bool
+    ContactSolver::solve_linear(std::string &message)
+    {
+      dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
+      right_hand_side *= -1.;
+      update = 0.;
+      ++n_linear_solves;
+      const Solver::LinearSolveInfo info =
+        direct_solver ?
+          direct_solver->solve(matrix, right_hand_side, update) :
+          Solver::solve_linear_system(settings.linear,
+                                      matrix,
+                                      right_hand_side,
+                                      fe_space.constant_modes(),
+                                      update);
+      message = info.message;
+      return info.success;
     }
 
     bool
@@ -253,31 +277,25 @@ namespace FloorBlock
 
     bool
     ContactSolver::solve_load_state(const LoadFactors &factors,
+                                    const double       prediction,
                                     IncrementResult   &increment,
                                     std::string       &failure_reason)
     {
-      const Fem::ElasticModel<2> model = scaled_model(factors);
-      {
+      const dealii::AffineConstraints<double> constraints = [&]() {
         dealii::TimerOutput::Scope scope(timer, "Contact: constraints");
-        const dealii::AffineConstraints<double> constraints =
-          constraints_at(factors.uplift);
-        constraints.distribute(current_solution);
-      }
-      const double reference_load = load_norm(model);
+        return constraints_at(factors.uplift);
+      }();
+      constraints.distribute(current_solution);
+      double reference_load = load_norm(factors);
 
       NewtonCallbacks callbacks;
       callbacks.assemble = [&]() {
         dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
         const std::vector<JointResponse<2>> responses = evaluate_contact(
           nodes, pair_laws, working_history, current_solution);
-        matrix   = 0.;
-        residual = 0.;
-        Fem::ElasticAssemblyTargets<2> targets;
-        targets.cache = &cell_matrices;
-        targets.matrix   = &matrix;
-        targets.residual = &residual;
-        Fem::assemble_elastic_system(
-          fe_space, model, current_solution, homogeneous_constraints, targets);
+        matrix.copy_from(bulk->condensed_stiffness());
+        bulk->residual(
+          current_solution, factors.gravity, factors.pressure, residual);
         assemble_contact(
           nodes, responses, homogeneous_constraints, &matrix, &residual);
         active_set.update(states_of(responses));
@@ -293,24 +311,31 @@ namespace FloorBlock
       };
       callbacks.solve_update = [&](std::string &message) {
         dealii::TimerOutput::Scope scope(timer, "Contact: linear solve");
-        dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
-        right_hand_side *= -1.;
-        update = 0.;
-        const Solver::LinearSolveInfo info =
-          Solver::solve_linear_system(settings.linear,
-                                      matrix,
-                                      right_hand_side,
-                                      fe_space.constant_modes(),
-                                      update);
-        message = info.message;
+        if (!solve_linear(message))
+          return false;
         homogeneous_constraints.distribute(update);
         newton_base = current_solution;
-        return info.success;
+        return true;
       };
       callbacks.set_step = [&](const double step) {
         current_solution = newton_base;
         current_solution.add(step, update);
       };
+
+      if (prediction > 0.)
+        {
+          // The Newton stop test is relative to the larger of the load and
+          // the first residual. Without the predictor that first residual
+          // is the one at the last converged state; keep it as the
+          // reference, so that the predictor changes where Newton starts
+          // but not when it stops. (Referenced to the load alone, a
+          // 1e-12 tolerance fell below the round-off of K u under a large
+          // uplift, and Newton never stopped.)
+          reference_load =
+            std::max(reference_load, callbacks.assemble().residual_norm);
+          current_solution.add(prediction, last_change);
+          constraints.distribute(current_solution);
+        }
 
       const bool any_rigid =
         std::find(pair_is_rigid.begin(), pair_is_rigid.end(), true) !=
@@ -401,6 +426,7 @@ namespace FloorBlock
       double       reached      = 0.;
       double       step         = nominal_step;
       unsigned int n_failed     = 0;
+      last_change_step          = 0.; // no extrapolation across stages
       while (reached < 1.)
         {
           // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
@@ -424,7 +450,36 @@ namespace FloorBlock
           dealii::Timer   clock;
           IncrementResult increment;
           std::string     reason;
-          if (solve_load_state(factors, increment, reason))
+          const double prediction =
+            settings.extrapolate_increments && last_change_step > 0. ?
+              (target - reached) / last_change_step :
+              0.;
+          const auto record_failure = [&](const std::string &start) {
+            std::ostringstream attempt;
+            attempt << stage_name(stage) << " factor " << target << " (step "
+                    << step << start << "): " << reason;
+            failed_attempts.push_back(attempt.str());
+            console << "  failed: " << attempt.str() << std::endl;
+            current_solution = committed_solution;
+            working_history  = committed_history;
+          };
+          bool solved = false;
+          if (prediction > 0.)
+            {
+              solved = solve_load_state(factors, prediction, increment, reason);
+              // The extrapolated start can lie where a very stiff joint law
+              // makes the active set cycle (kn = 1e14 Pa/m, two-block
+              // test); the plain start is tried before any cutback, so a
+              // start the predictor spoils costs a retry, not a cutback.
+              if (!solved)
+                {
+                  record_failure(", extrapolated start");
+                  increment = IncrementResult();
+                }
+            }
+          if (!solved)
+            solved = solve_load_state(factors, 0., increment, reason);
+          if (solved)
             {
               dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
               const std::vector<JointResponse<2>> responses = evaluate_contact(
@@ -441,6 +496,9 @@ namespace FloorBlock
                 nodes, responses, names, settings.averaging_length);
               increment.motions =
                 Fem::fit_rigid_motions(fe_space, current_solution);
+              last_change = current_solution;
+              last_change -= committed_solution;
+              last_change_step = target - reached;
               commit(responses);
               committed_factors = factors;
               reached           = target;
@@ -460,13 +518,7 @@ namespace FloorBlock
               result.increments.push_back(increment);
               continue;
             }
-          std::ostringstream attempt;
-          attempt << stage_name(stage) << " factor " << target << " (step "
-                  << step << "): " << reason;
-          failed_attempts.push_back(attempt.str());
-          console << "  failed: " << attempt.str() << std::endl;
-          current_solution = committed_solution;
-          working_history  = committed_history;
+          record_failure("");
           if (++n_failed > settings.max_cutbacks)
             throw ContactSolveFailure(
               std::string("contact solve failed in stage '") +
@@ -494,6 +546,13 @@ namespace FloorBlock
       run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
       result.wall_times =
         timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+      result.n_linear_solves = n_linear_solves;
+      if (direct_solver)
+        {
+          result.n_factorizations = direct_solver->statistics().n_factorizations;
+          result.n_krylov_iterations =
+            direct_solver->statistics().n_krylov_iterations;
+        }
       return result;
     }
 

@@ -7,6 +7,8 @@
 #include <contact/scene.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
+#include <fem/stored_elastic_system.h>
+#include <solver/reused_factorization.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -86,8 +88,10 @@ namespace FloorBlock
       run_stage(const LoadStage    stage,
                 const unsigned int n_increments,
                 SolveResult       &result);
+      /** @p prediction: multiple of last_change added to the start (0: none). */
       bool
       solve_load_state(const LoadFactors &factors,
+                       const double       prediction,
                        IncrementResult   &increment,
                        std::string       &failure_reason);
       bool
@@ -97,7 +101,9 @@ namespace FloorBlock
       dealii::AffineConstraints<double>
       constraints_at(const double uplift_factor);
       double
-      load_norm(const Fem::ElasticModel<2> &model);
+      load_norm(const LoadFactors &factors);
+      bool
+      solve_linear(std::string &message);
       void
       commit(const std::vector<JointResponse<2>> &responses);
       ForceBalance
@@ -122,12 +128,20 @@ namespace FloorBlock
       std::vector<unsigned int>         dof_component;
       dealii::TrilinosWrappers::SparsityPattern pattern;
       dealii::TrilinosWrappers::SparseMatrix    matrix;
+      std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
+      /** Set when the linear systems are solved directly (see run()). */
+      std::unique_ptr<Solver::ReusedFactorization> direct_solver;
+      unsigned int                                 n_linear_solves = 0;
       dealii::TrilinosWrappers::MPI::Vector     current_solution;
       dealii::TrilinosWrappers::MPI::Vector     committed_solution;
       dealii::TrilinosWrappers::MPI::Vector     newton_base;
       dealii::TrilinosWrappers::MPI::Vector     update;
       dealii::TrilinosWrappers::MPI::Vector     residual;
       LoadFactors                               committed_factors;
+      /** Displacement change of the last converged increment (m) and the
+       *  stage-factor step it was taken over, for the predictor. */
+      dealii::TrilinosWrappers::MPI::Vector     last_change;
+      double                                    last_change_step = 0.;
       ActiveSet                                 active_set;
       StateCounts                               last_iterate_counts;
       std::vector<std::string>                  failed_attempts;

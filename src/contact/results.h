@@ -94,6 +94,12 @@ namespace FloorBlock
       std::map<std::string, double> wall_times;
       unsigned int                  n_dofs         = 0;
       unsigned int                  n_contact_pairs = 0;
+      /** Linear solves of all Newton iterations, failed increments included. */
+      unsigned int n_linear_solves = 0;
+      /** Numeric LU factorisations among them (direct solver only). */
+      unsigned int n_factorizations = 0;
+      /** GMRES iterations on stored or fresh LU factors (direct solver only). */
+      unsigned int n_krylov_iterations = 0;
     };
 
     /**

@@ -126,6 +126,13 @@ namespace FloorBlock
       double rigid_constraint_tolerance = 1e-6;
       /** Rigid law: Uzawa updates allowed per increment. */
       unsigned int max_multiplier_updates = 50;
+      /**
+       * Start each increment after the first of a stage from the linear
+       * extrapolation of the last converged increment of the same stage,
+       * instead of from the last converged state. Changes only where
+       * Newton starts, not the equations of the increment.
+       */
+      bool extrapolate_increments = true;
       /** Length over which the averaged peak normal stress is taken (m). */
       double averaging_length = 0.1;
       /** If not empty, a .pvd/.vtu series is written here per increment. */

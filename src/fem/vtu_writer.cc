@@ -128,6 +128,13 @@ namespace FloorBlock
       data_out.add_data_vector(displacement, stress);
       data_out.add_data_vector(material, "material_id");
       data_out.build_patches(space.mapping(), space.degree());
+      // deal.II defaults to best_compression, which took a quarter of the
+      // default scene's run time in zlib; best_speed files are about 10 %
+      // larger and written several times faster.
+      dealii::DataOutBase::VtkFlags flags;
+      flags.compression_level =
+        dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+      data_out.set_flags(flags);
 
       std::ostringstream name;
       name << "solution-" << std::setw(4) << std::setfill('0') << records.size()

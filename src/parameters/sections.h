@@ -166,6 +166,7 @@ namespace FloorBlock::Parameters
     unsigned int       n_uplift_steps;
     LinearSolverChoice linear_solver;
     unsigned int       max_direct_dofs;
+    unsigned int       max_reuse_iterations; ///< GMRES on stored LU factors
     double             newton_tolerance; ///< relative to the load norm
     unsigned int       max_newton_iterations;
     unsigned int       max_cutbacks;

@@ -31,6 +31,13 @@ namespace FloorBlock::Parameters
     prm.declare_entry("Max direct DoFs", "60000", Integer(1, 100000000),
                       "Largest system that 'automatic' solves directly. "
                       "Units: none.");
+    prm.declare_entry("Factorization reuse iterations", "20",
+                      Integer(0, 1000),
+                      "Direct solver: GMRES iterations tried with the LU "
+                      "factors of an earlier Newton matrix before the "
+                      "current one is factorised afresh; 0 factorises every "
+                      "Newton matrix. Changes cost only: every solve meets "
+                      "the same residual tolerance. Units: none.");
     prm.declare_entry("Newton tolerance", "1e-10", Double(1e-15, 1e-2),
                       "An increment has converged when the residual norm is "
                       "below this fraction of the reference force (the "
@@ -73,6 +80,7 @@ namespace FloorBlock::Parameters
                     solver == "iterative" ? LinearSolverChoice::iterative :
                                             LinearSolverChoice::automatic;
     max_direct_dofs       = prm.get_integer("Max direct DoFs");
+    max_reuse_iterations  = prm.get_integer("Factorization reuse iterations");
     newton_tolerance      = prm.get_double("Newton tolerance");
     max_newton_iterations = prm.get_integer("Max Newton iterations");
     max_cutbacks          = prm.get_integer("Max cutbacks");

@@ -143,6 +143,7 @@ namespace FloorBlock::Scene
         Solver::LinearSolverKind::iterative :
         Solver::LinearSolverKind::automatic;
     settings.linear.max_direct_dofs = solver.max_direct_dofs;
+    settings.linear.max_reuse_iterations = solver.max_reuse_iterations;
     settings.max_cutbacks           = solver.max_cutbacks;
     settings.averaging_length       = solver.averaging_length;
     settings.rigid_penalty_factor   = solver.rigid_penalty_factor;

@@ -53,6 +53,8 @@ namespace FloorBlock
 
       Contact::ContactSolverSettings solver_settings;
       solver_settings.averaging_length = floor_case.averaging_length;
+      solver_settings.extrapolate_increments =
+        floor_case.extrapolate_increments;
       Contact::ContactSolver solver(mesh,
                                     Contact::make_floor_scene(settings),
                                     solver_settings);
@@ -61,6 +63,8 @@ namespace FloorBlock
       outcome.last    = result.increments.back();
       outcome.n_cells = mesh.n_active_cells();
       outcome.n_pairs = result.n_contact_pairs;
+      for (const auto &increment : result.increments)
+        outcome.n_newton_iterations += increment.n_newton_iterations;
       return outcome;
     }
   } // namespace Testing

@@ -20,6 +20,8 @@ namespace FloorBlock
       bool support_load = true;
       /** Window of the averaged peak normal stress (m). */
       double averaging_length = 0.1;
+      /** ContactSolverSettings::extrapolate_increments. */
+      bool extrapolate_increments = true;
     };
 
     /** @brief Converged end state of a LiftedFloorCase and its size. */
@@ -28,6 +30,8 @@ namespace FloorBlock
       Contact::IncrementResult last;
       unsigned int             n_cells = 0;
       unsigned int             n_pairs = 0;
+      /** Newton iterations of all converged increments. */
+      unsigned int n_newton_iterations = 0;
     };
 
     /**
