@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace FloorBlock
 {
@@ -19,7 +21,84 @@ namespace FloorBlock
         return tangent;
       }
 
+      /**
+       * Parts of each node's weight on the segment to its previous (first)
+       * and next (second) neighbour in arc order, in proportion to the
+       * segment lengths; an end node gives all of its weight to its one
+       * segment.
+       */
+      std::vector<std::pair<double, double>>
+      weight_shares(const std::vector<JointNodeSample> &profile,
+                    const std::vector<double>          &weights)
+      {
+        const unsigned int n_nodes = profile.size();
+        std::vector<std::pair<double, double>> shares(n_nodes, {0., 0.});
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            const double to_previous =
+              k == 0 ? 0. :
+                       profile[k].arc_position - profile[k - 1].arc_position;
+            const double to_next =
+              k + 1 == n_nodes ?
+                0. :
+                profile[k + 1].arc_position - profile[k].arc_position;
+            const double span = to_previous + to_next;
+            if (span > 0.)
+              shares[k] = {weights[k] * to_previous / span,
+                           weights[k] * to_next / span};
+          }
+        return shares;
+      }
+
+      /**
+       * Closed length with interpolated contact ends (see
+       * make_joint_reports()): the closed nodes' weights, and on every
+       * segment between a closed and an open node the interpolated closed
+       * part of the segment instead of the closed node's share. Written as
+       * a correction of the node measure so that all-closed and all-open
+       * joints give exactly the sums they gave before.
+       */
+      double
+      interpolated_closed_length(const std::vector<JointNodeSample> &profile,
+                                 const std::vector<double>          &weights,
+                                 const std::vector<double> &indicators)
+      {
+        double length = 0.;
+        for (unsigned int k = 0; k < profile.size(); ++k)
+          if (profile[k].state != JointState::open)
+            length += weights[k];
+        const auto shares = weight_shares(profile, weights);
+        for (unsigned int k = 0; k + 1 < profile.size(); ++k)
+          {
+            const bool first_closed  = profile[k].state != JointState::open;
+            const bool second_closed = profile[k + 1].state != JointState::open;
+            if (first_closed == second_closed)
+              continue;
+            const double closed_share =
+              first_closed ? shares[k].second : shares[k + 1].first;
+            const double segment = shares[k].second + shares[k + 1].first;
+            const double inside  = indicators[first_closed ? k : k + 1];
+            const double outside = indicators[first_closed ? k + 1 : k];
+            // Also false for a NaN indicator: keep the node measure.
+            if (!(inside >= 0. && outside < 0.))
+              continue;
+            length += inside / (inside - outside) * segment - closed_share;
+          }
+        return length;
+      }
     } // namespace
+
+    double
+    contact_indicator(const JointResponse<2>     &response,
+                      const dealii::Tensor<1, 2> &normal)
+    {
+      if (response.state == JointState::open)
+        return -response.gap;
+      const double normal_stiffness = normal * (response.tangent * normal);
+      if (!(normal_stiffness > 0.))
+        return std::numeric_limits<double>::quiet_NaN();
+      return response.normal_traction / normal_stiffness;
+    }
 
     void
     add_peak_stresses(JointReport &report, const std::vector<double> &weights)
@@ -97,6 +176,7 @@ namespace FloorBlock
                     });
           const dealii::Point<2> origin = nodes[members[j].front()].position;
           std::vector<double>    weights;
+          std::vector<double>    indicators;
           for (const unsigned int p : members[j])
             {
               const JointResponse<2> &response = responses[p];
@@ -111,11 +191,13 @@ namespace FloorBlock
               sample.state = response.state;
               report.profile.push_back(sample);
               weights.push_back(weight);
+              indicators.push_back(
+                contact_indicator(response, nodes[p].normal));
               report.normal_force += weight * sample.normal_traction;
               report.shear_force += weight * sample.tangential_traction;
-              if (response.state != JointState::open)
-                report.closed_length += weight;
             }
+          report.closed_length =
+            interpolated_closed_length(report.profile, weights, indicators);
           std::vector<JointState> states;
           for (const auto &sample : report.profile)
             states.push_back(sample.state);

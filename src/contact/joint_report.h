@@ -12,6 +12,40 @@ namespace FloorBlock
   namespace Contact
   {
     /**
+     * @brief Contact indicator of one pair: positive when closed, negative
+     * when open, zero at the end of a closed zone.
+     *
+     * \f$\phi = t_n^{trial}/k_n = \lambda_n/k_n - g\f$, the law's own
+     * closure test (closed iff \f$t_n^{trial} \ge 0\f$ without tensile
+     * strength) in units of length. Closed pair: \f$\phi = t_n/k_n\f$ with
+     * \f$k_n = n\cdot K n\f$ read from the pair's tangent K (the law puts
+     * \f$k_n n\otimes n\f$ there; its shear terms have no nn part). Open
+     * pair: \f$\phi = -g\f$, i.e. \f$\lambda_n = 0\f$, which holds for the
+     * compliant law and for the rigid law's converged multipliers.
+     *
+     * Compliant law (\f$t_n = -k_n g\f$): \f$\phi = -g\f$ on both sides,
+     * so the zero of its linear interpolation is the zero of the gap, which
+     * is linear along a degree-1 element edge. Rigid law (closed
+     * \f$g \approx 0\f$, open \f$t_n = 0\f$): \f$\phi\f$ is the pressure
+     * over the pair's penalty on the closed side and minus the gap on the
+     * open side, both zero at the end. Either way \f$\phi\f$ is a
+     * continuous function of the displacements, so the interpolated end
+     * moves continuously when a pair changes state. Where inside the cell
+     * it lies depends on \f$k_n\f$: the rigid law's penalty is of the
+     * order of the surface stiffness E / h, so pressure and gap weigh
+     * alike; a compliant joint with \f$k_n \gg E/h\f$ puts the end next to
+     * its last closed node.
+     *
+     * @param[in] response Law evaluation of the pair.
+     * @param[in] normal Unit normal of the pair.
+     * @return \f$\phi\f$ (m); NaN for a closed pair whose tangent has no
+     *   positive normal stiffness (nothing to scale with).
+     */
+    double
+    contact_indicator(const JointResponse<2>     &response,
+                      const dealii::Tensor<1, 2> &normal);
+
+    /**
      * @brief Per-joint forces, closed length, peak and mean normal stress.
      *
      * Nodal tractions are the pair tractions; forces integrate them with the
@@ -19,6 +53,21 @@ namespace FloorBlock
      * \f$t_n\f$ over a window of length @p averaging_length centred on a
      * node: the pointwise peak at a sharp corner grows without bound under
      * refinement, the averaged one converges.
+     *
+     * Closed length: the measure of the part of the joint where the linear
+     * interpolation of contact_indicator() between neighbouring nodes (in
+     * arc order) is >= 0, capped by the joint's end nodes. Each node's
+     * weight is split between its two neighbouring segments in proportion
+     * to their lengths (an end node gives all of it to its one segment), so
+     * a segment stands for the length of joint its two shares cover (its
+     * own length for straight joints of degree 1 or 2). A segment between
+     * two closed nodes counts whole, between two open ones not at all;
+     * between a closed node c and an open node o it counts the fraction
+     * \f$\phi_c / (\phi_c - \phi_o)\f$ from c. All nodes closed: the sum
+     * of the weights; all open: 0. Where the indicator does not change sign
+     * across such a segment (a closed pair held in tension by an intact
+     * tensile strength, \f$\phi_c < 0\f$) the segment keeps c's share, the
+     * node-count measure.
      *
      * @param[in] nodes All contact pairs.
      * @param[in] responses Law evaluations of the converged state.

@@ -1,8 +1,16 @@
 // Joint post-processing without a mesh: a linear pressure profile along a
-// straight joint has closed-form force, closed length and window average.
+// straight joint has closed-form force, closed length and window average;
+// synthetic gap and pressure profiles, evaluated with the real joint law,
+// have a known interpolated contact end.
+#include <contact/joint_law.h>
 #include <contact/joint_report.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <utility>
 
 namespace
 {
@@ -41,5 +49,253 @@ namespace
     // window edges fall on tributary midpoints symmetric about nodes.
     EXPECT_NEAR(report.averaged_peak_normal_stress, 0.9 * peak, 1e-12 * peak);
     EXPECT_NEAR(report.mean_normal_stress, peak / 2., 1e-12 * peak);
+  }
+
+  constexpr double normal_stiffness = 1e10; // Pa/m, compliant joint
+  constexpr double rigid_penalty    = 1e12; // Pa/m, augmentation
+
+  CoulombJoint<2>
+  make_law(const double stiffness, const double tensile_strength = 0.)
+  {
+    JointParameters parameters;
+    parameters.normal_stiffness = stiffness;
+    parameters.shear_stiffness  = stiffness / 2.;
+    parameters.friction_angle   = std::atan(0.6);
+    parameters.tensile_strength = tensile_strength;
+    return CoulombJoint<2>(parameters);
+  }
+
+  dealii::Tensor<1, 2>
+  joint_normal()
+  {
+    dealii::Tensor<1, 2> normal;
+    normal[0] = 1.;
+    return normal;
+  }
+
+  /** Pair history of the law for a normal multiplier (rigid law). */
+  JointHistory<2>
+  with_multiplier(const double multiplier)
+  {
+    JointHistory<2> history;
+    history.normal_base = multiplier;
+    return history;
+  }
+
+  /**
+   * Nodes of a vertical joint at the given heights (any order), weights
+   * half of the adjacent cells, each evaluated with @p law at the gap and
+   * history that @p state_at gives for its height.
+   */
+  JointReport
+  report_of(const std::vector<double> &heights,
+            const CoulombJoint<2>     &law,
+            const std::function<std::pair<double, JointHistory<2>>(double)>
+              &state_at)
+  {
+    std::vector<double> sorted = heights;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<ContactNode<2>>   nodes;
+    std::vector<JointResponse<2>> responses;
+    for (const double height : heights)
+      {
+        const auto   at   = std::find(sorted.begin(), sorted.end(), height);
+        const double below = at == sorted.begin() ? height : *(at - 1);
+        const double above = at + 1 == sorted.end() ? height : *(at + 1);
+        ContactNode<2> node;
+        node.position = dealii::Point<2>(0., height);
+        node.normal   = joint_normal();
+        node.weight   = (above - below) / 2.;
+        nodes.push_back(node);
+        const auto [gap, history] = state_at(height);
+        responses.push_back(
+          law.evaluate(gap * joint_normal(), joint_normal(), history));
+      }
+    return make_joint_reports(nodes, responses, {"joint"}, 0.05).at(0);
+  }
+
+  /** 0, 0.1, ..., 1 m. */
+  std::vector<double>
+  uniform_heights()
+  {
+    std::vector<double> heights;
+    for (unsigned int k = 0; k <= 10; ++k)
+      heights.push_back(0.1 * k);
+    return heights;
+  }
+
+  TEST(JointReport, IndicatorIsMinusTheGapOfTheCompliantLawOnBothSides)
+  {
+    const CoulombJoint<2> law = make_law(normal_stiffness);
+    const double          gap = 2e-5; // m
+    dealii::Tensor<1, 2>  slide;
+    slide[1] = 1e-2; // m, far beyond the stick limit
+    const auto open   = law.evaluate(gap * joint_normal(), joint_normal(), {});
+    const auto stuck  = law.evaluate(-gap * joint_normal(), joint_normal(), {});
+    const auto sliding =
+      law.evaluate(-gap * joint_normal() + slide, joint_normal(), {});
+    ASSERT_EQ(open.state, JointState::open);
+    ASSERT_EQ(stuck.state, JointState::stick);
+    ASSERT_EQ(sliding.state, JointState::slip);
+    EXPECT_DOUBLE_EQ(contact_indicator(open, joint_normal()), -gap);
+    EXPECT_DOUBLE_EQ(contact_indicator(stuck, joint_normal()), gap);
+    // The slip tangent's friction term e (x) n has no n-n part.
+    EXPECT_DOUBLE_EQ(contact_indicator(sliding, joint_normal()), gap);
+  }
+
+  TEST(JointReport, IndicatorOfTheRigidLawIsMultiplierOverPenaltyMinusGap)
+  {
+    const CoulombJoint<2> law        = make_law(rigid_penalty);
+    const double          multiplier = 3e6;   // Pa
+    const double          gap        = 1e-7;  // m, below multiplier/penalty
+    const auto            closed     = law.evaluate(
+      gap * joint_normal(), joint_normal(), with_multiplier(multiplier));
+    ASSERT_EQ(closed.state, JointState::stick);
+    // t_n = 3e6 - 1e12 * 1e-7 = 2.9e6 Pa, phi = t_n / penalty = 2.9e-6 m.
+    EXPECT_NEAR(contact_indicator(closed, joint_normal()),
+                multiplier / rigid_penalty - gap,
+                1e-12 * gap);
+  }
+
+  TEST(JointReport, CompliantContactEndsWhereTheLinearGapVanishes)
+  {
+    // g(y) = slope (y - end): closed (overlap) below end, open above; the
+    // indicator is -g at every node, its interpolant is g itself, so the
+    // closed length is exactly `end`. The node measure would give the
+    // weights of nodes 0..0.4 m: 0.45 m.
+    const CoulombJoint<2> law   = make_law(normal_stiffness);
+    const double          slope = 1e-3; // m of gap per m of joint
+    const double          end   = 0.437; // m
+    const JointReport     report =
+      report_of(uniform_heights(), law, [&](const double height) {
+        return std::make_pair(slope * (height - end), JointHistory<2>());
+      });
+    EXPECT_EQ(report.counts.n_open, 6u);
+    EXPECT_NEAR(report.closed_length, end, 1e-12);
+    EXPECT_NEAR(report.mean_normal_stress,
+                report.normal_force / end,
+                1e-12 * report.normal_force);
+  }
+
+  TEST(JointReport, ContactEndOnGradedUnorderedNodes)
+  {
+    // Same linear gap on a graded joint whose nodes arrive out of order:
+    // the sort by arc position and the weight shares give `end` again.
+    const CoulombJoint<2> law   = make_law(normal_stiffness);
+    const double          slope = 1e-3;
+    const double          end   = 0.61;
+    const JointReport     report =
+      report_of({1., 0.05, 0.55, 0., 0.3, 0.8, 0.15, 0.58},
+                law,
+                [&](const double height) {
+                  return std::make_pair(slope * (height - end),
+                                        JointHistory<2>());
+                });
+    EXPECT_NEAR(report.closed_length, end, 1e-12);
+  }
+
+  TEST(JointReport, ClosedLengthIsContinuousAsTheEndCrossesNodes)
+  {
+    // The node measure jumps by 0.1 m at y = 0.4 and 0.95 m; the
+    // interpolated one follows `end`, through nodes and up to the joint's
+    // end (beyond it every node is closed: the joint length).
+    const CoulombJoint<2> law   = make_law(normal_stiffness);
+    const double          slope = 1e-3;
+    for (const double end : {0.4 - 1e-9, 0.4, 0.4 + 1e-9, 0.95, 1. - 1e-9})
+      {
+        const JointReport report =
+          report_of(uniform_heights(), law, [&](const double height) {
+            return std::make_pair(slope * (height - end), JointHistory<2>());
+          });
+        EXPECT_NEAR(report.closed_length, end, 1e-12) << "end " << end;
+      }
+  }
+
+  TEST(JointReport, RigidContactEndBetweenPressureAndGap)
+  {
+    // Converged augmented Lagrangian: closed pairs with zero gap carry the
+    // multiplier p(y) = penalty * pressure_slope * (end - y), open pairs
+    // none and a gap g(y) = gap_slope * (y - end). Indicator: closed
+    // pressure_slope (end - y), open -gap_slope (y - end). Between the
+    // closed node y_c = 0.4 and the open node y_o = 0.5 its interpolant
+    // vanishes at y_c + (y_o - y_c) phi_c / (phi_c - phi_o)
+    // = 0.4 + 0.1 * 3.7e-6 / (3.7e-6 + 6.3e-5) = 0.40554723 m: the slopes
+    // differ, so the end lies closer to the node with the smaller |phi|.
+    const CoulombJoint<2> law            = make_law(rigid_penalty);
+    const double          pressure_slope = 1e-4; // (Pa / penalty) per m
+    const double          gap_slope      = 1e-3; // m per m
+    const double          end            = 0.437;
+    const JointReport     report =
+      report_of(uniform_heights(), law, [&](const double height) {
+        const double multiplier =
+          rigid_penalty * pressure_slope * (end - height);
+        if (height < end)
+          return std::make_pair(0., with_multiplier(multiplier));
+        return std::make_pair(gap_slope * (height - end), JointHistory<2>());
+      });
+    const double closed_indicator = pressure_slope * (end - 0.4);
+    const double open_indicator   = -gap_slope * (0.5 - end);
+    EXPECT_NEAR(report.closed_length,
+                0.4 + 0.1 * closed_indicator /
+                        (closed_indicator - open_indicator),
+                1e-12);
+    EXPECT_NEAR(report.closed_length, 0.40554723, 1e-8);
+  }
+
+  TEST(JointReport, MidJointOpeningHasTwoInterpolatedEnds)
+  {
+    // g(y) = gap - slope |y - 0.5|: open for |y - 0.5| < gap / slope =
+    // 0.137 m, closed outside. The kink sits on the node y = 0.5, so the
+    // nodal interpolant is g itself: closed length 1 - 2 * 0.137 m.
+    const CoulombJoint<2> law       = make_law(normal_stiffness);
+    const double          slope     = 1e-3;
+    const double          half_open = 0.137;
+    const JointReport     report =
+      report_of(uniform_heights(), law, [&](const double height) {
+        return std::make_pair(slope * (half_open - std::abs(height - 0.5)),
+                              JointHistory<2>());
+      });
+    EXPECT_EQ(report.counts.n_open, 3u);
+    EXPECT_NEAR(report.closed_length, 1. - 2. * half_open, 1e-12);
+  }
+
+  TEST(JointReport, AllClosedAndAllOpenKeepTheNodeMeasure)
+  {
+    const CoulombJoint<2>     law     = make_law(normal_stiffness);
+    const std::vector<double> heights = {0., 0.13, 0.3, 0.62, 1.};
+    const JointReport         closed =
+      report_of(heights, law, [](const double height) {
+        return std::make_pair(-1e-5 * (1. + height), JointHistory<2>());
+      });
+    const JointReport open = report_of(heights, law, [](const double height) {
+      return std::make_pair(1e-5 * (1. + height), JointHistory<2>());
+    });
+    // The weights report_of() gives, added in arc order as the node
+    // measure adds them (heights are sorted).
+    double weight_sum = 0.;
+    for (unsigned int k = 0; k < heights.size(); ++k)
+      weight_sum += ((k + 1 < heights.size() ? heights[k + 1] : heights[k]) -
+                     (k > 0 ? heights[k - 1] : heights[k])) /
+                    2.;
+    EXPECT_EQ(closed.counts.n_open, 0u);
+    EXPECT_DOUBLE_EQ(closed.closed_length, weight_sum);
+    EXPECT_EQ(open.closed_length, 0.);
+    EXPECT_EQ(open.mean_normal_stress, 0.);
+  }
+
+  TEST(JointReport, ClosedPairInTensionKeepsTheNodeMeasure)
+  {
+    // Intact tensile strength T: a pair with gap below T / kn = 1e-4 m is
+    // closed in tension (phi = t_n / kn = -g < 0), so the indicator does not
+    // change sign towards its open neighbour and the segment keeps the node
+    // measure. Gap 1e-3 (y - 0.437): nodes up to 0.5 m closed (0.5 m:
+    // 6.3e-5 m), 0.6 m open (1.63e-4 m); weights 0.05 + 5 x 0.1 = 0.55 m.
+    const CoulombJoint<2> law = make_law(normal_stiffness, 1e6);
+    const JointReport     report =
+      report_of(uniform_heights(), law, [](const double height) {
+        return std::make_pair(1e-3 * (height - 0.437), JointHistory<2>());
+      });
+    EXPECT_EQ(report.counts.n_open, 5u);
+    EXPECT_NEAR(report.closed_length, 0.55, 1e-12);
   }
 } // namespace
