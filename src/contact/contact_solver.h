@@ -145,6 +145,8 @@ namespace FloorBlock
       ActiveSet                                 active_set;
       StateCounts                               last_iterate_counts;
       std::vector<std::string>                  failed_attempts;
+      /** Appended to a failure message when compliant joints are very stiff. */
+      std::string                               stiffness_hint;
       std::vector<std::pair<double, std::string>> output_records;
       dealii::ConditionalOStream                console;
       dealii::TimerOutput                       timer;

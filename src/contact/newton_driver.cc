@@ -72,6 +72,14 @@ namespace FloorBlock
               report.converged = true;
               return report;
             }
+          if (set_stable && current.residual_norm <= current.round_off_floor &&
+              report.relative_residual <=
+                settings.max_round_off_relief * settings.relative_tolerance)
+            {
+              report.converged                  = true;
+              report.stopped_at_round_off_floor = true;
+              return report;
+            }
           if (!set_stable &&
               ++revisits[current.set_signature] > settings.cycling_limit)
             {

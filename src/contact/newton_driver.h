@@ -28,6 +28,15 @@ namespace FloorBlock
       double line_search_reduction = 0.5;
       /** Armijo constant: accept if |R| <= (1 - c step)|R0| (-). */
       double sufficient_decrease = 1e-4;
+      /**
+       * The round-off floor (NewtonIterate::round_off_floor) may relax the
+       * relative tolerance by at most this factor. It is a relief for a
+       * tolerance just out of double precision's reach, not a licence to
+       * stop anywhere: a wild iterate (kn = 1e14 Pa/m) has a huge |K||u|,
+       * and without this cap stopped "converged" with a 72 % force
+       * imbalance.
+       */
+      double max_round_off_relief = 1e3;
       /** A set revisited this often (not consecutively) counts as cycling. */
       unsigned int cycling_limit = 3;
     };
@@ -37,6 +46,13 @@ namespace FloorBlock
     {
       /** l2 norm of the condensed residual (N). */
       double residual_norm = 0.;
+      /**
+       * Residual norm (N) that round-off alone can produce at this iterate
+       * (e.g. a multiple of eps |K| |u|); 0 if unknown. A stable set with a
+       * residual at or below it has converged as far as double precision
+       * allows, even if the relative tolerance asks for more.
+       */
+      double round_off_floor = 0.;
       /** Hash of the open/stick/slip set. */
       std::uint64_t set_signature = 0;
       StateCounts   counts;
@@ -67,6 +83,8 @@ namespace FloorBlock
       StateCounts counts;
       /** Why it failed; empty on success. */
       std::string failure_reason;
+      /** Converged on the round-off floor, not on the relative tolerance. */
+      bool stopped_at_round_off_floor = false;
     };
 
     /**

@@ -79,6 +79,8 @@ namespace FloorBlock
       /** Failed attempts (cutbacks) before this increment converged. */
       unsigned int n_cutbacks        = 0;
       double       relative_residual = 0.;
+      /** Newton stopped on the round-off floor of the residual (see NewtonIterate). */
+      bool         round_off_limited = false;
       StateCounts  counts;
       ForceBalance balance;
       std::vector<JointReport>                                      joints;

@@ -2,6 +2,9 @@
 #include <fem/sparsity.h>
 #include <fem/stored_elastic_system.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <cmath>
 #include <stdexcept>
 
 namespace FloorBlock
@@ -77,6 +80,18 @@ namespace FloorBlock
       full.matrix = &full_stiffness;
       full.cache  = &cache;
       assemble_elastic_system(space, model, zero, none, full);
+      absolute_stiffness.reinit(full_pattern);
+      absolute_stiffness.copy_from(full_stiffness);
+      Epetra_CrsMatrix &entries =
+        const_cast<Epetra_CrsMatrix &>(absolute_stiffness.trilinos_matrix());
+      for (int row = 0; row < entries.NumMyRows(); ++row)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          entries.ExtractMyRowView(row, n_entries, values);
+          for (int k = 0; k < n_entries; ++k)
+            values[k] = std::abs(values[k]);
+        }
 
       ElasticModel<dim> gravity_only = model;
       for (auto &entry : gravity_only.pressures)
@@ -113,6 +128,24 @@ namespace FloorBlock
           residual(constrained_dofs[k]) = 0.;
         }
       residual.compress(dealii::VectorOperation::insert);
+    }
+
+    template <int dim>
+    double
+    StoredElasticSystem<dim>::residual_magnitude(const Vector &solution,
+                                                 const double  gravity_factor,
+                                                 const double  pressure_factor) const
+    {
+      Vector magnitude(solution);
+      for (auto &value : magnitude)
+        value = std::abs(value);
+      Vector product(solution);
+      absolute_stiffness.vmult(product, magnitude);
+      for (const auto dof : product.locally_owned_elements())
+        product(dof) += std::abs(gravity_factor * gravity_load(dof)) +
+                        std::abs(pressure_factor * pressure_load(dof));
+      product.compress(dealii::VectorOperation::insert);
+      return product.l2_norm();
     }
 
     template class StoredElasticSystem<2>;

@@ -71,8 +71,21 @@ namespace FloorBlock
                const double                                 pressure_factor,
                dealii::TrilinosWrappers::MPI::Vector       &residual) const;
 
+      /**
+       * @brief Round-off scale of residual() at @p solution (N): the l2 norm
+       * of |K| |u| + g |f_g| + p |f_p|, entry by entry. residual() sums
+       * terms of this size that cancel, so its error is of order eps times
+       * this (times the few entries per row).
+       */
+      double
+      residual_magnitude(const dealii::TrilinosWrappers::MPI::Vector &solution,
+                         const double gravity_factor,
+                         const double pressure_factor) const;
+
     private:
       dealii::TrilinosWrappers::SparsityPattern full_pattern;
+      /** |K| entry by entry, for residual_magnitude(). */
+      dealii::TrilinosWrappers::SparseMatrix absolute_stiffness;
       dealii::TrilinosWrappers::SparseMatrix    full_stiffness;
       dealii::TrilinosWrappers::SparseMatrix    tangent_stiffness;
       /** Loads at factor one (N): gravity alone, pressures alone. */

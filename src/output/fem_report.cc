@@ -92,6 +92,7 @@ namespace FloorBlock::Output
            {"multiplier_updates", increment.n_multiplier_updates},
            {"cutbacks", increment.n_cutbacks},
            {"relative_residual", increment.relative_residual},
+           {"stopped_at_round_off_floor", increment.round_off_limited},
            {"n_stick", increment.counts.n_stick},
            {"n_slip", increment.counts.n_slip},
            {"n_open", increment.counts.n_open},

@@ -1,0 +1,91 @@
+// The Newton driver's stopping rules, on a scalar problem r(x) = a x - b
+// whose residual cannot fall below a fixed noise level, as the residual of
+// a real system cannot fall below its round-off.
+#include <contact/newton_driver.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+  using namespace FloorBlock::Contact;
+
+  constexpr double slope = 4., load = 8.; // r(x) = slope x - load (N)
+
+  struct NoisyScalarProblem
+  {
+    double noise = 0.;           ///< residual level reached at best (N)
+    double floor = 0.;           ///< reported round-off floor (N)
+    double x = 0., base = 0., update = 0.;
+
+    NewtonCallbacks
+    callbacks()
+    {
+      NewtonCallbacks result;
+      result.assemble = [this]() {
+        NewtonIterate iterate;
+        iterate.residual_norm   = std::max(std::abs(slope * x - load), noise);
+        iterate.round_off_floor = floor;
+        return iterate; // one contact set throughout: signature 0
+      };
+      result.solve_update = [this](std::string &) {
+        update = -(slope * x - load) / slope;
+        base   = x;
+        return true;
+      };
+      result.set_step = [this](const double step) { x = base + step * update; };
+      return result;
+    }
+  };
+
+  NewtonSettings
+  settings()
+  {
+    NewtonSettings newton;
+    newton.relative_tolerance = 1e-10;
+    newton.max_iterations     = 10;
+    return newton;
+  }
+
+  TEST(NewtonDriver, LinearProblemConvergesInOneStep)
+  {
+    NoisyScalarProblem problem;
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.n_iterations, 1u);
+    EXPECT_FALSE(report.stopped_at_round_off_floor);
+  }
+
+  TEST(NewtonDriver, ResidualStuckAboveToleranceFailsWithoutAFloor)
+  {
+    NoisyScalarProblem problem;
+    problem.noise = 1e-9 * load; // 10 x the tolerance
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_FALSE(report.converged);
+    EXPECT_EQ(report.failure_reason, "no convergence within the iteration limit");
+  }
+
+  TEST(NewtonDriver, ResidualAtTheRoundOffFloorConverges)
+  {
+    NoisyScalarProblem problem;
+    problem.noise = 1e-9 * load;
+    problem.floor = 2e-9 * load;
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_TRUE(report.converged);
+    EXPECT_TRUE(report.stopped_at_round_off_floor);
+    EXPECT_EQ(report.n_iterations, 1u);
+  }
+
+  TEST(NewtonDriver, FloorNeverRelaxesTheToleranceBeyondTheCap)
+  {
+    NoisyScalarProblem problem;
+    // The floor covers the residual, but the residual is 1e4 x the
+    // tolerance, beyond max_round_off_relief = 1e3: not converged.
+    problem.noise = 1e-6 * load;
+    problem.floor = 1e-5 * load;
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_FALSE(report.converged);
+  }
+} // namespace
