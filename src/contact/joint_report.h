@@ -84,11 +84,13 @@ namespace FloorBlock
      * @brief Pointwise peak (and where), and the largest mean of t_n over a
      * window of length report.averaging_length, from report.profile.
      *
-     * Each node's force w_i t_i is spread uniformly over its tributary
-     * interval (midpoints to its neighbours), so a window integrates force,
-     * whatever the node spacing; windows are centred on nodes and shifted to
-     * stay inside the joint (the whole joint if it is shorter than the
-     * window). Shared with the rigid-block model so both report the same
+     * Each node's force w_i t_i is spread uniformly over an interval of
+     * its own length w_i, the intervals laid end to end in arc order (on a
+     * straight joint: its tributary, midpoints to its neighbours), so a
+     * window integrates force whatever the node spacing and its mean never
+     * exceeds the pointwise peak; windows are centred on nodes' intervals
+     * and shifted to stay inside the joint (the whole joint if it is
+     * shorter than the window). Shared with the rigid-block model so both report the same
      * averaged peak.
      *
      * @param[in,out] report Profile sorted by arc_position, peaks zero.
