@@ -8,8 +8,8 @@ namespace FloorBlock::App
 {
   /**
    * @brief The discretisation error of each FEM figure, estimated as the
-   * difference to one solve with halved element sizes (until a refinement
-   * ladder exists; rigid blocks: twice the points per joint): per joint,
+   * difference to one solve on refined_scene() (rigid blocks: twice the
+   * points per joint): per joint,
    * |coarse - fine| and its ratio to |fine| for the normal force, contact
    * length and the peak stresses.
    */
@@ -17,8 +17,9 @@ namespace FloorBlock::App
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine);
 
   /**
-   * @brief The scene with Mesh/Corner size and Mesh/Far size halved and
-   * Model/Rigid points per joint doubled.
+   * @brief Level 1 of `converge`'s uniform ladder (uniform_level_scene:
+   * every size of the Gmsh size function halved, the growth rate's excess
+   * over 1 too) and Model/Rigid points per joint doubled.
    */
   Parameters::ScenarioParameters
   refined_scene(Parameters::ScenarioParameters scene);

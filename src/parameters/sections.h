@@ -157,6 +157,13 @@ namespace FloorBlock::Parameters
     iterative
   };
 
+  enum class DirectSolverChoice
+  {
+    automatic,
+    klu,
+    umfpack
+  };
+
   /** Subsection "Solver": the contact FEM's numerics. */
   struct SolverParameters
   {
@@ -167,12 +174,13 @@ namespace FloorBlock::Parameters
     LinearSolverChoice linear_solver;
     unsigned int       max_direct_dofs;
     unsigned int       max_reuse_iterations; ///< GMRES on stored LU factors
+    DirectSolverChoice direct_solver;
     double             newton_tolerance; ///< relative to the load norm
     unsigned int       max_newton_iterations;
     unsigned int       max_cutbacks;
     double             averaging_length; ///< m, for the averaged peak stress
     double             rigid_penalty_factor;
-    /// Whether `run` repeats the solve with halved element sizes and
+    /// Whether `run` repeats the solve one uniform ladder level finer and
     /// reports the differences as the discretisation error estimate.
     bool               estimate_error_by_refined_solve;
 

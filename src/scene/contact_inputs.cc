@@ -144,6 +144,12 @@ namespace FloorBlock::Scene
         Solver::LinearSolverKind::automatic;
     settings.linear.max_direct_dofs = solver.max_direct_dofs;
     settings.linear.max_reuse_iterations = solver.max_reuse_iterations;
+    settings.linear.direct_solver =
+      solver.direct_solver == Parameters::DirectSolverChoice::klu ?
+        Solver::DirectSolverKind::klu :
+      solver.direct_solver == Parameters::DirectSolverChoice::umfpack ?
+        Solver::DirectSolverKind::umfpack :
+        Solver::DirectSolverKind::automatic;
     settings.max_cutbacks           = solver.max_cutbacks;
     settings.averaging_length       = solver.averaging_length;
     settings.rigid_penalty_factor   = solver.rigid_penalty_factor;

@@ -1,4 +1,5 @@
 #include <solver/reused_factorization.h>
+#include <solver/umfpack_factors.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -81,44 +82,65 @@ namespace FloorBlock
                                    std::string        &message)
     {
       has_factors = false;
-      const bool first = !direct;
+      const bool first = factored_matrix.m() == 0;
       if (first)
-        factored_matrix.reinit(matrix);
+        {
+          factored_matrix.reinit(matrix);
+          const bool serial = matrix.trilinos_matrix().NumMyRows() ==
+                              matrix.trilinos_matrix().NumGlobalRows();
+          const bool use_umfpack =
+            serial &&
+            (settings.direct_solver == DirectSolverKind::umfpack ||
+             (settings.direct_solver == DirectSolverKind::automatic &&
+              matrix.m() >= settings.min_umfpack_dofs));
+          package = use_umfpack ? "UMFPACK" : settings.direct_package;
+          if (use_umfpack)
+            umfpack = std::make_unique<UmfpackFactors>();
+        }
       factored_matrix.copy_from(matrix);
       try
         {
-          if (first)
+          if (umfpack)
+            umfpack->factorize(factored_matrix.trilinos_matrix());
+          else
             {
-              problem = std::make_unique<Epetra_LinearProblem>();
-              // Amesos takes a non-const pointer but only reads the matrix.
-              problem->SetOperator(const_cast<Epetra_CrsMatrix *>(
-                &factored_matrix.trilinos_matrix()));
-              Amesos factory;
-              direct.reset(
-                factory.Create(settings.direct_package.c_str(), *problem));
+              if (first)
+                {
+                  problem = std::make_unique<Epetra_LinearProblem>();
+                  // Amesos takes a non-const pointer but only reads the
+                  // matrix.
+                  problem->SetOperator(const_cast<Epetra_CrsMatrix *>(
+                    &factored_matrix.trilinos_matrix()));
+                  Amesos factory;
+                  direct.reset(factory.Create(package.c_str(), *problem));
+                  if (!direct)
+                    {
+                      message = "Amesos has no package " + package;
+                      return false;
+                    }
+                  if (direct->SymbolicFactorization() != 0)
+                    {
+                      direct.reset();
+                      message = package + ": symbolic factorisation failed";
+                      return false;
+                    }
+                }
               if (!direct)
                 {
-                  message = "Amesos has no package " + settings.direct_package;
+                  message = "Amesos has no package " + package;
                   return false;
                 }
-              if (direct->SymbolicFactorization() != 0)
+              if (direct->NumericFactorization() != 0)
                 {
-                  direct.reset();
-                  message = settings.direct_package +
-                            ": symbolic factorisation failed";
+                  message = package +
+                            ": numeric factorisation failed (singular matrix)";
                   return false;
                 }
-            }
-          if (direct->NumericFactorization() != 0)
-            {
-              message = settings.direct_package +
-                        ": numeric factorisation failed (singular matrix)";
-              return false;
             }
         }
       catch (const std::exception &error)
         {
-          message = settings.direct_package + ": " + error.what();
+          message = package + ": " + error.what();
           return false;
         }
       ++counters.n_factorizations;
@@ -129,13 +151,17 @@ namespace FloorBlock
     void
     ReusedFactorization::vmult(Vector &dst, const Vector &src) const
     {
+      if (umfpack)
+        {
+          umfpack->solve(src.begin(), dst.begin());
+          return;
+        }
       // Amesos reads the vectors from the problem at every Solve() and
       // does not modify the right-hand side.
       problem->SetLHS(&dst.trilinos_vector());
       problem->SetRHS(const_cast<Epetra_MultiVector *>(&src.trilinos_vector()));
       if (direct->Solve() != 0)
-        throw std::runtime_error(settings.direct_package +
-                                 ": triangular solve failed");
+        throw std::runtime_error(package + ": triangular solve failed");
     }
 
     LinearSolveInfo
@@ -164,7 +190,7 @@ namespace FloorBlock
         {
           info.n_iterations = control.last_step();
           counters.n_krylov_iterations += info.n_iterations;
-          info.message = "GMRES on stored " + settings.direct_package +
+          info.message = "GMRES on stored " + package +
                          " factors: no convergence in " +
                          std::to_string(info.n_iterations) + " iterations";
           return info;
@@ -173,7 +199,7 @@ namespace FloorBlock
       counters.n_krylov_iterations += info.n_iterations;
       if (!is_finite(trial))
         {
-          info.message = settings.direct_package +
+          info.message = package +
                          " returned non-finite values (singular matrix)";
           return info;
         }
@@ -185,7 +211,7 @@ namespace FloorBlock
       true_residual.sadd(-1., rhs);
       if (!(true_residual.l2_norm() <= target))
         {
-          info.message = "GMRES on stored " + settings.direct_package +
+          info.message = "GMRES on stored " + package +
                          " factors: true residual above tolerance";
           return info;
         }
@@ -245,7 +271,7 @@ namespace FloorBlock
         }
       if (!is_finite(trial))
         {
-          info.message = settings.direct_package +
+          info.message = package +
                          " returned non-finite values (singular matrix)";
           return info;
         }

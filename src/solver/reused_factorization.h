@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <string>
 
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
@@ -25,9 +26,12 @@ namespace FloorBlock
       unsigned int n_krylov_iterations = 0;
     };
 
+    class UmfpackFactors;
+
     /**
-     * @brief Sparse direct solver (Amesos KLU) that keeps its LU factors
-     * and tries them on the next matrix first.
+     * @brief Sparse direct solver (Amesos KLU or UMFPACK, see
+     * LinearSolverSettings::direct_solver) that keeps its LU factors and
+     * tries them on the next matrix first.
      *
      * Between two Newton iterations of a contact solve only the joint
      * pairs whose state changed alter the matrix: a low-rank change. The
@@ -88,6 +92,10 @@ namespace FloorBlock
       dealii::TrilinosWrappers::SparseMatrix factored_matrix;
       std::unique_ptr<Epetra_LinearProblem>  problem;
       std::unique_ptr<Amesos_BaseSolver>     direct;
+      /** Set instead of @p direct when UMFPACK is chosen. */
+      std::unique_ptr<UmfpackFactors>        umfpack;
+      /** Name of the LU in messages: "Amesos_Klu" or "UMFPACK". */
+      std::string                            package;
       bool                                   has_factors = false;
       ReuseStatistics                        counters;
     };

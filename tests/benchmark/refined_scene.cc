@@ -158,11 +158,12 @@ namespace FloorBlock::Benchmark
   bool
   LinearElasticSystem::newton_iteration()
   {
-    // The solver evaluates the joints before the bulk; the order does not
-    // change the work.
+    // As ContactSolver since b864195: joints evaluated, the stored bulk
+    // copied and multiplied (Fem::StoredElasticSystem), joints assembled,
+    // one linear solve.
     const auto responses =
       Contact::evaluate_contact(nodes, pair_laws, histories, solution);
-    assemble_bulk(&warm_cache);
+    reuse_bulk();
     Contact::assemble_contact(nodes, responses, constraints, &matrix, &residual);
     return solve();
   }

@@ -85,7 +85,7 @@ namespace FloorBlock::Benchmark
 
     /**
      * @brief One Newton iteration as the contact solver does it: joint
-     * evaluation, bulk assembly from the warm cell-matrix cache, pair
+     * evaluation, stored bulk copied and multiplied (reuse_bulk()), pair
      * assembly, linear solve, constraint distribution.
      */
     bool

@@ -151,3 +151,39 @@ namespace
     EXPECT_EQ(x(0), 7.);
   }
 } // namespace
+
+namespace
+{
+  // The same checks with UMFPACK as the LU (Solver::UmfpackFactors).
+  TEST_F(ReusedFactorizationTest, UmfpackSolvesReusesAndRefactorises)
+  {
+    settings.direct_solver = Solver::DirectSolverKind::umfpack;
+    Solver::ReusedFactorization solver(settings);
+    fill(matrix, 0, 0, 0.);
+    ASSERT_TRUE(solver.solve(matrix, rhs, x).success);
+    EXPECT_LT(relative_residual(matrix, x, rhs), 1e-10);
+    fill(matrix, 50, 53, 5.);
+    ASSERT_TRUE(solver.solve(matrix, rhs, x).success);
+    EXPECT_LT(relative_residual(matrix, x, rhs), 1e-10);
+    EXPECT_EQ(solver.statistics().n_reused, 1u);
+    fill(matrix, 0, 100, 5.);
+    ASSERT_TRUE(solver.solve(matrix, rhs, x).success);
+    EXPECT_LT(relative_residual(matrix, x, rhs), 1e-10);
+    EXPECT_EQ(solver.statistics().n_factorizations, 2u);
+  }
+
+  TEST_F(ReusedFactorizationTest, UmfpackSingularMatrixFailsCleanly)
+  {
+    settings.direct_solver = Solver::DirectSolverKind::umfpack;
+    Solver::ReusedFactorization solver(settings);
+    matrix = 0.;
+    for (unsigned int i = 0; i + 1 < n; ++i)
+      matrix.set(i, i, 1.);
+    matrix.compress(dealii::VectorOperation::insert);
+    x = 7.;
+    const Solver::LinearSolveInfo info = solver.solve(matrix, rhs, x);
+    EXPECT_FALSE(info.success);
+    EXPECT_NE(info.message.find("UMFPACK"), std::string::npos) << info.message;
+    EXPECT_EQ(x(0), 7.);
+  }
+} // namespace
