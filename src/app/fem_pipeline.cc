@@ -16,6 +16,8 @@
 
 namespace FloorBlock::App
 {
+  using nlohmann::json;
+
   namespace
   {
     std::string
@@ -25,6 +27,31 @@ namespace FloorBlock::App
       for (const std::string &attempt : failure.attempts)
         text += "; tried: " + attempt;
       return text;
+    }
+
+    /**
+     * What fem.json can say about the work of a failed solve: the solver
+     * returns the failed attempts and the last converged increment, and
+     * stops an increment after exactly Solver/Max cutbacks cutbacks.
+     */
+    json
+    failure_json(const Contact::ContactSolveFailure &failure,
+                 const Parameters::SolverParameters &solver)
+    {
+      return {
+        {"cutbacks_before_failure", solver.max_cutbacks},
+        {"n_failed_attempts", failure.attempts.size()},
+        {"failed_attempts", failure.attempts},
+        {"counted",
+         "n_increments, newton_iterations and increments cover only the last "
+         "converged increment (none if the first failed); cutbacks adds "
+         "cutbacks_before_failure, the cutbacks of the increment that failed"},
+        {"not_reported",
+         "for a failed solve the solver returns neither the Newton "
+         "iterations, linear solves and wall time of its failed attempts nor "
+         "the converged increments before the last one: linear_solves, "
+         "lu_factorizations and krylov_iterations_on_lu_factors are left out "
+         "and wall_time_s holds no contact-solve section"}};
     }
   } // namespace
 
@@ -48,12 +75,14 @@ namespace FloorBlock::App
     Output::FemReportContext context{scene.geometry.n_blocks,
                                      scene.geometry.support_width,
                                      "converged",
-                                     "every loading increment converged"};
+                                     "every loading increment converged",
+                                     scene.material.youngs_modulus()};
     Contact::ContactSolver solver(
       triangulation,
       Contact::make_floor_scene(Scene::floor_scene_settings(scene)),
       Scene::contact_solver_settings(scene,
                                      write_vtu ? folder.path_of("vtu") : ""));
+    json failure_record;
     try
       {
         outcome.result    = solver.run();
@@ -63,6 +92,8 @@ namespace FloorBlock::App
       {
         context.status      = "not converged";
         context.status_text = failure_text(failure);
+        context.cutbacks_before_failure = scene.solver.max_cutbacks;
+        failure_record = failure_json(failure, scene.solver);
         if (failure.last_converged)
           outcome.result.increments.push_back(*failure.last_converged);
         // The sizes are known even when no increment converged.
@@ -75,6 +106,13 @@ namespace FloorBlock::App
       write_deformed_view(solver, folder.path_of("deformed.png"));
 
     outcome.fem = Output::fem_json(outcome.result, context);
+    if (!outcome.converged)
+      {
+        for (const char *key : {"linear_solves", "lu_factorizations",
+                                "krylov_iterations_on_lu_factors"})
+          outcome.fem.erase(key);
+        outcome.fem["failure"] = failure_record;
+      }
     outcome.fem["model"]        = "elastic FEM";
     outcome.fem["model_choice"] = scene.model.choice_reason;
     outcome.fem["mesh"] = {{"n_cells", outcome.mesh.n_cells},
@@ -91,16 +129,27 @@ namespace FloorBlock::App
     constexpr double kN  = Units::newtons_per_kilonewton;
     constexpr double MPa = Units::pascals_per_megapascal;
     const bool  meshed = outcome.fem["mesh"].is_object();
-    std::string text   = fmt::format(
-      "{}: {} ({}), {}{} DoFs, {} increments, {} Newton "
-      "iterations, force balance error {:.1e}\n",
+    // A failed solve keeps only its last converged increment (fem.json
+    // "failure"): say so instead of passing it off as the whole run.
+    const std::string increments =
+      outcome.fem.contains("failure") ?
+        fmt::format("{} converged increment(s) kept with {} Newton "
+                    "iterations (failed attempts not counted), {} cutbacks",
+                    outcome.result.increments.size(),
+                    outcome.fem["newton_iterations"].get<unsigned int>(),
+                    outcome.fem["cutbacks"].get<unsigned int>()) :
+        fmt::format("{} increments, {} Newton iterations, {} cutbacks",
+                    outcome.result.increments.size(),
+                    outcome.fem["newton_iterations"].get<unsigned int>(),
+                    outcome.fem["cutbacks"].get<unsigned int>());
+    std::string text = fmt::format(
+      "{}: {} ({}), {}{} DoFs, {}, {}\n",
       outcome.fem["model"].get<std::string>(),
       outcome.fem["status"].get<std::string>(),
       outcome.fem["status_text"].get<std::string>(),
       meshed ? fmt::format("{} cells, ", outcome.mesh.n_cells) : "",
-      outcome.result.n_dofs, outcome.result.increments.size(),
-      outcome.fem["newton_iterations"].get<unsigned int>(),
-      outcome.fem["force_balance_relative_error"].get<double>());
+      outcome.result.n_dofs, increments,
+      Output::force_balance_text(outcome.fem));
     text += fmt::format("  {:<12} {:>12} {:>14} {:>12} {:>14} {:>10}\n",
                         "joint", "N (kN/m)", "contact (mm)",
                         "peak (MPa)", "averaged (MPa)", "state");

@@ -72,7 +72,8 @@ namespace FloorBlock::App
       scene.geometry.support_width,
       outcome.converged ? "converged" : "not converged",
       outcome.converged ? "every loading increment converged" :
-                          failure_text(rigid)};
+                          failure_text(rigid),
+      scene.material.youngs_modulus()};
     outcome.fem = Output::fem_json(outcome.result, context);
     describe_rigid_model(scene, rigid, outcome.fem);
     folder.write_json("fem.json", outcome.fem);

@@ -20,23 +20,49 @@ namespace FloorBlock::Compare
     ForceComparison
     compare_force(const Scene::MechanismResult &entry,
                   const unsigned int            joint,
-                  const double                  fem_force)
+                  const double                  fem_force,
+                  const bool                    fem_carries_load)
     {
       ForceComparison comparison;
-      comparison.mechanism = Scene::to_string(entry.mechanism);
-      comparison.status    = Analytic::to_string(entry.forces.status);
+      comparison.mechanism          = Scene::to_string(entry.mechanism);
+      comparison.closed_form_status = entry.forces.status;
+      comparison.status = Analytic::to_string(entry.forces.status);
       const auto &values   = entry.forces.lateral_force;
       if (joint == 0 || joint > values.size())
         return comparison;
       comparison.has_value   = true;
       comparison.closed_form = values[joint - 1];
-      comparison.relative_difference =
-        comparison.closed_form != 0. ?
-          (fem_force - comparison.closed_form) / std::abs(comparison.closed_form) :
-          0.;
+      if (!fem_carries_load)
+        comparison.difference_status = DifferenceStatus::no_load;
+      else if (comparison.closed_form == 0.)
+        comparison.difference_status = DifferenceStatus::zero_closed_form;
+      else
+        {
+          comparison.difference_status = DifferenceStatus::defined;
+          comparison.relative_difference =
+            (fem_force - comparison.closed_form) /
+            std::abs(comparison.closed_form);
+        }
       return comparison;
     }
   } // namespace
+
+  std::string
+  to_string(const DifferenceStatus status)
+  {
+    switch (status)
+      {
+        case DifferenceStatus::defined:
+          return "ok";
+        case DifferenceStatus::no_closed_form:
+          return "no_closed_form";
+        case DifferenceStatus::no_load:
+          return "no_load";
+        case DifferenceStatus::zero_closed_form:
+          return "zero_closed_form";
+      }
+    return "unknown";
+  }
 
   std::vector<JointComparison>
   compare_vertical_joints(const Contact::IncrementResult &increment,
@@ -44,6 +70,7 @@ namespace FloorBlock::Compare
                           const ContactConstants &        constants)
   {
     const unsigned int n_blocks = closed_forms.chain.n_blocks();
+    const LoadCheck    load = check_load(increment, constants.youngs_modulus);
     std::vector<JointComparison> comparisons;
     for (const Contact::JointReport &report : increment.joints)
       {
@@ -52,10 +79,10 @@ namespace FloorBlock::Compare
           continue;
         const unsigned int joint = name.number;
 
-        JointComparison comparison{joint, report.normal_force, {}, {}};
+        JointComparison comparison{joint, report.normal_force, {}, {}, load};
         for (const auto &entry : closed_forms.mechanisms)
-          comparison.forces.push_back(
-            compare_force(entry, joint, report.normal_force));
+          comparison.forces.push_back(compare_force(
+            entry, joint, report.normal_force, load.carries_load()));
 
         const auto face_side_material =
           joint == n_blocks ? Geometry::Ids::face_block_material :
@@ -76,6 +103,7 @@ namespace FloorBlock::Compare
         contact.fem_mean_stress          = report.mean_normal_stress;
         contact.fem_peak_stress          = report.peak_normal_stress;
         contact.fem_averaged_peak_stress = report.averaged_peak_normal_stress;
+        contact.fem_carries_load         = load.carries_load();
         comparisons.push_back(comparison);
       }
     return comparisons;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 namespace FloorBlock::Output
 {
@@ -24,21 +25,65 @@ namespace FloorBlock::Output
       return (fem - reference) / std::abs(reference);
     }
 
+    /// Eqs. 6.51-6.53 gave a number: ok or contact_longer_than_block.
+    bool
+    has_closed_form(const Analytic::CornerContact &formula)
+    {
+      return formula.status == Analytic::Status::ok ||
+             formula.status == Analytic::Status::contact_longer_than_block;
+    }
+
+    /// A closed form with a number that is exactly 0 (FEM Q = 0 here).
+    bool
+    has_zero_reference(const Analytic::CornerContact &formula)
+    {
+      return formula.contact_area == 0. || formula.average_stress == 0. ||
+             formula.max_stress == 0.;
+    }
+
+    /**
+     * Status of a contact record: no_load when the FEM carries none; the
+     * closed form's own when it has no number; zero_closed_form when its
+     * numbers are 0 (relative differences undefined); else the closed
+     * form's (ok or flagged).
+     */
+    std::pair<std::string, std::string>
+    contact_status(const Compare::JointComparison &joint)
+    {
+      const auto &formula = joint.contact.closed_form;
+      // y comes from the FEM: without load it is round-off, and so is
+      // whatever the closed form makes of it.
+      if (!joint.contact.fem_carries_load)
+        return {"no_load", no_load_text(joint.load)};
+      if (has_closed_form(formula) && has_zero_reference(formula))
+        return {"zero_closed_form",
+                "Eqs. 6.51-6.53 give zero contact area and stress here (the "
+                "FEM's Q at this joint is zero or negative), so the relative "
+                "differences are undefined."};
+      return {Analytic::to_string(formula.status),
+              Analytic::describe(formula.status)};
+    }
+
     json
     contact_json(const Compare::JointComparison & joint,
                  const Compare::ContactConstants &constants)
     {
       const auto &contact = joint.contact;
       const auto &formula = contact.closed_form;
-      const bool  defined = formula.status == Analytic::Status::ok ||
-                           formula.status ==
-                             Analytic::Status::contact_longer_than_block;
-      const auto  value   = [&](const double x) -> json {
+      const bool  defined = has_closed_form(formula);
+      const bool  comparable =
+        defined && contact.fem_carries_load && !has_zero_reference(formula);
+      const auto value = [&](const double x) -> json {
         return defined ? json(x) : json(nullptr);
       };
+      const auto difference = [&](const double fem, const double reference) {
+        return comparable ? relative_difference(fem, reference) : json(nullptr);
+      };
+      const auto [status, status_text] = contact_status(joint);
       return {
-        {"status", Analytic::to_string(formula.status)},
-        {"status_text", Analytic::describe(formula.status)},
+        {"status", status},
+        {"status_text", status_text},
+        {"closed_form_status", Analytic::to_string(formula.status)},
         {"Q_contact_N", contact.force_over_width},
         {"relative_rotation_rad", contact.relative_rotation},
         {"y_m", contact.floor_lift},
@@ -49,21 +94,55 @@ namespace FloorBlock::Output
         {"A_6_51_m2", value(formula.contact_area)},
         {"A_fem_m2", contact.fem_area},
         {"A_relative_difference",
-         defined ? relative_difference(contact.fem_area, formula.contact_area) :
-                   json(nullptr)},
+         difference(contact.fem_area, formula.contact_area)},
         {"sigma_avg_6_52_Pa", value(formula.average_stress)},
         {"sigma_mean_fem_Pa", contact.fem_mean_stress},
         {"sigma_avg_relative_difference",
-         defined ? relative_difference(contact.fem_mean_stress,
-                                       formula.average_stress) :
-                   json(nullptr)},
+         difference(contact.fem_mean_stress, formula.average_stress)},
         {"sigma_max_6_53_Pa", value(formula.max_stress)},
         {"sigma_max_fem_Pa", contact.fem_peak_stress},
         {"sigma_max_averaged_fem_Pa", contact.fem_averaged_peak_stress},
         {"sigma_max_averaged_relative_difference",
-         defined ? relative_difference(contact.fem_averaged_peak_stress,
-                                       formula.max_stress) :
-                   json(nullptr)}};
+         difference(contact.fem_averaged_peak_stress, formula.max_stress)}};
+    }
+
+    /**
+     * One closed form's Q at a joint: the record's status explains every
+     * null (the closed form has no answer, the FEM carries no load, or the
+     * closed form is exactly 0); closed_form_status is always the closed
+     * form's own.
+     */
+    json
+    force_json(const Compare::ForceComparison &force,
+               const Compare::JointComparison &joint)
+    {
+      using Compare::DifferenceStatus;
+      std::string status      = force.status;
+      std::string status_text = Analytic::describe(force.closed_form_status);
+      if (force.difference_status == DifferenceStatus::no_load)
+        {
+          status      = Compare::to_string(force.difference_status);
+          status_text = no_load_text(joint.load);
+        }
+      else if (force.difference_status == DifferenceStatus::zero_closed_form)
+        {
+          status      = Compare::to_string(force.difference_status);
+          status_text = "The closed form gives Q = 0 here, so the relative "
+                        "difference is undefined; difference_N_per_m is the "
+                        "FEM's Q minus the closed form's.";
+        }
+      const bool defined =
+        force.difference_status == DifferenceStatus::defined;
+      return {{"status", status},
+              {"status_text", status_text},
+              {"closed_form_status", force.status},
+              {"Q_N_per_m",
+               force.has_value ? json(force.closed_form) : json(nullptr)},
+              {"difference_N_per_m",
+               force.has_value ? json(joint.fem_force - force.closed_form) :
+                                 json(nullptr)},
+              {"relative_difference",
+               defined ? json(force.relative_difference) : json(nullptr)}};
     }
 
     std::string
@@ -93,14 +172,7 @@ namespace FloorBlock::Output
       {
         json forces = json::object();
         for (const auto &force : joint.forces)
-          forces[force.mechanism] = {
-            {"status", force.status},
-            {"Q_N_per_m", force.has_value ? json(force.closed_form) :
-                                            json(nullptr)},
-            {"relative_difference",
-             force.has_value ?
-               relative_difference(joint.fem_force, force.closed_form) :
-               json(nullptr)}};
+          forces[force.mechanism] = force_json(force, joint);
         records.push_back(
           {{"joint", joint.joint},
            {"blocks", joint_bodies("vertical", joint.joint, n_blocks)},
@@ -124,25 +196,42 @@ namespace FloorBlock::Output
   std::vector<std::string>
   verdicts(const Compare::JointComparison &face_joint)
   {
+    if (!face_joint.load.carries_load())
+      return {no_load_text(face_joint.load) + " with the closed forms"};
     std::vector<std::string> lines;
     for (const auto &force : face_joint.forces)
-      lines.push_back(
-        force.has_value ?
-          over_or_under((face_joint.fem_force - force.closed_form) /
-                          std::abs(force.closed_form),
-                        "lateral force Q", force.mechanism) +
+      {
+        if (!force.has_value)
+          lines.push_back(force.mechanism + " has no finite Q (" +
+                          force.status + ")");
+        else if (force.difference_status !=
+                 Compare::DifferenceStatus::defined)
+          lines.push_back(fmt::format(
+            "{} gives Q = 0 at the face joint, the FEM {:.4g} kN/m: no "
+            "relative difference ({})",
+            force.mechanism, face_joint.fem_force / kN,
+            Compare::to_string(force.difference_status)));
+        else
+          lines.push_back(
+            over_or_under(force.relative_difference, "lateral force Q",
+                          force.mechanism) +
             (force.status == "ok" ? "" :
                                     " (the mechanism itself is flagged " +
-                                      force.status + ")") :
-          force.mechanism + " has no finite Q (" + force.status + ")");
+                                      force.status + ")"));
+      }
 
     const auto &contact = face_joint.contact;
     const auto &formula = contact.closed_form;
-    if (formula.status != Analytic::Status::ok &&
-        formula.status != Analytic::Status::contact_longer_than_block)
+    if (!has_closed_form(formula))
       {
         lines.push_back("Eqs. 6.51-6.53 have no answer at the face joint: " +
                         Analytic::describe(formula.status));
+        return lines;
+      }
+    if (has_zero_reference(formula))
+      {
+        lines.push_back("Eqs. 6.51-6.53 give no contact at the face joint: "
+                        "its Q is zero");
         return lines;
       }
     lines.push_back(over_or_under(

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 
 namespace FloorBlock::Output
 {
@@ -20,7 +22,84 @@ namespace FloorBlock::Output
         return "stick";
       return counts.n_stick == 0 ? "slip" : "stick-slip";
     }
+
+    /** |applied load + support reactions| (N/m): the relative numerator. */
+    double
+    absolute_imbalance(const Contact::ForceBalance &balance)
+    {
+      return (balance.applied_load + balance.support_reaction).norm();
+    }
+
+    /** Worst force balance over the increments that carry load. */
+    struct BalanceSummary
+    {
+      double       worst_relative = 0.;
+      double       worst_absolute = 0.; ///< N/m, over every increment
+      unsigned int n_unloaded     = 0;
+      double       largest_round_off_force = 0.; ///< N/m
+    };
+
+    json
+    balance_json(const BalanceSummary &summary, const std::size_t n_increments)
+    {
+      std::string status = "ok";
+      std::string text   = fmt::format(
+        "worst relative error over the {} increments that carry load",
+        n_increments - summary.n_unloaded);
+      if (n_increments == 0)
+        {
+          status = "no increment";
+          text   = "no increment converged: nothing to balance";
+        }
+      else if (summary.n_unloaded == n_increments)
+        {
+          status = "no load";
+          text   = fmt::format(
+            "no increment carries load (the applied load, the support "
+            "reactions and every joint force stay below the round-off of the "
+            "elastic forces, at most {:.1e} N/m): a relative error of a zero "
+            "load is undefined and reported as 0; the absolute error is the "
+            "round-off",
+            summary.largest_round_off_force);
+        }
+      else if (summary.n_unloaded > 0)
+        text += fmt::format("; {} increments carry no load and are left out "
+                            "(their relative error is reported as 0)",
+                            summary.n_unloaded);
+      return {{"force_balance_relative_error", summary.worst_relative},
+              {"force_balance_absolute_error_N_per_m", summary.worst_absolute},
+              {"force_balance_status", status},
+              {"force_balance_status_text", text}};
+    }
   } // namespace
+
+  std::string
+  no_load_text(const Compare::LoadCheck &check)
+  {
+    return fmt::format(
+      "the FEM carries no load: the applied load, the support reactions and "
+      "every joint force are at most {:.1e} N/m, below the round-off of the "
+      "elastic forces its displacements cause ({:.0e} E |u|max = {:.1e} N/m), "
+      "so there is nothing to compare",
+      check.largest_force, Compare::round_off_force_fraction,
+      check.round_off_force);
+  }
+
+  std::string
+  force_balance_text(const json &fem)
+  {
+    const std::string status = fem["force_balance_status"];
+    const double      absolute =
+      fem["force_balance_absolute_error_N_per_m"].get<double>();
+    if (status == "no load")
+      return fmt::format("no load (force balance {:.1e} N/m, round-off)",
+                         absolute);
+    if (status != "ok")
+      return "force balance: " + status;
+    return fmt::format("force balance error {:.1e} ({:.1e} N/m)",
+                       fem["force_balance_relative_error"].get<double>(),
+                       absolute);
+  }
 
   json
   joint_bodies(const std::string &kind,
@@ -76,15 +155,24 @@ namespace FloorBlock::Output
   fem_json(const Contact::SolveResult &result,
            const FemReportContext &    context)
   {
-    json increments = json::array();
-    unsigned int n_newton = 0, n_cutbacks = 0;
-    double       worst_imbalance = 0;
+    json           increments = json::array();
+    unsigned int   n_newton   = 0;
+    unsigned int   n_cutbacks = context.cutbacks_before_failure;
+    BalanceSummary balance;
     for (const auto &increment : result.increments)
       {
         n_newton += increment.n_newton_iterations;
         n_cutbacks += increment.n_cutbacks;
-        worst_imbalance =
-          std::max(worst_imbalance, increment.balance.relative_imbalance);
+        const Compare::LoadCheck load =
+          Compare::check_load(increment, context.youngs_modulus);
+        const double relative =
+          load.carries_load() ? increment.balance.relative_imbalance : 0.;
+        const double absolute = absolute_imbalance(increment.balance);
+        balance.worst_relative = std::max(balance.worst_relative, relative);
+        balance.worst_absolute = std::max(balance.worst_absolute, absolute);
+        balance.n_unloaded += load.carries_load() ? 0 : 1;
+        balance.largest_round_off_force =
+          std::max(balance.largest_round_off_force, load.round_off_force);
         increments.push_back(
           {{"stage", stage_name(increment.stage)},
            {"stage_factor", increment.stage_factor},
@@ -96,8 +184,9 @@ namespace FloorBlock::Output
            {"n_stick", increment.counts.n_stick},
            {"n_slip", increment.counts.n_slip},
            {"n_open", increment.counts.n_open},
-           {"force_balance_relative_error",
-            increment.balance.relative_imbalance},
+           {"force_balance_relative_error", relative},
+           {"force_balance_absolute_error_N_per_m", absolute},
+           {"force_balance_status", load.carries_load() ? "ok" : "no load"},
            {"wall_time_s", increment.wall_time}});
       }
 
@@ -114,7 +203,7 @@ namespace FloorBlock::Output
             {"rotation_rad", motion.rotation}};
       }
 
-    return {{"status", context.status},
+    json fem = {{"status", context.status},
             {"status_text", context.status_text},
             {"numbering", numbering_note},
             {"forces_per", "*_N_per_m per metre of face; *_N_over_b and "
@@ -128,11 +217,12 @@ namespace FloorBlock::Output
             {"linear_solves", result.n_linear_solves},
             {"lu_factorizations", result.n_factorizations},
             {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
-            {"force_balance_relative_error", worst_imbalance},
             {"wall_time_s", result.wall_times},
             {"joints", joints},
             {"body_motions_by_material_id", blocks},
             {"increments", increments}};
+    fem.update(balance_json(balance, result.increments.size()));
+    return fem;
   }
 
   std::string

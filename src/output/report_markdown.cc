@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <output/fem_report.h>
 #include <output/numbering_note.h>
 #include <output/report_markdown.h>
 
@@ -125,7 +126,7 @@ namespace FloorBlock::Output
       "{:.1f} deg, support load {:.0f} t on blocks {} from the face, b = {} "
       "m, floor lift {} m ({}), joints {}.\n\n"
       "Model: {} ({}): {} ({}); {} DoFs, {} increments, {} Newton "
-      "iterations, force-balance error {:.1e}.\n\n",
+      "iterations, {} cutbacks, {}.\n\n",
       scene.scene_name, numbering_note, scene.geometry.n_blocks,
       scene.geometry.block_width, scene.geometry.block_height,
       scene.bedding.shape == Parameters::BeddingShape::planar ?
@@ -142,8 +143,8 @@ namespace FloorBlock::Output
       fem.value("model", "elastic FEM"), fem.value("model_choice", ""),
       fem["status"].get<std::string>(), fem["status_text"].get<std::string>(),
       fem["n_dofs"].dump(), fem["n_increments"].dump(),
-      fem["newton_iterations"].dump(),
-      fem["force_balance_relative_error"].get<double>());
+      fem["newton_iterations"].dump(), fem["cutbacks"].dump(),
+      force_balance_text(fem));
 
     if (fem.value("model", "elastic FEM") != "elastic FEM")
       text += "Columns and verdicts marked FEM hold the numbers of the " +

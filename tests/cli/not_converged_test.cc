@@ -50,6 +50,14 @@ TEST(NotConverged, RunKeepsLastConvergedIncrementAndSaysWhy)
   // summary.json has nulls only where a closed form has no answer, each with
   // a status; the FEM's own numbers are never null.
   EXPECT_EQ(read_text(folder + "/fem.json").find("null"), std::string::npos);
+
+  // The failed attempt is listed and the counters say what they cover;
+  // linear solves, which the solver does not return for a failed solve,
+  // are left out rather than written as 0.
+  ASSERT_TRUE(fem.contains("failure"));
+  EXPECT_EQ(fem["failure"]["failed_attempts"].size(), 1u);
+  EXPECT_EQ(fem["failure"]["cutbacks_before_failure"], 0);
+  EXPECT_FALSE(fem.contains("linear_solves"));
 }
 
 TEST(NotConverged, NothingConvergedStillWritesAnHonestSummary)
