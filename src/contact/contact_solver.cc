@@ -43,16 +43,6 @@ namespace FloorBlock
        */
       constexpr double stage_end_tolerance = 1e-12;
 
-      /**
-       * Terms per residual entry that round-off can accumulate over: a row
-       * of the Q1 plane-strain stiffness has 18 entries (9 nodes x 2), and
-       * the worst-case error of such a sum is 18 eps times the sum of the
-       * magnitudes. Only the floor in the Newton stop test uses it (bug 2
-       * of tests/scenarios/HARD_CASES.md: kn = 1e6 Pa/m stagnated at 1.8e-10
-       * of the load, above a 1e-10 tolerance, for 7 x 100 iterations).
-       */
-      constexpr double round_off_entries = 18.;
-
       /** kn h / E above which a failure suggests the rigid law (-). */
       constexpr double ill_conditioned_joint_ratio = 3.;
 
@@ -337,10 +327,8 @@ namespace FloorBlock
         iterate.residual_norm = residual.l2_norm();
         iterate.set_signature = active_set.signature();
         iterate.counts        = active_set.counts();
-        iterate.round_off_floor =
-          round_off_entries * std::numeric_limits<double>::epsilon() *
-          bulk->residual_magnitude(
-            current_solution, factors.gravity, factors.pressure);
+        iterate.round_off_floor = bulk->round_off_floor(
+          current_solution, factors.gravity, factors.pressure);
         last_iterate_counts   = iterate.counts;
         console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
                 << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
@@ -362,13 +350,11 @@ namespace FloorBlock
 
       if (prediction > 0.)
         {
-          // The Newton stop test is relative to the larger of the load and
-          // the first residual. Without the predictor that first residual
-          // is the one at the last converged state; keep it as the
-          // reference, so that the predictor changes where Newton starts
-          // but not when it stops. (Referenced to the load alone, a
-          // 1e-12 tolerance fell below the round-off of K u under a large
-          // uplift, and Newton never stopped.)
+          // The stop test stays relative to the larger of the load and the
+          // residual at the last converged state, as without the predictor:
+          // the predictor changes where Newton starts, not when it stops.
+          // (Relative to the load alone, a 1e-12 tolerance fell below the
+          // round-off of K u under a large uplift.)
           reference_load =
             std::max(reference_load, callbacks.assemble().residual_norm);
           current_solution.add(prediction, last_change);
@@ -382,11 +368,17 @@ namespace FloorBlock
         any_rigid ? settings.max_multiplier_updates : 1;
       for (unsigned int round = 1; round <= max_updates; ++round)
         {
-          const NewtonReport report =
-            solve_newton(settings.newton, reference_load, callbacks);
+          const NewtonReport report = solve_newton(
+            settings.newton,
+            reference_load,
+            callbacks,
+            prediction > 0. && round == 1 ?
+              ReferenceForce::given :
+              ReferenceForce::given_or_first_residual);
           increment.n_newton_iterations += report.n_iterations;
           increment.round_off_limited =
-            increment.round_off_limited || report.stopped_at_round_off_floor;
+            increment.round_off_limited ||
+            report.stopped_at_round_off_floor;
           increment.n_multiplier_updates = round;
           increment.relative_residual    = report.relative_residual;
           if (!report.converged)
@@ -514,7 +506,11 @@ namespace FloorBlock
               if (!solved)
                 {
                   record_failure(", extrapolated start");
-                  increment = IncrementResult();
+                  // The discarded attempt's iterations are work done for
+                  // this increment: they stay in its count.
+                  const unsigned int discarded = increment.n_newton_iterations;
+                  increment                     = IncrementResult();
+                  increment.n_newton_iterations = discarded;
                 }
             }
           if (!solved)

@@ -21,29 +21,45 @@ namespace FloorBlock
         return tangent;
       }
 
+      /** Normals closer than this (-) count as one direction. */
+      constexpr double same_normal_tolerance = 1e-9;
+
       /**
-       * Normal of the joint's straight part: the node normal carrying the
-       * most weight. On a straight side every node shares one normal
-       * exactly; fillet nodes at the rounded corners turn away from it.
+       * Reference normal of a joint: the node normal carrying most of the
+       * weight (the straight part; fillet nodes at rounded corners turn
+       * away from it), or, on a curved joint where no normal carries half
+       * the weight, the weighted mean normal (the chord's normal).
        */
       dealii::Tensor<1, 2>
-      dominant_normal(const std::vector<ContactNode<2>> &nodes,
-                      const std::vector<unsigned int>   &members)
+      reference_normal(const std::vector<ContactNode<2>> &nodes,
+                       const std::vector<unsigned int>   &members)
       {
         std::vector<std::pair<dealii::Tensor<1, 2>, double>> groups;
+        dealii::Tensor<1, 2> weighted_sum;
+        double               total_weight = 0.;
         for (const unsigned int p : members)
           {
-            auto group = std::find_if(groups.begin(), groups.end(), [&](const auto &g) {
-              return (g.first - nodes[p].normal).norm() < 1e-9;
-            });
+            const ContactNode<2> &node = nodes[p];
+            weighted_sum += node.weight * node.normal;
+            total_weight += node.weight;
+            auto group = std::find_if(
+              groups.begin(), groups.end(), [&](const auto &candidate) {
+                return (candidate.first - node.normal).norm() <
+                       same_normal_tolerance;
+              });
             if (group == groups.end())
-              groups.emplace_back(nodes[p].normal, nodes[p].weight);
+              groups.emplace_back(node.normal, node.weight);
             else
-              group->second += nodes[p].weight;
+              group->second += node.weight;
           }
-        return std::max_element(groups.begin(), groups.end(), [](const auto &a, const auto &b) {
-                 return a.second < b.second;
-               })->first;
+        const auto heaviest = std::max_element(
+          groups.begin(), groups.end(), [](const auto &a, const auto &b) {
+            return a.second < b.second;
+          });
+        if (heaviest->second >= total_weight / 2. ||
+            !(weighted_sum.norm() > 0.))
+          return heaviest->first;
+        return weighted_sum / weighted_sum.norm();
       }
 
       /**
@@ -131,13 +147,10 @@ namespace FloorBlock
       const auto        &profile = report.profile;
       const unsigned int n_nodes = profile.size();
       // Each node's force w_k t_k is spread over an interval of length w_k,
-      // the intervals laid end to end in arc order. Where the lumped
-      // weights are the midpoint-to-midpoint tributaries (a straight joint)
-      // this is the tributary rule; on fillets and other curved parts
-      // the weights and the node distances differ, and tributaries taken
-      // from node distances gave an averaged peak of 20.4 MPa above a
-      // pointwise peak of 17.2 MPa (tests/scenarios/hard_rounded_corners.prm).
-      // A window mean can now never exceed the largest nodal traction.
+      // the intervals laid end to end in arc order: on a straight degree-1
+      // joint these are the tributaries; where weights and node distances
+      // differ (fillets, degree 2) a window mean still integrates the force
+      // exactly and never exceeds the largest nodal traction.
       std::vector<double> lower(n_nodes), upper(n_nodes);
       double              reached = 0.;
       for (unsigned int k = 0; k < n_nodes; ++k)
@@ -198,7 +211,7 @@ namespace FloorBlock
           if (members[j].empty())
             continue;
           const ContactNode<2> &first = nodes[members[j].front()];
-          const dealii::Tensor<1, 2> normal  = dominant_normal(nodes, members[j]);
+          const dealii::Tensor<1, 2> normal  = reference_normal(nodes, members[j]);
           const dealii::Tensor<1, 2> tangent = tangent_of(normal);
           std::sort(members[j].begin(),
                     members[j].end(),
@@ -213,13 +226,10 @@ namespace FloorBlock
               const JointResponse<2> &response = responses[p];
               const double            weight   = nodes[p].weight;
               JointNodeSample         sample;
-              // Distance along the joint surface, not the projection on
-              // its straight part: a fillet's arc is up to pi/2 times its
-              // projection, and the tributary intervals of the averaged
-              // peak must be as long as the node weights, or a fillet's
-              // force is spread over too short a window (an averaged peak
-              // of 20.4 MPa above a pointwise peak of 17.2 MPa with 5 cm
-              // fillets, tests/scenarios/hard_rounded_corners.prm).
+              // Distance along the joint surface (the polyline through the
+              // nodes), not the projection on the straight part: on a
+              // fillet the two differ by up to pi/2, and the contact end is
+              // interpolated along the surface.
               sample.arc_position =
                 report.profile.empty() ?
                   0. :
@@ -236,15 +246,11 @@ namespace FloorBlock
               indicators.push_back(
                 contact_indicator(response, nodes[p].normal));
               // The joint's forces are the components of the resultant
-              // along the straight part's normal and tangent, so that the
-              // joint tables balance each block. Summing the node
-              // tractions as scalars counted a fillet node's traction in
-              // full along its own tilted normal: the blocks of the
-              // rounded default scene then missed balance by up to
-              // 2.3 kN/m (bug 7 of tests/scenarios/HARD_CASES.md).
-              // The pair's force density, -t_n n + t_t as in
-              // JointResponse::force_density: compression is along -n,
-              // hence the sign of the normal component.
+              // along the reference normal and tangent, so that the joint
+              // tables balance each block also where fillet nodes turn
+              // their own normals away (a scalar sum of their tractions
+              // does not). The force density is -t_n n + t_t, as
+              // JointResponse::force_density: compression acts along -n.
               const dealii::Tensor<1, 2> force_density =
                 -response.normal_traction * nodes[p].normal +
                 response.tangential_traction;

@@ -48,8 +48,11 @@ namespace FloorBlock
     /**
      * @brief Per-joint forces, closed length, peak and mean normal stress.
      *
-     * Nodal tractions are the pair tractions; forces integrate them with the
-     * lumped weights. The averaged peak is the largest weighted mean of
+     * Nodal tractions are the pair tractions; the normal and shear forces
+     * are the components of their resultant (lumped weights) along the
+     * joint's reference normal and tangent: the normal shared by most of
+     * the joint's weight (its straight part), or the weighted mean normal
+     * on a curved joint. The averaged peak is the largest weighted mean of
      * \f$t_n\f$ over a window of length @p averaging_length centred on a
      * node: the pointwise peak at a sharp corner grows without bound under
      * refinement, the averaged one converges.
@@ -86,7 +89,8 @@ namespace FloorBlock
      *
      * Each node's force w_i t_i is spread uniformly over an interval of
      * its own length w_i, the intervals laid end to end in arc order (on a
-     * straight joint: its tributary, midpoints to its neighbours), so a
+     * straight degree-1 joint: its tributary, midpoints to its
+     * neighbours), so a
      * window integrates force whatever the node spacing and its mean never
      * exceeds the pointwise peak; windows are centred on nodes' intervals
      * and shifted to stay inside the joint (the whole joint if it is

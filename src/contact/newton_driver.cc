@@ -11,15 +11,20 @@ namespace FloorBlock
   {
     NewtonReport
     solve_newton(const NewtonSettings  &settings,
-                 const double           load_norm,
-                 const NewtonCallbacks &callbacks)
+                 const double           reference_force,
+                 const NewtonCallbacks &callbacks,
+                 const ReferenceForce   reference_kind)
     {
       NewtonReport  report;
       NewtonIterate current = callbacks.assemble();
+      const double  first_residual =
+        reference_kind == ReferenceForce::given_or_first_residual ?
+           current.residual_norm :
+           0.;
       // A zero load and zero first residual means nothing to do; the
       // smallest normal double keeps the ratio finite.
-      const double reference = std::max({load_norm,
-                                         current.residual_norm,
+      const double reference = std::max({reference_force,
+                                         first_residual,
                                          std::numeric_limits<double>::min()});
       std::map<std::uint64_t, unsigned int> revisits;
       report.counts            = current.counts;

@@ -87,18 +87,34 @@ namespace FloorBlock
       bool stopped_at_round_off_floor = false;
     };
 
+    /** What the relative stop test divides by. */
+    enum class ReferenceForce
+    {
+      /** The larger of the given force and the first residual. */
+      given_or_first_residual,
+      /**
+       * The given force alone: the caller already took the first residual
+       * of another start into account (the increment predictor: a start
+       * nearer the answer must not loosen or tighten the stop test).
+       */
+      given
+    };
+
     /**
      * @brief Semi-smooth Newton with backtracking line search on the
      * residual norm and a guard against active-set cycling.
      *
      * @param[in] settings Iteration controls.
-     * @param[in] load_norm Norm of the applied load vector (N), part of the
-     *   reference force.
+     * @param[in] reference_force Norm of the applied load vector (N), or
+     *   the whole reference force, see @p reference.
      * @param[in] callbacks The physics.
+     * @param[in] reference How the reference force is formed.
      */
     NewtonReport
     solve_newton(const NewtonSettings  &settings,
-                 const double           load_norm,
-                 const NewtonCallbacks &callbacks);
+                 const double           reference_force,
+                 const NewtonCallbacks &callbacks,
+                 const ReferenceForce   reference =
+                   ReferenceForce::given_or_first_residual);
   } // namespace Contact
 } // namespace FloorBlock

@@ -74,6 +74,7 @@ namespace FloorBlock
       LoadStage    stage = LoadStage::gravity;
       /** Fraction of the stage's load reached (-). */
       double       stage_factor        = 0.;
+      /** Including those of a discarded extrapolated start (see ContactSolverSettings::extrapolate_increments). */
       unsigned int n_newton_iterations = 0;
       unsigned int n_multiplier_updates = 0;
       /** Failed attempts (cutbacks) before this increment converged. */

@@ -4,7 +4,9 @@
 
 #include <Epetra_CrsMatrix.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace FloorBlock
@@ -51,15 +53,18 @@ namespace FloorBlock
                                    " has a prescribed value");
           if (!owned.is_element(line.index))
             continue;
-          for (const auto &entry : line.entries)
-            if (!owned.is_element(entry.first))
-              throw std::logic_error(
-                "StoredElasticSystem: master DoF " +
-                std::to_string(entry.first) + " of DoF " +
-                std::to_string(line.index) + " is not locally owned");
-          constrained_dofs.push_back(line.index);
-          constraint_entries.emplace_back(line.entries.begin(),
-                                          line.entries.end());
+          std::vector<std::pair<std::size_t, double>> masters;
+          for (const auto &[master, weight] : line.entries)
+            {
+              if (!owned.is_element(master))
+                throw std::logic_error(
+                  "StoredElasticSystem: master DoF " + std::to_string(master) +
+                  " of DoF " + std::to_string(line.index) +
+                  " is not locally owned");
+              masters.emplace_back(owned.index_within_set(master), weight);
+            }
+          constrained_rows.push_back(owned.index_within_set(line.index));
+          constraint_entries.push_back(std::move(masters));
         }
 
       CellMatrixCache cache;
@@ -75,6 +80,9 @@ namespace FloorBlock
       dealii::AffineConstraints<double> none;
       none.close();
       make_sparsity(space, none, {}, full_pattern);
+      for (const auto row : owned)
+        max_row_length =
+          std::max<std::size_t>(max_row_length, full_pattern.row_length(row));
       full_stiffness.reinit(full_pattern);
       ElasticAssemblyTargets<dim> full;
       full.matrix = &full_stiffness;
@@ -120,14 +128,16 @@ namespace FloorBlock
     {
       full_stiffness.vmult(residual, solution);
       residual.add(-gravity_factor, gravity_load, -pressure_factor, pressure_load);
-      for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
+      // Through the locally owned storage: no compress() (and no
+      // collective call) for entries that are all owned here.
+      double *const values = residual.begin();
+      for (unsigned int k = 0; k < constrained_rows.size(); ++k)
         {
-          const double constrained_row = residual(constrained_dofs[k]);
+          const double constrained_row = values[constrained_rows[k]];
           for (const auto &[master, weight] : constraint_entries[k])
-            residual(master) += weight * constrained_row;
-          residual(constrained_dofs[k]) = 0.;
+            values[master] += weight * constrained_row;
+          values[constrained_rows[k]] = 0.;
         }
-      residual.compress(dealii::VectorOperation::insert);
     }
 
     template <int dim>
@@ -141,11 +151,25 @@ namespace FloorBlock
         value = std::abs(value);
       Vector product(solution);
       absolute_stiffness.vmult(product, magnitude);
-      for (const auto dof : product.locally_owned_elements())
-        product(dof) += std::abs(gravity_factor * gravity_load(dof)) +
-                        std::abs(pressure_factor * pressure_load(dof));
-      product.compress(dealii::VectorOperation::insert);
+      double *const       sum     = product.begin();
+      const double *const gravity = gravity_load.begin();
+      const double *const load    = pressure_load.begin();
+      for (std::size_t i = 0; i < product.locally_owned_size(); ++i)
+        sum[i] += std::abs(gravity_factor * gravity[i]) +
+                  std::abs(pressure_factor * load[i]);
       return product.l2_norm();
+    }
+
+    template <int dim>
+    double
+    StoredElasticSystem<dim>::round_off_floor(const Vector &solution,
+                                              const double  gravity_factor,
+                                              const double  pressure_factor) const
+    {
+      // Worst-case error of a sum of m terms: m eps times the sum of their
+      // magnitudes; m is the longest stiffness row plus the two loads.
+      return (max_row_length + 2) * std::numeric_limits<double>::epsilon() *
+             residual_magnitude(solution, gravity_factor, pressure_factor);
     }
 
     template class StoredElasticSystem<2>;

@@ -32,7 +32,7 @@ namespace FloorBlock
     {
     public:
       /**
-       * @param[in] space FE space; must outlive this object.
+       * @param[in] space FE space (only read here).
        * @param[in] model Laws, densities and loads at factor one; the
        *   gravity part and the pressure part are stored separately.
        * @param[in] homogeneous_constraints Constraints of the Newton update:
@@ -82,8 +82,21 @@ namespace FloorBlock
                          const double gravity_factor,
                          const double pressure_factor) const;
 
+      /**
+       * @brief Residual norm (N) that round-off alone can produce in
+       * residual() at @p solution: (longest stiffness row + 2) eps times
+       * residual_magnitude(). The Newton stop test accepts a stable contact
+       * set whose residual is at this floor.
+       */
+      double
+      round_off_floor(const dealii::TrilinosWrappers::MPI::Vector &solution,
+                      const double gravity_factor,
+                      const double pressure_factor) const;
+
     private:
       dealii::TrilinosWrappers::SparsityPattern full_pattern;
+      /** Entries of the longest row of the unconstrained stiffness. */
+      std::size_t max_row_length = 0;
       /** |K| entry by entry, for residual_magnitude(). */
       dealii::TrilinosWrappers::SparseMatrix absolute_stiffness;
       dealii::TrilinosWrappers::SparseMatrix    full_stiffness;
@@ -91,9 +104,13 @@ namespace FloorBlock
       /** Loads at factor one (N): gravity alone, pressures alone. */
       dealii::TrilinosWrappers::MPI::Vector gravity_load;
       dealii::TrilinosWrappers::MPI::Vector pressure_load;
-      /** Locally owned constrained DoFs: residual moved to the masters, then zeroed. */
-      std::vector<dealii::types::global_dof_index> constrained_dofs;
-      std::vector<std::vector<std::pair<dealii::types::global_dof_index, double>>>
+      /**
+       * Locally owned constrained DoFs as indices into the owned storage:
+       * residual moved to the masters (same indexing) with their weights,
+       * then zeroed.
+       */
+      std::vector<std::size_t> constrained_rows;
+      std::vector<std::vector<std::pair<std::size_t, double>>>
         constraint_entries;
     };
   } // namespace Fem

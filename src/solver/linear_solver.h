@@ -67,6 +67,12 @@ namespace FloorBlock
       bool         success       = false;
       bool         used_direct   = false;
       unsigned int n_iterations  = 0;
+      /**
+       * False when a direct solution was accepted although its residual is
+       * above LinearSolverSettings::relative_tolerance (ReusedFactorization
+       * on an ill-conditioned matrix); the message says so.
+       */
+      bool         met_tolerance = true;
       std::string  message;
     };
 

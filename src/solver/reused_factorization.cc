@@ -98,13 +98,17 @@ namespace FloorBlock
             umfpack = std::make_unique<UmfpackFactors>();
         }
       factored_matrix.copy_from(matrix);
+      // A matrix of another pattern makes copy_from() replace the Epetra
+      // matrix that the Amesos problem points to: start Amesos afresh.
+      const bool new_matrix_object =
+        problem && problem->GetMatrix() != &factored_matrix.trilinos_matrix();
       try
         {
           if (umfpack)
             umfpack->factorize(factored_matrix.trilinos_matrix());
           else
             {
-              if (first)
+              if (first || new_matrix_object)
                 {
                   problem = std::make_unique<Epetra_LinearProblem>();
                   // Amesos takes a non-const pointer but only reads the
@@ -258,7 +262,8 @@ namespace FloorBlock
       if (refined.success)
         return refined;
       // An ill-conditioned matrix: fresh factors cannot reach the tolerance
-      // either; accept the plain direct solution, as a direct solver would.
+      // either; accept the plain direct solution, as a direct solver would,
+      // and say so.
       Vector trial(solution);
       try
         {
@@ -275,8 +280,11 @@ namespace FloorBlock
                          " returned non-finite values (singular matrix)";
           return info;
         }
-      solution     = trial;
-      info.success = true;
+      solution           = trial;
+      info.success       = true;
+      info.met_tolerance = false;
+      info.message       = "direct solution accepted above the residual "
+                           "tolerance (ill-conditioned matrix)";
       return info;
     }
   } // namespace Solver

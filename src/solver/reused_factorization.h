@@ -44,7 +44,9 @@ namespace FloorBlock
      * analysis reused: the pattern never changes) and solved with the new
      * factors. Either way the answer meets the same relative residual
      * LinearSolverSettings::relative_tolerance, so reuse changes cost, not
-     * results.
+     * results; only on a matrix so ill-conditioned that fresh factors miss
+     * it too is the plain direct solution accepted, flagged by
+     * LinearSolveInfo::met_tolerance.
      */
     class ReusedFactorization
     {
@@ -54,8 +56,8 @@ namespace FloorBlock
 
       /**
        * @brief Solves matrix x = rhs.
-       * @param[in] matrix System matrix; its sparsity pattern must stay the
-       *   same between calls (a new pattern needs a new object).
+       * @param[in] matrix System matrix; a new sparsity pattern restarts the
+       *   factorisation (the reuse test compares rows of equal patterns).
        * @param[in] rhs Right-hand side.
        * @param[in,out] solution Result; unchanged on failure.
        * @return Success, iterations and a message on failure; never throws

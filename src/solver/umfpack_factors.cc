@@ -12,13 +12,10 @@ namespace FloorBlock
 {
   namespace Solver
   {
-    static_assert(sizeof(long) == sizeof(SuiteSparse_long),
-                  "UMFPACK's dl interface takes SuiteSparse_long indices");
-
     namespace
     {
       void
-      check(const long status, const char *phase)
+      check(const SuiteSparse_long status, const char *phase)
       {
         // Warnings (> 0) include a singular matrix: a failure here.
         if (status != UMFPACK_OK)
@@ -48,15 +45,18 @@ namespace FloorBlock
     void
     UmfpackFactors::set_matrix(const Epetra_CrsMatrix &matrix)
     {
-      if (matrix.NumMyRows() != matrix.NumGlobalRows())
-        throw std::runtime_error(
-          "UMFPACK needs every row of the matrix on one process");
-      std::vector<long>   new_row_start{0};
-      std::vector<long>   new_columns;
+      // Rows are taken in local order and columns by global index: the
+      // two agree only for a serial matrix numbered 0 .. n-1.
+      if (matrix.NumMyRows() != matrix.NumGlobalRows() ||
+          !matrix.RowMap().LinearMap() || matrix.RowMap().MinMyGID64() != 0)
+        throw std::runtime_error("UMFPACK needs every row of the matrix on "
+                                 "one process, numbered 0 .. n-1");
+      std::vector<SuiteSparse_long> new_row_start{0};
+      std::vector<SuiteSparse_long> new_columns;
       std::vector<double> new_values;
       new_columns.reserve(matrix.NumMyNonzeros());
       new_values.reserve(matrix.NumMyNonzeros());
-      std::vector<std::pair<long, double>> entries;
+      std::vector<std::pair<SuiteSparse_long, double>> entries;
       for (int row = 0; row < matrix.NumMyRows(); ++row)
         {
           int     n_entries = 0;
@@ -74,10 +74,11 @@ namespace FloorBlock
             }
           new_row_start.push_back(new_columns.size());
         }
+      // Factors of the old values must not outlive them.
+      if (numeric != nullptr)
+        umfpack_dl_free_numeric(&numeric);
       if (new_row_start != row_start || new_columns != columns)
         {
-          if (numeric != nullptr)
-            umfpack_dl_free_numeric(&numeric);
           if (symbolic != nullptr)
             umfpack_dl_free_symbolic(&symbolic);
           row_start = std::move(new_row_start);
@@ -91,7 +92,7 @@ namespace FloorBlock
     {
       if (symbolic != nullptr)
         umfpack_dl_free_symbolic(&symbolic);
-      const long n = static_cast<long>(row_start.size()) - 1;
+      const auto n = static_cast<SuiteSparse_long>(row_start.size()) - 1;
       check(umfpack_dl_symbolic(n,
                                 n,
                                 row_start.data(),
@@ -110,7 +111,7 @@ namespace FloorBlock
         analyse();
       if (numeric != nullptr)
         umfpack_dl_free_numeric(&numeric);
-      const long status = umfpack_dl_numeric(row_start.data(),
+      const SuiteSparse_long status = umfpack_dl_numeric(row_start.data(),
                                              columns.data(),
                                              values.data(),
                                              symbolic,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <suitesparse/SuiteSparse_config.h>
+
 #include <string>
 #include <vector>
 
@@ -30,8 +32,9 @@ namespace FloorBlock
       operator=(const UmfpackFactors &) = delete;
 
       /**
-       * @brief Copies the values of @p matrix (all rows on this process);
-       * a new pattern drops the symbolic analysis.
+       * @brief Copies the values of @p matrix (all rows on this process,
+       * numbered 0 .. n-1); drops the numeric factors, and with a new
+       * pattern the symbolic analysis too.
        */
       void
       set_matrix(const Epetra_CrsMatrix &matrix);
@@ -64,8 +67,8 @@ namespace FloorBlock
 
     private:
       /** Compressed rows of A, read by UMFPACK as the columns of A^T. */
-      std::vector<long> row_start;
-      std::vector<long> columns;
+      std::vector<SuiteSparse_long> row_start;
+      std::vector<SuiteSparse_long> columns;
       std::vector<double> values;
       std::vector<double> control;
       void *symbolic = nullptr;

@@ -298,4 +298,73 @@ namespace
     EXPECT_EQ(report.counts.n_open, 5u);
     EXPECT_NEAR(report.closed_length, 0.55, 1e-12);
   }
+
+  /**
+   * A vertical joint x = 0 (normal +x) of 5 straight nodes with a fillet
+   * node at its top whose normal is tilted by 45 degrees: the joint forces
+   * are the resultant's components along +x and the tangent (-n_y, n_x) =
+   * +y, so the fillet node's traction counts with cos 45 deg in N and
+   * with sin 45 deg in S.
+   */
+  TEST(JointReport, ForcesAreResultantComponentsAlongTheStraightPart)
+  {
+    std::vector<ContactNode<2>>   nodes;
+    std::vector<JointResponse<2>> responses;
+    constexpr double traction = 2e6; // Pa, compression at every node
+    constexpr double spacing  = 0.1; // m
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        ContactNode<2> node;
+        node.position = dealii::Point<2>(0., k * spacing);
+        node.weight   = spacing;
+        node.normal[0] = 1.;
+        if (k == 5) // the fillet node
+          {
+            node.normal[0] = std::sqrt(0.5);
+            node.normal[1] = std::sqrt(0.5);
+          }
+        nodes.push_back(node);
+        JointResponse<2> response;
+        response.state           = JointState::stick;
+        response.normal_traction = traction;
+        responses.push_back(response);
+      }
+    const JointReport report =
+      make_joint_reports(nodes, responses, {"joint"}, 0.2).at(0);
+    // Force density on side B: -t n. Along +x: -t (5 x 1 + cos 45) w, so
+    // N = t w (5 + cos 45); along the tangent +y: -t sin 45 w for the
+    // fillet node only. A scalar sum would give N = 6 t w, S = 0.
+    const double w = spacing;
+    EXPECT_NEAR(report.normal_force, traction * w * (5. + std::sqrt(0.5)),
+                1e-9 * traction * w);
+    EXPECT_NEAR(report.shear_force, -traction * w * std::sqrt(0.5),
+                1e-9 * traction * w);
+  }
+
+  /** Weights larger than the node spacing (as on a fillet): the window
+   *  mean must stay below the largest nodal traction. */
+  TEST(JointReport, AveragedPeakNeverExceedsThePointwisePeak)
+  {
+    std::vector<ContactNode<2>>   nodes;
+    std::vector<JointResponse<2>> responses;
+    for (unsigned int k = 0; k < 8; ++k)
+      {
+        ContactNode<2> node;
+        node.position  = dealii::Point<2>(0., 0.01 * k); // 1 cm apart
+        node.weight    = 0.03;                           // 3 cm each
+        node.normal[0] = 1.;
+        nodes.push_back(node);
+        JointResponse<2> response;
+        response.state           = JointState::stick;
+        response.normal_traction = 1e6 * (1. + k); // Pa, peak 8 MPa at k = 7
+        responses.push_back(response);
+      }
+    const JointReport report =
+      make_joint_reports(nodes, responses, {"joint"}, 0.05).at(0);
+    EXPECT_DOUBLE_EQ(report.peak_normal_stress, 8e6);
+    EXPECT_LE(report.averaged_peak_normal_stress, report.peak_normal_stress);
+    // The last 5 cm hold node 7 (3 cm at 8 MPa) and 2 cm of node 6 (7 MPa).
+    EXPECT_NEAR(report.averaged_peak_normal_stress,
+                (0.03 * 8e6 + 0.02 * 7e6) / 0.05, 1e-6);
+  }
 } // namespace

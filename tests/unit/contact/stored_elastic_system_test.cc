@@ -15,6 +15,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <cmath>
+#include <limits>
 
 namespace
 {
@@ -97,6 +98,20 @@ namespace
     EXPECT_GT(reference_residual.l2_norm(), 0.);
     for (const auto &line : constraints.get_lines())
       EXPECT_EQ(residual(line.index), 0.);
+
+    // The round-off scale bounds the residual entry by entry (triangle
+    // inequality), and the floor is (longest row + 2) eps times it: rows
+    // of the unconstrained Q1 plane-strain stiffness have 8 to 18 entries,
+    // up to about 26 next to a refined cell (hanging-node neighbours;
+    // measured 22).
+    const double magnitude =
+      stored.residual_magnitude(solution, gravity_factor, pressure_factor);
+    EXPECT_GE(magnitude, residual.l2_norm());
+    const double eps   = std::numeric_limits<double>::epsilon();
+    const double floor = stored.round_off_floor(solution, gravity_factor,
+                                                pressure_factor);
+    EXPECT_GE(floor, 10. * eps * magnitude);
+    EXPECT_LE(floor, (refine_corner ? 28. : 20.) * eps * magnitude);
 
     SparseMatrix matrix_difference(pattern);
     matrix_difference.copy_from(stored.condensed_stiffness());
