@@ -29,11 +29,7 @@ namespace FloorBlock::App
       return text;
     }
 
-    /**
-     * What fem.json can say about the work of a failed solve: the solver
-     * returns the failed attempts and the last converged increment, and
-     * stops an increment after exactly Solver/Max cutbacks cutbacks.
-     */
+    /** What fem.json says about the work of a failed solve. */
     json
     failure_json(const Contact::ContactSolveFailure &failure,
                  const Parameters::SolverParameters &solver)
@@ -42,16 +38,14 @@ namespace FloorBlock::App
         {"cutbacks_before_failure", solver.max_cutbacks},
         {"n_failed_attempts", failure.attempts.size()},
         {"failed_attempts", failure.attempts},
+        {"failed_newton_iterations",
+         failure.partial_result.n_failed_newton_iterations},
         {"counted",
-         "n_increments, newton_iterations and increments cover only the last "
-         "converged increment (none if the first failed); cutbacks adds "
-         "cutbacks_before_failure, the cutbacks of the increment that failed"},
-        {"not_reported",
-         "for a failed solve the solver returns neither the Newton "
-         "iterations, linear solves and wall time of its failed attempts nor "
-         "the converged increments before the last one: linear_solves, "
-         "lu_factorizations and krylov_iterations_on_lu_factors are left out "
-         "and wall_time_s holds no contact-solve section"}};
+         "n_increments, newton_iterations and increments cover every "
+         "converged increment; cutbacks adds cutbacks_before_failure, the "
+         "cutbacks of the increment that failed; failed_newton_iterations, "
+         "linear_solves, lu_factorizations and wall_time_s include the "
+         "failed attempts"}};
     }
   } // namespace
 
@@ -94,11 +88,7 @@ namespace FloorBlock::App
         context.status_text = failure_text(failure);
         context.cutbacks_before_failure = scene.solver.max_cutbacks;
         failure_record = failure_json(failure, scene.solver);
-        if (failure.last_converged)
-          outcome.result.increments.push_back(*failure.last_converged);
-        // The sizes are known even when no increment converged.
-        outcome.result.n_dofs = solver.space().dof_handler().n_dofs();
-        outcome.result.n_contact_pairs = solver.contact_nodes().size();
+        outcome.result = failure.partial_result;
       }
     if (extras.inspect)
       extras.inspect(solver);
@@ -108,9 +98,6 @@ namespace FloorBlock::App
     outcome.fem = Output::fem_json(outcome.result, context);
     if (!outcome.converged)
       {
-        for (const char *key : {"linear_solves", "lu_factorizations",
-                                "krylov_iterations_on_lu_factors"})
-          outcome.fem.erase(key);
         outcome.fem["failure"] = failure_record;
       }
     outcome.fem["model"]        = "elastic FEM";

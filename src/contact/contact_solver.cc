@@ -487,6 +487,7 @@ namespace FloorBlock
               (target - reached) / last_change_step :
               0.;
           const auto record_failure = [&](const std::string &start) {
+            n_failed_newton_iterations += increment.n_newton_iterations;
             std::ostringstream attempt;
             attempt << stage_name(stage) << " factor " << target << " (step "
                     << step << start << "): " << reason;
@@ -506,11 +507,7 @@ namespace FloorBlock
               if (!solved)
                 {
                   record_failure(", extrapolated start");
-                  // The discarded attempt's iterations are work done for
-                  // this increment: they stay in its count.
-                  const unsigned int discarded = increment.n_newton_iterations;
-                  increment                     = IncrementResult();
-                  increment.n_newton_iterations = discarded;
+                  increment = IncrementResult();
                 }
             }
           if (!solved)
@@ -578,19 +575,35 @@ namespace FloorBlock
       result.n_contact_pairs = nodes.size();
       current_solution       = 0.;
       committed_solution     = 0.;
-      run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
-      run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
-      run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
+      try
+        {
+          run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
+          run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
+          run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
+        }
+      catch (ContactSolveFailure &failure)
+        {
+          add_statistics(result);
+          failure.partial_result = result;
+          throw;
+        }
+      add_statistics(result);
+      return result;
+    }
+
+    void
+    ContactSolver::add_statistics(SolveResult &result) const
+    {
       result.wall_times =
         timer.get_summary_data(dealii::TimerOutput::total_wall_time);
-      result.n_linear_solves = n_linear_solves;
+      result.n_linear_solves            = n_linear_solves;
+      result.n_failed_newton_iterations = n_failed_newton_iterations;
       if (direct_solver)
         {
           result.n_factorizations = direct_solver->statistics().n_factorizations;
           result.n_krylov_iterations =
             direct_solver->statistics().n_krylov_iterations;
         }
-      return result;
     }
 
     void

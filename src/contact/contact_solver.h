@@ -55,7 +55,8 @@ namespace FloorBlock
        * @brief Runs all stages.
        * @return Every converged increment with its joint tables.
        * Throws ContactSolveFailure if an increment fails after all cutbacks;
-       * solution() then holds the last converged state.
+       * solution() then holds the last converged state and the exception's
+       * partial_result everything up to the failure.
        */
       SolveResult
       run();
@@ -84,6 +85,9 @@ namespace FloorBlock
 
       void
       setup_contact();
+      /** Wall times and solve counters of the run so far. */
+      void
+      add_statistics(SolveResult &result) const;
       void
       run_stage(const LoadStage    stage,
                 const unsigned int n_increments,
@@ -132,6 +136,7 @@ namespace FloorBlock
       /** Set when the linear systems are solved directly (see run()). */
       std::unique_ptr<Solver::ReusedFactorization> direct_solver;
       unsigned int                                 n_linear_solves = 0;
+      unsigned int n_failed_newton_iterations = 0;
       dealii::TrilinosWrappers::MPI::Vector     current_solution;
       dealii::TrilinosWrappers::MPI::Vector     committed_solution;
       dealii::TrilinosWrappers::MPI::Vector     newton_base;

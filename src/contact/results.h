@@ -103,6 +103,8 @@ namespace FloorBlock
       unsigned int n_factorizations = 0;
       /** GMRES iterations on stored or fresh LU factors (direct solver only). */
       unsigned int n_krylov_iterations = 0;
+      /** Newton iterations of failed attempts (cut back or retried), not in any increment. */
+      unsigned int n_failed_newton_iterations = 0;
     };
 
     /**
@@ -128,6 +130,12 @@ namespace FloorBlock
       std::optional<IncrementResult> last_converged;
       /** Open/stick/slip counts of the last Newton iterate tried. */
       StateCounts last_iterate_counts;
+      /**
+       * Everything up to the failure: every converged increment, the
+       * counters (including the failed attempts' Newton iterations) and the
+       * wall times; filled by ContactSolver::run().
+       */
+      SolveResult partial_result;
     };
   } // namespace Contact
 } // namespace FloorBlock

@@ -51,13 +51,20 @@ TEST(NotConverged, RunKeepsLastConvergedIncrementAndSaysWhy)
   // a status; the FEM's own numbers are never null.
   EXPECT_EQ(read_text(folder + "/fem.json").find("null"), std::string::npos);
 
-  // The failed attempt is listed and the counters say what they cover;
-  // linear solves, which the solver does not return for a failed solve,
-  // are left out rather than written as 0.
+  // The failed attempt is listed and the counters say what they cover:
+  // every converged increment (1 gravity + 2 support), the failed
+  // attempt's Newton iterations (at most Solver/Max Newton iterations = 6),
+  // and linear solves for all of them.
   ASSERT_TRUE(fem.contains("failure"));
   EXPECT_EQ(fem["failure"]["failed_attempts"].size(), 1u);
   EXPECT_EQ(fem["failure"]["cutbacks_before_failure"], 0);
-  EXPECT_FALSE(fem.contains("linear_solves"));
+  EXPECT_EQ(fem["n_increments"].get<int>(), 3);
+  const unsigned int failed_newton =
+    fem["failure"]["failed_newton_iterations"].get<unsigned int>();
+  EXPECT_GE(failed_newton, 1u);
+  EXPECT_LE(failed_newton, 6u);
+  EXPECT_GE(fem["linear_solves"].get<unsigned int>(),
+            fem["newton_iterations"].get<unsigned int>() + failed_newton);
 }
 
 TEST(NotConverged, NothingConvergedStillWritesAnHonestSummary)
