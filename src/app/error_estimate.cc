@@ -11,11 +11,9 @@ namespace FloorBlock::App
   refined_scene(Parameters::ScenarioParameters scene)
   {
     // The next level of `converge`'s uniform ladder, so that `run` and
-    // `converge` mean the same by "refined". Halving only Corner size and
-    // Far size (the former rule) left the cells near the end of the
-    // contact zone almost unchanged under the growth rate, and `run`
-    // reported 0.05 % for a face contact length the ladder showed to move
-    // by 1.5-2 %.
+    // `converge` mean the same by "refined". The growth rate is refined
+    // too: halving only Corner size and Far size leaves the cells near the
+    // end of the contact zone, away from the corners, almost unchanged.
     scene = uniform_level_scene(scene, 1);
     // The rigid-block model's only discretisation: points along each joint.
     scene.model.rigid_points_per_joint *= 2;
@@ -28,8 +26,8 @@ namespace FloorBlock::App
     const std::string method =
       coarse.fem["model"] == "rigid blocks" ?
         "difference to one solve with twice the points per joint" :
-        "difference to one solve one uniform refinement level finer "
-        "(all mesh sizes and the growth rate excess halved)";
+        "difference to a solve on the next uniform refinement level "
+        "(all mesh sizes and the growth rate's excess over 1 halved)";
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)
