@@ -46,6 +46,19 @@ namespace FloorBlock
          {0., block_width, -base_depth, 0., n_x, n_x / 2, base, base_sides,
           base_sides, base_bottom, base_top}},
         mesh);
+      // The blocks mirror each other about the joint x = 0, so flagging by
+      // distance to the corner refines both sides of the joint alike: the
+      // new joint nodes, hanging ones included, keep their partners.
+      const dealii::Point<2> joint_top(0., block_height);
+      for (unsigned int level = 0; level < settings.corner_refinements; ++level)
+        {
+          for (const auto &cell : mesh.active_cell_iterators())
+            if (cell->material_id() != base &&
+                cell->center().distance(joint_top) <
+                  settings.corner_refinement_radius)
+              cell->set_refine_flag();
+          mesh.execute_coarsening_and_refinement();
+        }
       SceneDefinition<2> scene;
       for (const dealii::types::material_id body : {left_block, right_block, base})
         scene.model.laws.emplace(body, table_rock());

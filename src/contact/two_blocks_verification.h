@@ -14,6 +14,13 @@ namespace FloorBlock
       JointLawKind law              = JointLawKind::compliant;
       double       joint_stiffness  = 9e9; ///< kn = ks, compliant law (Pa/m)
       double       lateral_pressure = 4e5; ///< on the upper quarter (Pa)
+      /**
+       * Local refinements (hanging nodes) of the cells within
+       * corner_refinement_radius of the joint's top corner, on both sides
+       * alike so that the joint sides still match node by node.
+       */
+      unsigned int corner_refinements      = 0;
+      double       corner_refinement_radius = 0.6; ///< m
     };
 
     /** @brief Joint and block response of the two-blocks case. */

@@ -15,17 +15,19 @@ namespace FloorBlock
     template <int dim>
     struct RigidMotion
     {
-      /** Mean displacement of the body's vertices (m). */
+      /** Area-weighted mean displacement of the body (m). */
       dealii::Tensor<1, dim> translation;
-      /** Rotation about the vertex centroid, counter-clockwise (rad, 2D). */
+      /** Rotation about the body's centroid, counter-clockwise (rad, 2D). */
       double rotation = 0.;
     };
 
     /**
-     * @brief Least-squares rigid motion of each material id: translation is
-     * the mean vertex displacement, rotation
-     * \f$\theta = \sum r \times u / \sum |r|^2\f$ with \f$r\f$ the vertex
-     * position relative to the centroid (small rotations).
+     * @brief Least-squares rigid motion of each material id, integrated over
+     * the body's area (cell quadrature): translation is the mean
+     * displacement, rotation \f$\theta = \int r \times u / \int |r|^2\f$
+     * with \f$r\f$ the position relative to the centroid (small rotations).
+     * Integrals, not sums over vertices: a graded mesh would otherwise
+     * weight its finely meshed corners more than the rest of the body.
      * @param[in] space FE space (2D).
      * @param[in] solution Displacement (m).
      * @return One entry per material id present in the mesh.
