@@ -13,6 +13,7 @@
 #include <fem/vtu_writer.h>
 #include <solver/linear_solver.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace FloorBlock
 {
@@ -83,6 +85,16 @@ namespace FloorBlock
               dealii::TimerOutput::never,
               dealii::TimerOutput::wall_times)
     {
+      // The pairing, the stored residual and the kept LU factors read and
+      // write only locally owned entries and decide per process: correct on
+      // one process per mesh, which is how sweeps and ladders run (MPI
+      // parallelism over cases). A distributed mesh is refused, not
+      // half-supported.
+      if (dealii::Utilities::MPI::n_mpi_processes(
+            fe_space.dof_handler().get_communicator()) != 1)
+        throw std::logic_error("ContactSolver needs the whole mesh on one "
+                               "process (a serial Triangulation); run cases "
+                               "in parallel instead");
       dealii::TimerOutput::Scope scope(timer, "Contact: setup");
       setup_contact();
       dealii::IndexSet unused;
