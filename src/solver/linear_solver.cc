@@ -21,14 +21,6 @@ namespace FloorBlock
       /** Krylov restart length of GMRES. */
       constexpr unsigned int gmres_restart_length = 200;
 
-      bool
-      is_finite(const Vector &vector)
-      {
-        for (const auto value : vector)
-          if (!std::isfinite(value))
-            return false;
-        return true;
-      }
 
       LinearSolveInfo
       solve_direct(const LinearSolverSettings &settings,
@@ -52,7 +44,7 @@ namespace FloorBlock
             info.message = settings.direct_package + ": " + error.what();
             return info;
           }
-        if (!is_finite(trial))
+        if (!has_only_finite_values(trial))
           {
             info.message = settings.direct_package +
                            " returned non-finite values (singular matrix)";
@@ -97,7 +89,7 @@ namespace FloorBlock
             return info;
           }
         info.n_iterations = control.last_step();
-        if (!is_finite(trial))
+        if (!has_only_finite_values(trial))
           {
             info.message = "GMRES returned non-finite values";
             return info;
@@ -107,6 +99,15 @@ namespace FloorBlock
         return info;
       }
     } // namespace
+
+    bool
+    has_only_finite_values(const Vector &vector)
+    {
+      for (const auto value : vector)
+        if (!std::isfinite(value))
+          return false;
+      return true;
+    }
 
     LinearSolveInfo
     solve_linear_system(const LinearSolverSettings           &settings,

@@ -77,6 +77,13 @@ namespace FloorBlock
     };
 
     /**
+     * @brief Whether every locally owned entry is finite: a direct solver
+     * on a singular matrix returns inf or NaN instead of failing.
+     */
+    bool
+    has_only_finite_values(const dealii::TrilinosWrappers::MPI::Vector &vector);
+
+    /**
      * @brief Solves \f$A x = b\f$ for a general (non-symmetric, because of
      * friction) sparse matrix.
      *

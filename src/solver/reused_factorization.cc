@@ -53,15 +53,6 @@ namespace FloorBlock
           }
         return count;
       }
-
-      bool
-      is_finite(const Vector &vector)
-      {
-        for (const auto value : vector)
-          if (!std::isfinite(value))
-            return false;
-        return true;
-      }
     } // namespace
 
     ReusedFactorization::ReusedFactorization(
@@ -108,7 +99,7 @@ namespace FloorBlock
             umfpack->factorize(factored_matrix.trilinos_matrix());
           else
             {
-              if (first || new_matrix_object)
+              if (!direct || new_matrix_object)
                 {
                   problem = std::make_unique<Epetra_LinearProblem>();
                   // Amesos takes a non-const pointer but only reads the
@@ -128,11 +119,6 @@ namespace FloorBlock
                       message = package + ": symbolic factorisation failed";
                       return false;
                     }
-                }
-              if (!direct)
-                {
-                  message = "Amesos has no package " + package;
-                  return false;
                 }
               if (direct->NumericFactorization() != 0)
                 {
@@ -201,7 +187,7 @@ namespace FloorBlock
         }
       info.n_iterations = control.last_step();
       counters.n_krylov_iterations += info.n_iterations;
-      if (!is_finite(trial))
+      if (!has_only_finite_values(trial))
         {
           info.message = package +
                          " returned non-finite values (singular matrix)";
@@ -274,7 +260,7 @@ namespace FloorBlock
           info.message = error.what();
           return info;
         }
-      if (!is_finite(trial))
+      if (!has_only_finite_values(trial))
         {
           info.message = package +
                          " returned non-finite values (singular matrix)";

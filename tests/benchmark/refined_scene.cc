@@ -120,19 +120,11 @@ namespace FloorBlock::Benchmark
   void
   LinearElasticSystem::reuse_bulk()
   {
-    if (stored_bulk.m() == 0)
-      {
-        dealii::TrilinosWrappers::MPI::Vector current(solution);
-        solution = 0.;
-        assemble_bulk(&warm_cache);
-        stored_bulk.reinit(matrix);
-        stored_bulk.copy_from(matrix);
-        bulk_residual_at_zero = residual;
-        solution              = current;
-      }
-    matrix.copy_from(stored_bulk);
-    stored_bulk.vmult(residual, solution);
-    residual += bulk_residual_at_zero;
+    if (!stored_bulk)
+      stored_bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
+        space, scene.model, constraints, pattern);
+    matrix.copy_from(stored_bulk->condensed_stiffness());
+    stored_bulk->residual(solution, 1., 1., residual);
   }
 
   void

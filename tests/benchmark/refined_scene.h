@@ -5,6 +5,7 @@
 #include <contact/scene.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
+#include <fem/stored_elastic_system.h>
 #include <geometry/assembly_mesher.h>
 #include <parameters/scenario_parameters.h>
 
@@ -66,11 +67,11 @@ namespace FloorBlock::Benchmark
     assemble_bulk(Fem::CellMatrixCache *cache);
 
     /**
-     * @brief What reusing the assembled bulk would cost instead of
-     * assemble_bulk(): the elastic stiffness is constant, so a Newton
-     * iteration could copy a stored bulk matrix (same sparsity: values
-     * only) and get the bulk residual \f$K u - f\f$ from one product.
-     * The first call stores the bulk; only later calls are representative.
+     * @brief The bulk as the contact solver gets it in every Newton
+     * iteration instead of assemble_bulk(): the stored condensed stiffness
+     * copied (values only) and the residual \f$K u - f\f$ from one
+     * product (Fem::StoredElasticSystem). The first call builds the stored
+     * system; only later calls are representative.
      */
     void
     reuse_bulk();
@@ -116,8 +117,7 @@ namespace FloorBlock::Benchmark
     Fem::CellMatrixCache                  warm_cache;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
-    dealii::TrilinosWrappers::SparseMatrix    stored_bulk;
-    dealii::TrilinosWrappers::MPI::Vector     bulk_residual_at_zero;
+    std::unique_ptr<Fem::StoredElasticSystem<2>> stored_bulk;
     dealii::TrilinosWrappers::MPI::Vector     solution;
     dealii::TrilinosWrappers::MPI::Vector     residual;
     dealii::TrilinosWrappers::MPI::Vector     update;
