@@ -20,8 +20,9 @@ namespace FloorBlock::App
     std::string              figure;         ///< sweep: only this figure
     unsigned int             case_limit = 0; ///< sweep --fem: at most this many
     unsigned int             n_levels   = 5;      ///< converge: ladder length
-    std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|both
+    std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|remesh|both|all
     double bulk_fraction = 0.1;  ///< converge: cells refined by the Kelly indicator
+    double coarsen_fraction = 0.03; ///< converge adaptive: cells flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
     double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
 

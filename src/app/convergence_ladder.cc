@@ -2,13 +2,22 @@
 #include <app/fem_pipeline.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
+#include <contact/floor_scene.h>
+#include <convergence/matched_refinement.h>
 #include <geometry/assembly_description.h>
+#include <geometry/refinement_manifolds.h>
+#include <geometry/triangulation_reader.h>
+#include <scene/assembly_inputs.h>
+#include <scene/contact_inputs.h>
 
 #include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_out.h>
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace FloorBlock::App
@@ -74,18 +83,32 @@ namespace FloorBlock::App
              std::min(scene.geometry.block_width, scene.geometry.block_height);
     }
 
+    /** What a solved level asks of the next adaptive or remesh level. */
+    struct Indicators
+    {
+      /** Joint and bulk size requests of the level's solution. */
+      std::vector<Geometry::LocalSize> requests;
+      /** Kelly indicator per active cell of the level's mesh. */
+      dealii::Vector<float> kelly;
+    };
+
+    /** Solves one level's scene into a folder, given the solve extras. */
+    using LevelSolve = std::function<FemOutcome(const SolveExtras &,
+                                                const Output::ResultFolder &)>;
+
     /**
-     * One level: mesh (with @p local_sizes), solve, and for adaptive
-     * ladders the size requests for the next level (@p next_targets).
+     * One level: @p solve (mesh and solve), and for adaptive and remesh
+     * ladders the indicators for the next level (@p next).
      */
     LevelRecord
-    solve_level(const Parameters::ScenarioParameters  &scene,
-                const RefinementMode                   mode,
-                const unsigned int                     level,
-                const std::vector<Geometry::LocalSize> &local_sizes,
-                const Convergence::RefinementSettings  &refinement,
-                const Output::ResultFolder             &folder,
-                std::vector<Geometry::LocalSize>       *next_targets)
+    solve_level(const Parameters::ScenarioParameters &scene,
+                const RefinementMode                  mode,
+                const unsigned int                    level,
+                const std::size_t                     n_local_sizes,
+                const Convergence::RefinementSettings &refinement,
+                const Output::ResultFolder            &folder,
+                const LevelSolve                      &solve,
+                Indicators                            *next)
     {
       dealii::Timer timer;
       LevelRecord   record;
@@ -94,41 +117,40 @@ namespace FloorBlock::App
       record.corner_size   = scene.mesh.corner_size;
       record.far_size      = scene.mesh.far_size;
       record.growth_rate   = scene.mesh.growth_rate;
-      record.n_local_sizes = local_sizes.size();
+      record.n_local_sizes = n_local_sizes;
 
       SolveExtras extras;
-      extras.local_sizes = local_sizes;
-      double indicator_time = 0.;
+      double      indicator_time = 0.;
       extras.inspect = [&](const Contact::ContactSolver &solver) {
         // Also for a solve that stopped early, whose result has no DoFs.
         record.n_dofs          = solver.space().dof_handler().n_dofs();
         record.n_contact_pairs = solver.contact_nodes().size();
-        if (!next_targets)
+        if (!next)
           return;
         dealii::Timer indicator_timer;
-        *next_targets = Convergence::bulk_size_targets(
-          solver.space(), solver.solution(), refinement);
+        next->kelly =
+          Convergence::kelly_indicator(solver.space(), solver.solution());
+        next->requests = Convergence::bulk_size_targets(
+          solver.space().dof_handler().get_triangulation(), next->kelly,
+          refinement);
         indicator_time = indicator_timer.wall_time();
       };
       try
         {
-          const FemOutcome outcome = solve_scene(
-            scene,
-            Output::ResultFolder(folder.path_of(
-              record.mode + "/level_" + std::to_string(level))),
-            false,
-            extras);
+          const FemOutcome outcome =
+            solve(extras, Output::ResultFolder(folder.path_of(
+                            record.mode + "/level_" + std::to_string(level))));
           record_outcome(outcome, scene.geometry.n_blocks, record);
-          if (next_targets && !outcome.result.increments.empty())
+          if (next && !outcome.result.increments.empty())
             {
               dealii::Timer indicator_timer;
               const auto joint_targets = Convergence::joint_size_targets(
                 outcome.result.increments.back().joints, refinement);
-              next_targets->insert(next_targets->end(), joint_targets.begin(),
-                                   joint_targets.end());
+              next->requests.insert(next->requests.end(),
+                                    joint_targets.begin(), joint_targets.end());
               indicator_time += indicator_timer.wall_time();
             }
-          if (next_targets)
+          if (next)
             record.stage_wall_times["indicator"] = indicator_time;
         }
       catch (const std::exception &error)
@@ -137,8 +159,8 @@ namespace FloorBlock::App
           // refuses ends this level, not the study.
           record.status      = "failed";
           record.status_text = error.what();
-          if (next_targets)
-            next_targets->clear();
+          if (next)
+            next->requests.clear();
         }
       record.wall_time = timer.wall_time();
       return record;
@@ -160,7 +182,16 @@ namespace FloorBlock::App
   std::string
   mode_name(const RefinementMode mode)
   {
-    return mode == RefinementMode::uniform ? "uniform" : "adaptive";
+    switch (mode)
+      {
+        case RefinementMode::uniform:
+          return "uniform";
+        case RefinementMode::remesh:
+          return "remesh";
+        case RefinementMode::adaptive:
+        default:
+          return "adaptive";
+      }
   }
 
   Parameters::ScenarioParameters
@@ -174,46 +205,217 @@ namespace FloorBlock::App
     return scene;
   }
 
+  namespace
+  {
+    /** Level bookkeeping shared by the ladders: cost, progress, callback. */
+    class LadderLog
+    {
+    public:
+      LadderLog(const RefinementMode mode, const LevelCallback &after_level)
+        : cumulative(mode != RefinementMode::uniform)
+        , after_level(after_level)
+      {}
+
+      void
+      add(LevelRecord record)
+      {
+        cumulative_time += record.wall_time;
+        record.cost_wall_time = cumulative ? cumulative_time : record.wall_time;
+        levels.push_back(record);
+        std::cout << progress_line(record) << std::endl;
+        after_level(levels);
+      }
+
+      /** Whether a further level can start from @p next; says why not. */
+      bool
+      can_refine_from(const Indicators &next) const
+      {
+        if (!next.requests.empty())
+          return true;
+        std::cout << "converge: " << levels.back().mode
+                  << " ladder stopped: level " << levels.back().level
+                  << " left no solution to refine from" << std::endl;
+        return false;
+      }
+
+      std::vector<LevelRecord> levels;
+
+    private:
+      const bool           cumulative;
+      const LevelCallback &after_level;
+      double               cumulative_time = 0.;
+    };
+
+    Convergence::RefinementSettings
+    bounded(const Convergence::RefinementSettings &settings,
+            const Parameters::ScenarioParameters  &scene)
+    {
+      Convergence::RefinementSettings refinement = settings;
+      refinement.smallest_size =
+        std::max(refinement.smallest_size, smallest_local_size(scene));
+      return refinement;
+    }
+
+    std::vector<LevelRecord>
+    run_uniform_ladder(const Parameters::ScenarioParameters  &scene,
+                       const unsigned int                     n_levels,
+                       const Convergence::RefinementSettings &refinement,
+                       const Output::ResultFolder            &folder,
+                       const LevelCallback                   &after_level)
+    {
+      LadderLog log(RefinementMode::uniform, after_level);
+      for (unsigned int level = 0; level < n_levels; ++level)
+        {
+          const auto level_scene = uniform_level_scene(scene, level);
+          log.add(solve_level(
+            level_scene, RefinementMode::uniform, level, 0, refinement, folder,
+            [&](const SolveExtras &extras, const Output::ResultFolder &where) {
+              return solve_scene(level_scene, where, false, extras);
+            },
+            nullptr));
+        }
+      return log.levels;
+    }
+
+    /** Each level a new Gmsh mesh with all requests so far. */
+    std::vector<LevelRecord>
+    run_remesh_ladder(const Parameters::ScenarioParameters  &scene,
+                      const unsigned int                     n_levels,
+                      const Convergence::RefinementSettings &refinement,
+                      const Output::ResultFolder            &folder,
+                      const LevelCallback                   &after_level)
+    {
+      LadderLog                        log(RefinementMode::remesh, after_level);
+      std::vector<Geometry::LocalSize> local_sizes;
+      for (unsigned int level = 0; level < n_levels; ++level)
+        {
+          Indicators next;
+          log.add(solve_level(
+            scene, RefinementMode::remesh, level, local_sizes.size(),
+            refinement, folder,
+            [&](SolveExtras extras, const Output::ResultFolder &where) {
+              extras.local_sizes = local_sizes;
+              return solve_scene(scene, where, false, extras);
+            },
+            &next));
+          if (level + 1 < n_levels && !log.can_refine_from(next))
+            break;
+          Convergence::merge_size_requests(local_sizes, next.requests,
+                                           scene.mesh.growth_rate);
+        }
+      return log.levels;
+    }
+
+    std::vector<Convergence::JointSides>
+    joint_sides(const Parameters::ScenarioParameters &scene)
+    {
+      std::vector<Convergence::JointSides> sides;
+      for (const auto &joint :
+           Contact::make_floor_scene(Scene::floor_scene_settings(scene)).joints)
+        if (!joint.against_rigid_plane)
+          sides.push_back({joint.side_a, joint.side_b});
+      return sides;
+    }
+
+    /**
+     * Refines @p triangulation for the next adaptive level (new vertices on
+     * the scene's curves) and writes it as mesh.msh.
+     */
+    Geometry::MeshStatistics
+    refine_for_next_level(const Parameters::ScenarioParameters &scene,
+                          const Indicators                     &next,
+                          const double                          coarsen_fraction,
+                          const std::string                    &msh_path,
+                          dealii::Triangulation<2>             &triangulation)
+    {
+      // A zone end asks for a quarter of its segment (zone_end_refinement
+      // = 4: two halvings); one more sweep lets the 2:1 grading follow.
+      constexpr unsigned int max_passes = 3;
+      dealii::Timer          timer;
+      const auto description = Scene::assembly_description(scene);
+      Geometry::attach_boundary_manifolds(description, triangulation);
+      Convergence::refine_matched(triangulation, joint_sides(scene),
+                                  next.requests, scene.mesh.growth_rate,
+                                  next.kelly, coarsen_fraction, max_passes);
+      Geometry::detach_boundary_manifolds(triangulation);
+      std::filesystem::create_directories(
+        std::filesystem::path(msh_path).parent_path());
+      std::ofstream msh(msh_path);
+      dealii::GridOut().write_msh(triangulation, msh);
+      Geometry::MeshStatistics statistics;
+      statistics.n_cells   = triangulation.n_active_cells();
+      statistics.n_nodes   = triangulation.n_used_vertices();
+      statistics.wall_time = timer.wall_time();
+      return statistics;
+    }
+
+    /** Level 0 from Gmsh, then deal.II refinement with hanging nodes. */
+    std::vector<LevelRecord>
+    run_adaptive_ladder(const Parameters::ScenarioParameters  &scene,
+                        const unsigned int                     n_levels,
+                        const Convergence::RefinementSettings &refinement,
+                        const double                           coarsen_fraction,
+                        const Output::ResultFolder            &folder,
+                        const LevelCallback                   &after_level)
+    {
+      LadderLog                log(RefinementMode::adaptive, after_level);
+      dealii::Triangulation<2> triangulation;
+      Indicators               previous;
+      for (unsigned int level = 0; level < n_levels; ++level)
+        {
+          Indicators next;
+          log.add(solve_level(
+            scene, RefinementMode::adaptive, level, previous.requests.size(),
+            refinement, folder,
+            [&](const SolveExtras &extras, const Output::ResultFolder &where) {
+              if (level == 0)
+                {
+                  std::filesystem::create_directories(where.path_of(""));
+                  const auto mesh = Geometry::write_gmsh_mesh(
+                    Scene::assembly_description(scene),
+                    where.path_of("mesh.msh"));
+                  Geometry::read_triangulation(where.path_of("mesh.msh"),
+                                               triangulation);
+                  return solve_meshed_scene(scene, triangulation, mesh, where,
+                                            false, extras);
+                }
+              const auto mesh =
+                refine_for_next_level(scene, previous, coarsen_fraction,
+                                      where.path_of("mesh.msh"), triangulation);
+              return solve_meshed_scene(scene, triangulation, mesh, where,
+                                        false, extras);
+            },
+            &next));
+          if (level + 1 < n_levels && !log.can_refine_from(next))
+            break;
+          previous = std::move(next);
+        }
+      return log.levels;
+    }
+  } // namespace
+
   std::vector<Convergence::LevelRecord>
   run_ladder(const Parameters::ScenarioParameters  &scene,
              const RefinementMode                   mode,
              const unsigned int                     n_levels,
              const Convergence::RefinementSettings &refinement_settings,
+             const double                           coarsen_fraction,
              const Output::ResultFolder            &folder,
              const LevelCallback                   &after_level)
   {
-    Convergence::RefinementSettings refinement = refinement_settings;
-    refinement.smallest_size =
-      std::max(refinement.smallest_size, smallest_local_size(scene));
-    std::vector<LevelRecord>         levels;
-    std::vector<Geometry::LocalSize> local_sizes;
-    double                           cumulative_time = 0.;
-    for (unsigned int level = 0; level < n_levels; ++level)
+    const auto refinement = bounded(refinement_settings, scene);
+    switch (mode)
       {
-        std::vector<Geometry::LocalSize> targets;
-        const bool adaptive = mode == RefinementMode::adaptive;
-        LevelRecord record =
-          solve_level(adaptive ? scene : uniform_level_scene(scene, level),
-                      mode, level, local_sizes, refinement, folder,
-                      adaptive ? &targets : nullptr);
-        cumulative_time += record.wall_time;
-        record.cost_wall_time = adaptive ? cumulative_time : record.wall_time;
-        levels.push_back(record);
-        std::cout << progress_line(record) << std::endl;
-        after_level(levels);
-        if (adaptive && level + 1 < n_levels)
-          {
-            if (targets.empty())
-              {
-                std::cout << "converge: adaptive ladder stopped: level "
-                          << level << " left no solution to refine from"
-                          << std::endl;
-                break;
-              }
-            Convergence::merge_size_requests(local_sizes, targets,
-                                             scene.mesh.growth_rate);
-          }
+        case RefinementMode::uniform:
+          return run_uniform_ladder(scene, n_levels, refinement, folder,
+                                    after_level);
+        case RefinementMode::remesh:
+          return run_remesh_ladder(scene, n_levels, refinement, folder,
+                                   after_level);
+        case RefinementMode::adaptive:
+        default:
+          return run_adaptive_ladder(scene, n_levels, refinement,
+                                     coarsen_fraction, folder, after_level);
       }
-    return levels;
   }
 } // namespace FloorBlock::App

@@ -23,14 +23,23 @@ namespace FloorBlock::App
      */
     uniform,
     /**
-     * Level 0 is the scene's mesh; each further level re-meshes with the
-     * size requests of all previous levels' indicators added
-     * (Convergence::joint_size_targets, bulk_size_targets).
+     * Level 0 is uniform level 0 (the scene's Gmsh mesh); each further
+     * level refines and coarsens the previous level's mesh in deal.II
+     * (hanging nodes), where the previous solution's indicators ask for
+     * smaller cells (Convergence::joint_size_targets, bulk_size_targets)
+     * and coarsens the smoothest cells, with both sides of every joint
+     * refined alike (Convergence::refine_matched).
      */
-    adaptive
+    adaptive,
+    /**
+     * Level 0 is uniform level 0; each further level re-meshes with Gmsh
+     * with the size requests of all previous levels' indicators added: the
+     * same requests as adaptive, realised by a global size field.
+     */
+    remesh
   };
 
-  /** @brief "uniform" or "adaptive". */
+  /** @brief "uniform", "adaptive" or "remesh". */
   std::string
   mode_name(const RefinementMode mode);
 
@@ -47,14 +56,17 @@ namespace FloorBlock::App
    * @brief Runs @p n_levels full solves of the loading path, each into
    * <folder>/<mode>/level_<l>/ (mesh.msh, fem.json, joints.csv). A level
    * that does not converge or fails (mesh or solver error) is recorded
-   * with its status and the ladder goes on; an adaptive ladder stops early
-   * if a level leaves no solution to refine from.
+   * with its status and the ladder goes on; an adaptive or remesh ladder
+   * stops early if a level leaves no solution to refine from.
+   * @p coarsen_fraction: adaptive mode, fraction of cells flagged for
+   * coarsening per level (Convergence::flag_smooth_cells_for_coarsening).
    */
   std::vector<Convergence::LevelRecord>
   run_ladder(const Parameters::ScenarioParameters   &scene,
              const RefinementMode                    mode,
              const unsigned int                      n_levels,
              const Convergence::RefinementSettings  &refinement,
+             const double                            coarsen_fraction,
              const Output::ResultFolder             &folder,
              const LevelCallback                    &after_level);
 } // namespace FloorBlock::App

@@ -57,15 +57,27 @@ namespace FloorBlock::App
   {
     if (Scene::uses_rigid_blocks(scene))
       return solve_rigid_scene(scene, folder);
-    FemOutcome outcome;
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
-    outcome.mesh = Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
-                                             folder.path_of("mesh.msh"),
-                                             extras.local_sizes);
+    const Geometry::MeshStatistics mesh =
+      Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
+                                folder.path_of("mesh.msh"), extras.local_sizes);
     dealii::Triangulation<2> triangulation;
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
+    return solve_meshed_scene(scene, triangulation, mesh, folder, write_vtu,
+                              extras);
+  }
 
+  FemOutcome
+  solve_meshed_scene(const Parameters::ScenarioParameters &scene,
+                     const dealii::Triangulation<2>       &triangulation,
+                     const Geometry::MeshStatistics       &mesh,
+                     const Output::ResultFolder           &folder,
+                     const bool                            write_vtu,
+                     const SolveExtras                    &extras)
+  {
+    FemOutcome outcome;
+    outcome.mesh = mesh;
     Output::FemReportContext context{scene.geometry.n_blocks,
                                      scene.geometry.support_width,
                                      "converged",

@@ -6,6 +6,8 @@
 #include <output/result_folder.h>
 #include <parameters/scenario_parameters.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <nlohmann/json.hpp>
 
 #include <functional>
@@ -55,6 +57,19 @@ namespace FloorBlock::App
               const Output::ResultFolder &          folder,
               const bool                            write_vtu = true,
               const SolveExtras &                   extras    = {});
+
+  /**
+   * @brief solve_scene() on a mesh the caller made (e.g. refined by deal.II
+   * in `converge --mode adaptive`): the same solve and files, except that
+   * no mesh.msh is written and @p mesh describes the mesh in fem.json.
+   */
+  FemOutcome
+  solve_meshed_scene(const Parameters::ScenarioParameters &scene,
+                     const dealii::Triangulation<2>       &triangulation,
+                     const Geometry::MeshStatistics       &mesh,
+                     const Output::ResultFolder           &folder,
+                     const bool                            write_vtu,
+                     const SolveExtras                    &extras);
 
   /** @brief Terminal summary: one line per joint, the state, and times. */
   std::string

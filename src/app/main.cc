@@ -124,8 +124,14 @@ main(int argc, char **argv)
   converge->add_option("--levels", options.n_levels,
                        "Number of refinement levels (2-10, default 5)");
   converge->add_option("--mode", options.refinement_mode,
-                       "uniform, adaptive or both (default)")
-    ->check(CLI::IsMember({"uniform", "adaptive", "both"}));
+                       "uniform, adaptive (deal.II hanging nodes), remesh "
+                       "(Gmsh size field), both (uniform and adaptive, "
+                       "default) or all three")
+    ->check(CLI::IsMember({"uniform", "adaptive", "remesh", "both", "all"}));
+  converge->add_option("--coarsen-fraction", options.coarsen_fraction,
+                       "Adaptive: fraction of cells with the smallest Kelly "
+                       "indicator flagged for coarsening per level "
+                       "(default 0.03, 0 = never coarsen)");
   converge->add_option("--bulk-fraction", options.bulk_fraction,
                        "Adaptive: fraction of cells with the largest Kelly "
                        "indicator refined per level (default 0.1)");

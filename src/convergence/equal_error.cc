@@ -54,6 +54,7 @@ namespace FloorBlock::Convergence
   {
     EqualErrorComparison comparison;
     comparison.quantity              = quantity.name;
+    comparison.adaptive_mode         = adaptive.mode;
     comparison.target_relative_error = target_relative_error;
     const auto &uniform_reference = uniform.errors.at(quantity_index).reference;
     const auto &adaptive_reference =

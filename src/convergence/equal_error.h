@@ -24,6 +24,8 @@ namespace FloorBlock::Convergence
   struct EqualErrorComparison
   {
     std::string quantity;
+    /** The refined ladder compared with uniform refinement ("adaptive" or "remesh"). */
+    std::string adaptive_mode;
     double      target_relative_error = 0.;
     /**
      * First level from which on every finer level with an estimate has an

@@ -83,10 +83,9 @@ namespace FloorBlock::Convergence
     return targets;
   }
 
-  std::vector<Geometry::LocalSize>
-  bulk_size_targets(const Fem::FeSpace<2>                       &space,
-                    const dealii::TrilinosWrappers::MPI::Vector &solution,
-                    const RefinementSettings                    &settings)
+  dealii::Vector<float>
+  kelly_indicator(const Fem::FeSpace<2>                       &space,
+                  const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
     const auto &dofs = space.dof_handler();
     // A serial copy: the estimator reads neighbour values across every
@@ -96,7 +95,14 @@ namespace FloorBlock::Convergence
     dealii::KellyErrorEstimator<2>::estimate(
       space.mapping(), dofs, dealii::QGauss<1>(space.degree() + 1), {},
       displacement, indicator);
+    return indicator;
+  }
 
+  std::vector<Geometry::LocalSize>
+  bulk_size_targets(const dealii::Triangulation<2> &triangulation,
+                    const dealii::Vector<float>    &indicator,
+                    const RefinementSettings       &settings)
+  {
     std::vector<unsigned int> order(indicator.size());
     std::iota(order.begin(), order.end(), 0u);
     const std::size_t n_marked = std::min<std::size_t>(
@@ -112,12 +118,21 @@ namespace FloorBlock::Convergence
       marked[order[k]] = indicator[order[k]] > 0.f;
 
     std::vector<Geometry::LocalSize> targets;
-    for (const auto &cell : dofs.active_cell_iterators())
+    for (const auto &cell : triangulation.active_cell_iterators())
       if (marked[cell->active_cell_index()])
         targets.push_back(
           {point2(cell->center()),
            std::max(settings.smallest_size, std::sqrt(cell->measure()) / 2.)});
     return targets;
+  }
+
+  std::vector<Geometry::LocalSize>
+  bulk_size_targets(const Fem::FeSpace<2>                       &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution,
+                    const RefinementSettings                    &settings)
+  {
+    return bulk_size_targets(space.dof_handler().get_triangulation(),
+                             kelly_indicator(space, solution), settings);
   }
 
   void

@@ -4,7 +4,9 @@
 #include <fem/fe_space.h>
 #include <geometry/local_size_field.h>
 
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <vector>
 
@@ -74,6 +76,20 @@ namespace FloorBlock::Convergence
   bulk_size_targets(const Fem::FeSpace<2>                       &space,
                     const dealii::TrilinosWrappers::MPI::Vector &solution,
                     const RefinementSettings                    &settings);
+
+  /**
+   * @brief The Kelly indicator of the displacement per active cell (by
+   * active cell index), as bulk_size_targets() uses it.
+   */
+  dealii::Vector<float>
+  kelly_indicator(const Fem::FeSpace<2>                       &space,
+                  const dealii::TrilinosWrappers::MPI::Vector &solution);
+
+  /** @brief bulk_size_targets() from an indicator already computed. */
+  std::vector<Geometry::LocalSize>
+  bulk_size_targets(const dealii::Triangulation<2> &triangulation,
+                    const dealii::Vector<float>    &indicator,
+                    const RefinementSettings       &settings);
   /**
    * @brief Adds to @p requests those @p candidates that ask for less than
    * the requests already give at their position

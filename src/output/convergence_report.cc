@@ -203,6 +203,7 @@ namespace FloorBlock::Output
         };
         equal_error.push_back(
           {{"quantity", comparison.quantity},
+           {"mode", comparison.adaptive_mode},
            {"target_relative_error", comparison.target_relative_error},
            {"uniform_level", level(comparison.uniform_level)},
            {"adaptive_level", level(comparison.adaptive_level)},
@@ -263,8 +264,9 @@ namespace FloorBlock::Output
             "{}$d{} with linespoints lc rgb '{}' dt {} pt {} title '{} {}'",
             plot == "plot " ? "" : ", ", block,
             curve_colours[q % curve_colours.size()],
-            ladder.mode == "uniform" ? 1 : 2,
-            ladder.mode == "uniform" ? 7 : 6, ladder.mode,
+            ladder.mode == "uniform" ? 1 : (ladder.mode == "adaptive" ? 2 : 3),
+            ladder.mode == "uniform" ? 7 : (ladder.mode == "adaptive" ? 6 : 4),
+            ladder.mode,
             quantities[q].name);
           ++block;
         }

@@ -1,0 +1,338 @@
+#include <convergence/matched_refinement.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace FloorBlock::Convergence
+{
+  namespace
+  {
+    /** A joint face: its position along the joint and its length (m). */
+    struct JointFace
+    {
+      double     position;
+      double     length;
+      ActiveCell cell;
+    };
+
+    struct BoundaryFace
+    {
+      ActiveCell   cell;
+      unsigned int face_no;
+    };
+
+    std::vector<BoundaryFace>
+    faces_with_id(const dealii::Triangulation<2>  &triangulation,
+                  const dealii::types::boundary_id id)
+    {
+      std::vector<BoundaryFace> faces;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+            faces.push_back({cell, f});
+      return faces;
+    }
+
+    /**
+     * Unit vector along a joint: the sum of its face vectors, each turned
+     * to agree with the first. A curved joint keeps positions along it
+     * monotonic while its tangent turns by less than 90 degrees.
+     */
+    dealii::Tensor<1, 2>
+    mean_direction(const std::vector<BoundaryFace> &faces)
+    {
+      dealii::Tensor<1, 2> sum;
+      dealii::Tensor<1, 2> first;
+      for (const auto &[cell, f] : faces)
+        {
+          dealii::Tensor<1, 2> along =
+            cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
+          if (first.norm() == 0.)
+            first = along;
+          sum += (along * first < 0. ? -1. : 1.) * along;
+        }
+      return sum / sum.norm();
+    }
+
+    std::vector<JointFace>
+    along_joint(const std::vector<BoundaryFace> &faces,
+                const dealii::Point<2>          &origin,
+                const dealii::Tensor<1, 2>      &direction)
+    {
+      std::vector<JointFace> along;
+      for (const auto &[cell, f] : faces)
+        along.push_back({(cell->face(f)->center() - origin) * direction,
+                         cell->face(f)->measure(), cell});
+      std::sort(along.begin(), along.end(),
+                [](const JointFace &a, const JointFace &b) {
+                  return a.position < b.position;
+                });
+      return along;
+    }
+
+    /** The face of @p sorted nearest to @p position, if it faces @p face. */
+    const JointFace *
+    facing_face(const JointFace &face, const std::vector<JointFace> &sorted)
+    {
+      const auto after = std::lower_bound(
+        sorted.begin(), sorted.end(), face.position,
+        [](const JointFace &a, const double p) { return a.position < p; });
+      const JointFace *nearest = after != sorted.end() ? &*after : nullptr;
+      if (after != sorted.begin() &&
+          (!nearest || face.position - (after - 1)->position <
+                         nearest->position - face.position))
+        nearest = &*(after - 1);
+      // Facing faces coincide or mirror each other: same position and length
+      // to round-off. A quarter / a tenth of a face tells them from the
+      // neighbours without depending on round-off.
+      if (nearest &&
+          std::abs(nearest->position - face.position) <=
+            0.25 * std::min(nearest->length, face.length) &&
+          std::abs(nearest->length - face.length) <= 0.1 * face.length)
+        return nearest;
+      return nullptr;
+    }
+
+    /** Whether deal.II will coarsen the parent of @p cell. */
+    bool
+    parent_will_coarsen(const ActiveCell &cell)
+    {
+      if (cell->level() == 0)
+        return false;
+      const auto parent = cell->parent();
+      for (unsigned int c = 0; c < parent->n_children(); ++c)
+        if (parent->child(c)->has_children() ||
+            !parent->child(c)->coarsen_flag_set())
+          return false;
+      return true;
+    }
+
+    void
+    keep_parent(const ActiveCell &cell)
+    {
+      const auto parent = cell->parent();
+      for (unsigned int c = 0; c < parent->n_children(); ++c)
+        parent->child(c)->clear_coarsen_flag();
+    }
+
+    void
+    flag_for_refinement(const ActiveCell &cell)
+    {
+      cell->clear_coarsen_flag();
+      cell->set_refine_flag();
+    }
+
+    /** One round of copying flags across the joints; true if any changed. */
+    bool
+    mirror_flags(const std::vector<std::pair<ActiveCell, ActiveCell>> &pairs)
+    {
+      bool changed = false;
+      for (const auto &[a, b] : pairs)
+        if (a->refine_flag_set() != b->refine_flag_set())
+          {
+            flag_for_refinement(a->refine_flag_set() ? b : a);
+            changed = true;
+          }
+      for (const auto &[a, b] : pairs)
+        {
+          const bool a_coarsens = parent_will_coarsen(a);
+          if (a_coarsens != parent_will_coarsen(b))
+            {
+              keep_parent(a_coarsens ? a : b);
+              changed = true;
+            }
+        }
+      return changed;
+    }
+
+    /** Requests sorted by x, for the window search of requested_size_on(). */
+    struct SortedRequests
+    {
+      std::vector<Geometry::LocalSize> requests;
+      double                           growth_rate;
+
+      SortedRequests(std::vector<Geometry::LocalSize> unsorted,
+                     const double                     growth)
+        : requests(std::move(unsorted))
+        , growth_rate(growth)
+      {
+        std::sort(requests.begin(), requests.end(),
+                  [](const auto &a, const auto &b) {
+                    return a.position.x < b.position.x;
+                  });
+      }
+
+      /**
+       * Smallest graded request at the vertices and centre of @p cell.
+       * Only requests within reach matter: a request h_p at distance d
+       * asks for h_p + (g - 1) d, which exceeds the cell's own size s
+       * beyond d = s / (g - 1); candidates are taken from that x window
+       * (plus the cell's extent) and passed to Geometry::local_size_at.
+       */
+      double
+      on(const dealii::TriaAccessor<2, 2, 2> &cell,
+         std::vector<Geometry::LocalSize>    &candidates) const
+      {
+        const double size  = cell_size(cell);
+        const double reach = (growth_rate > 1. + 1e-12 ?
+                                size / (growth_rate - 1.) :
+                                std::numeric_limits<double>::infinity()) +
+                             cell.diameter();
+        const double x     = cell.center()[0];
+        const auto   first = std::lower_bound(
+          requests.begin(), requests.end(), x - reach,
+          [](const auto &a, const double p) { return a.position.x < p; });
+        candidates.clear();
+        for (auto it = first; it != requests.end() && it->position.x <= x + reach;
+             ++it)
+          candidates.push_back(*it);
+        double requested = std::numeric_limits<double>::infinity();
+        if (candidates.empty())
+          return requested;
+        const auto at = [&](const dealii::Point<2> &p) {
+          return Geometry::local_size_at(candidates, growth_rate, {p[0], p[1]});
+        };
+        requested = at(cell.center());
+        for (const unsigned int v : cell.vertex_indices())
+          requested = std::min(requested, at(cell.vertex(v)));
+        return requested;
+      }
+    };
+  } // namespace
+
+  std::vector<std::pair<ActiveCell, ActiveCell>>
+  facing_joint_cells(const dealii::Triangulation<2> &triangulation,
+                     const std::vector<JointSides>  &joints)
+  {
+    std::vector<std::pair<ActiveCell, ActiveCell>> pairs;
+    for (const auto &joint : joints)
+      {
+        const auto side_a = faces_with_id(triangulation, joint.side_a);
+        const auto side_b = faces_with_id(triangulation, joint.side_b);
+        if (side_a.empty() || side_b.empty())
+          continue;
+        const auto direction = mean_direction(side_a);
+        const auto origin = side_a.front().cell->face(side_a.front().face_no)->center();
+        const auto faces_b = along_joint(side_b, origin, direction);
+        for (const auto &face : along_joint(side_a, origin, direction))
+          if (const JointFace *facing = facing_face(face, faces_b))
+            pairs.emplace_back(face.cell, facing->cell);
+      }
+    return pairs;
+  }
+
+  void
+  prepare_matched_refinement(dealii::Triangulation<2>      &triangulation,
+                             const std::vector<JointSides> &joints)
+  {
+    const auto pairs = facing_joint_cells(triangulation, joints);
+    // Each round either changes nothing or adds a refine flag / removes
+    // coarsen flags somewhere; far fewer rounds than cells suffice in
+    // practice (two or three), this bound only guards against a bug.
+    constexpr unsigned int max_rounds = 100;
+    for (unsigned int round = 0; round < max_rounds; ++round)
+      {
+        const bool mirrored = mirror_flags(pairs);
+        const bool smoothed = triangulation.prepare_coarsening_and_refinement();
+        if (!mirrored && !smoothed)
+          return;
+      }
+    throw std::logic_error("prepare_matched_refinement: the refinement flags "
+                           "of the two sides of the joints did not settle");
+  }
+
+  double
+  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell)
+  {
+    return std::sqrt(cell.measure());
+  }
+
+  unsigned int
+  flag_cells_above_requested_size(
+    dealii::Triangulation<2>               &triangulation,
+    const std::vector<Geometry::LocalSize> &requests,
+    const double                            growth_rate)
+  {
+    if (requests.empty())
+      return 0;
+    const SortedRequests             sorted(requests, growth_rate);
+    std::vector<Geometry::LocalSize> candidates;
+    unsigned int                     n_flagged = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell_size(*cell) > std::sqrt(2.) * sorted.on(*cell, candidates))
+        {
+          flag_for_refinement(cell);
+          ++n_flagged;
+        }
+    return n_flagged;
+  }
+
+  unsigned int
+  flag_smooth_cells_for_coarsening(
+    dealii::Triangulation<2>               &triangulation,
+    const dealii::Vector<float>            &indicator,
+    const double                            fraction,
+    const std::vector<Geometry::LocalSize> &requests,
+    const double                            growth_rate)
+  {
+    if (fraction <= 0.)
+      return 0;
+    if (indicator.size() != triangulation.n_active_cells())
+      throw std::logic_error("flag_smooth_cells_for_coarsening: the indicator "
+                             "has " + std::to_string(indicator.size()) +
+                             " entries for " +
+                             std::to_string(triangulation.n_active_cells()) +
+                             " cells");
+    const SortedRequests             sorted(requests, growth_rate);
+    std::vector<Geometry::LocalSize> candidates;
+    std::vector<ActiveCell>          coarsenable;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->level() > 0 &&
+          cell_size(*cell->parent()) <=
+            std::sqrt(2.) * sorted.on(*cell->parent(), candidates))
+        coarsenable.push_back(cell);
+    const std::size_t n_wanted = std::min<std::size_t>(
+      coarsenable.size(),
+      static_cast<std::size_t>(fraction * triangulation.n_active_cells()));
+    std::partial_sort(coarsenable.begin(), coarsenable.begin() + n_wanted,
+                      coarsenable.end(),
+                      [&](const ActiveCell &a, const ActiveCell &b) {
+                        return indicator[a->active_cell_index()] <
+                               indicator[b->active_cell_index()];
+                      });
+    for (std::size_t k = 0; k < n_wanted; ++k)
+      coarsenable[k]->set_coarsen_flag();
+    return n_wanted;
+  }
+
+  MatchedRefinementSummary
+  refine_matched(dealii::Triangulation<2>               &triangulation,
+                 const std::vector<JointSides>          &joints,
+                 const std::vector<Geometry::LocalSize> &requests,
+                 const double                            growth_rate,
+                 const dealii::Vector<float>            &indicator,
+                 const double                            coarsen_fraction,
+                 const unsigned int                      max_passes)
+  {
+    MatchedRefinementSummary summary;
+    summary.n_cells_before = triangulation.n_active_cells();
+    for (unsigned int pass = 0; pass < max_passes; ++pass)
+      {
+        if (pass == 0)
+          summary.n_coarsen_flagged = flag_smooth_cells_for_coarsening(
+            triangulation, indicator, coarsen_fraction, requests, growth_rate);
+        const unsigned int n_refine =
+          flag_cells_above_requested_size(triangulation, requests, growth_rate);
+        if (n_refine == 0 && (pass > 0 || summary.n_coarsen_flagged == 0))
+          break;
+        prepare_matched_refinement(triangulation, joints);
+        triangulation.execute_coarsening_and_refinement();
+        ++summary.n_passes;
+      }
+    summary.n_cells_after = triangulation.n_active_cells();
+    return summary;
+  }
+} // namespace FloorBlock::Convergence

@@ -1,0 +1,121 @@
+#pragma once
+
+#include <geometry/local_size_field.h>
+
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <utility>
+#include <vector>
+
+namespace FloorBlock::Convergence
+{
+  /** The boundary ids of the two sides of one joint. */
+  struct JointSides
+  {
+    dealii::types::boundary_id side_a;
+    dealii::types::boundary_id side_b;
+  };
+
+  using ActiveCell = dealii::Triangulation<2>::active_cell_iterator;
+
+  /**
+   * @brief Active cells that face each other across a joint: a face on
+   * side A and a face on side B at the same position along the joint (the
+   * projection of the face centre on the joint's mean direction) and of the
+   * same length. These are the coincident faces of the common part and the
+   * mirror-image faces of facing top fillets, i.e. every face whose nodes
+   * Contact::pair_joint_nodes pairs. A cell with faces on two joints appears
+   * in two pairs.
+   */
+  std::vector<std::pair<ActiveCell, ActiveCell>>
+  facing_joint_cells(const dealii::Triangulation<2> &triangulation,
+                     const std::vector<JointSides>  &joints);
+
+  /**
+   * @brief Completes the refinement and coarsening flags so that both sides
+   * of every joint stay matched, then leaves them ready for
+   * execute_coarsening_and_refinement().
+   *
+   * The bodies of a joint are not neighbours for deal.II (distinct
+   * vertices), so its 2:1 rule and flag smoothing act on each side alone.
+   * Alternately until nothing changes: a refine flag on one cell of a
+   * facing pair is set on the other; where only one of the two parents
+   * would be coarsened (all its children flagged), the coarsen flags of
+   * its children are cleared; then
+   * Triangulation::prepare_coarsening_and_refinement(). Refine flags only
+   * grow and coarsen flags only shrink, so this ends; a joint then gets the
+   * same new (hanging) nodes on both sides, which keeps every node paired.
+   *
+   * @throws std::logic_error if the flags have not settled after many rounds.
+   */
+  void
+  prepare_matched_refinement(dealii::Triangulation<2>       &triangulation,
+                             const std::vector<JointSides>  &joints);
+
+  /**
+   * @brief Size a cell is compared with the requests: the square root of
+   * its area, like the bulk requests' own sizes. Units: m.
+   */
+  double
+  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell);
+
+  /**
+   * @brief Sets the refine flag of every active cell larger than sqrt(2)
+   * times the size the requests ask for anywhere on it (the graded
+   * Geometry::local_size_at() at its vertices and centre, growth rate @p
+   * growth_rate): refining halves the cell, so it then lies within a
+   * factor sqrt(2) of the request. Clears the coarsen flag of a cell it
+   * flags. Joint requests sit on joint nodes (cell vertices), bulk requests
+   * at cell centres.
+   * @return The number of cells flagged.
+   */
+  unsigned int
+  flag_cells_above_requested_size(
+    dealii::Triangulation<2>               &triangulation,
+    const std::vector<Geometry::LocalSize> &requests,
+    const double                            growth_rate);
+
+  /**
+   * @brief Sets the coarsen flag of the @p fraction of active cells with
+   * the smallest @p indicator (indexed by active cell index) among those
+   * that are refined (level > 0) and whose parent would still meet the
+   * requests (twice the size at most sqrt(2) times the request). deal.II
+   * coarsens a parent only if all its children are flagged.
+   * @return The number of cells flagged.
+   */
+  unsigned int
+  flag_smooth_cells_for_coarsening(
+    dealii::Triangulation<2>               &triangulation,
+    const dealii::Vector<float>            &indicator,
+    const double                            fraction,
+    const std::vector<Geometry::LocalSize> &requests,
+    const double                            growth_rate);
+
+  /** What refine_matched() did. */
+  struct MatchedRefinementSummary
+  {
+    unsigned int n_passes           = 0; ///< refinement sweeps executed
+    unsigned int n_cells_before     = 0;
+    unsigned int n_cells_after      = 0;
+    unsigned int n_coarsen_flagged  = 0; ///< cells flagged in the first pass
+  };
+
+  /**
+   * @brief Refines the mesh until every cell meets the requests (at most
+   * @p max_passes sweeps; each halves a cell once), coarsening in the first
+   * sweep where @p indicator is smallest (flag_smooth_cells_for_coarsening,
+   * nothing if @p coarsen_fraction is 0), with the joints kept matched
+   * (prepare_matched_refinement). Manifolds attached to the triangulation
+   * place the new vertices.
+   */
+  MatchedRefinementSummary
+  refine_matched(dealii::Triangulation<2>               &triangulation,
+                 const std::vector<JointSides>          &joints,
+                 const std::vector<Geometry::LocalSize> &requests,
+                 const double                            growth_rate,
+                 const dealii::Vector<float>            &indicator,
+                 const double                            coarsen_fraction,
+                 const unsigned int                      max_passes);
+} // namespace FloorBlock::Convergence
