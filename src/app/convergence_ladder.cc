@@ -335,8 +335,9 @@ namespace FloorBlock::App
       const auto description = Scene::assembly_description(scene);
       Geometry::attach_boundary_manifolds(description, triangulation);
       Convergence::refine_matched(triangulation, joint_sides(scene),
-                                  next.requests, scene.mesh.growth_rate,
-                                  next.kelly, coarsen_fraction, max_passes);
+                                  next.requests,
+                                  Convergence::touching_cells_only, next.kelly,
+                                  coarsen_fraction, max_passes);
       Geometry::detach_boundary_manifolds(triangulation);
       std::filesystem::create_directories(
         std::filesystem::path(msh_path).parent_path());

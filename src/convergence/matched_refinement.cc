@@ -1,6 +1,7 @@
 #include <convergence/matched_refinement.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -148,6 +149,46 @@ namespace FloorBlock::Convergence
       return changed;
     }
 
+    double
+    distance_to_segment(const dealii::Point<2> &point,
+                        const dealii::Point<2> &start,
+                        const dealii::Point<2> &end)
+    {
+      const dealii::Tensor<1, 2> along  = end - start;
+      const double               length2 = along.norm_square();
+      const double               t =
+        length2 > 0. ? std::clamp((point - start) * along / length2, 0., 1.) : 0.;
+      return point.distance(start + t * along);
+    }
+
+    /**
+     * Distance from @p point to a straight-sided convex quadrilateral (0 on
+     * or inside it). deal.II numbers the vertices 0, 1, 3, 2 around a quad.
+     */
+    double
+    distance_to_cell(const dealii::Point<2>              &point,
+                     const dealii::TriaAccessor<2, 2, 2> &cell)
+    {
+      constexpr std::array<unsigned int, 4> around = {0, 1, 3, 2};
+      double nearest = std::numeric_limits<double>::infinity();
+      bool   inside  = true;
+      double orientation = 0.;
+      for (unsigned int k = 0; k < 4; ++k)
+        {
+          const auto &start = cell.vertex(around[k]);
+          const auto &end   = cell.vertex(around[(k + 1) % 4]);
+          nearest = std::min(nearest, distance_to_segment(point, start, end));
+          const dealii::Tensor<1, 2> edge = end - start;
+          const dealii::Tensor<1, 2> to   = point - start;
+          const double side = edge[0] * to[1] - edge[1] * to[0];
+          if (orientation == 0.)
+            orientation = side;
+          else if (side * orientation < 0.)
+            inside = false;
+        }
+      return inside ? 0. : nearest;
+    }
+
     /** Requests sorted by x, for the window search of requested_size_on(). */
     struct SortedRequests
     {
@@ -166,15 +207,14 @@ namespace FloorBlock::Convergence
       }
 
       /**
-       * Smallest graded request at the vertices and centre of @p cell.
-       * Only requests within reach matter: a request h_p at distance d
-       * asks for h_p + (g - 1) d, which exceeds the cell's own size s
-       * beyond d = s / (g - 1); candidates are taken from that x window
-       * (plus the cell's extent) and passed to Geometry::local_size_at.
+       * Smallest graded request on @p cell: h_p + (g - 1) d_p with d_p the
+       * distance from request p to the cell (0 inside), the grading law of
+       * Geometry::local_size_at(). Only requests within reach matter: beyond
+       * d = s / (g - 1) a request asks for more than the cell's own size s;
+       * candidates come from that x window plus the cell's extent.
        */
       double
-      on(const dealii::TriaAccessor<2, 2, 2> &cell,
-         std::vector<Geometry::LocalSize>    &candidates) const
+      on(const dealii::TriaAccessor<2, 2, 2> &cell) const
       {
         const double size  = cell_size(cell);
         const double reach = (growth_rate > 1. + 1e-12 ?
@@ -185,19 +225,13 @@ namespace FloorBlock::Convergence
         const auto   first = std::lower_bound(
           requests.begin(), requests.end(), x - reach,
           [](const auto &a, const double p) { return a.position.x < p; });
-        candidates.clear();
+        double requested = std::numeric_limits<double>::infinity();
         for (auto it = first; it != requests.end() && it->position.x <= x + reach;
              ++it)
-          candidates.push_back(*it);
-        double requested = std::numeric_limits<double>::infinity();
-        if (candidates.empty())
-          return requested;
-        const auto at = [&](const dealii::Point<2> &p) {
-          return Geometry::local_size_at(candidates, growth_rate, {p[0], p[1]});
-        };
-        requested = at(cell.center());
-        for (const unsigned int v : cell.vertex_indices())
-          requested = std::min(requested, at(cell.vertex(v)));
+          requested = std::min(
+            requested,
+            it->size + (growth_rate - 1.) *
+                         distance_to_cell({it->position.x, it->position.y}, cell));
         return requested;
       }
     };
@@ -258,11 +292,10 @@ namespace FloorBlock::Convergence
   {
     if (requests.empty())
       return 0;
-    const SortedRequests             sorted(requests, growth_rate);
-    std::vector<Geometry::LocalSize> candidates;
-    unsigned int                     n_flagged = 0;
+    const SortedRequests sorted(requests, growth_rate);
+    unsigned int         n_flagged = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell_size(*cell) > std::sqrt(2.) * sorted.on(*cell, candidates))
+      if (cell_size(*cell) > std::sqrt(2.) * sorted.on(*cell))
         {
           flag_for_refinement(cell);
           ++n_flagged;
@@ -286,13 +319,11 @@ namespace FloorBlock::Convergence
                              " entries for " +
                              std::to_string(triangulation.n_active_cells()) +
                              " cells");
-    const SortedRequests             sorted(requests, growth_rate);
-    std::vector<Geometry::LocalSize> candidates;
-    std::vector<ActiveCell>          coarsenable;
+    const SortedRequests    sorted(requests, growth_rate);
+    std::vector<ActiveCell> coarsenable;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->level() > 0 &&
-          cell_size(*cell->parent()) <=
-            std::sqrt(2.) * sorted.on(*cell->parent(), candidates))
+          cell_size(*cell->parent()) <= std::sqrt(2.) * sorted.on(*cell->parent()))
         coarsenable.push_back(cell);
     const std::size_t n_wanted = std::min<std::size_t>(
       coarsenable.size(),

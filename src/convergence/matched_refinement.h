@@ -62,13 +62,22 @@ namespace FloorBlock::Convergence
   cell_size(const dealii::TriaAccessor<2, 2, 2> &cell);
 
   /**
+   * Growth rate that makes a request act on the cells it touches only
+   * (h_p + (g - 1) d is far above any cell size for d > 0): with hanging
+   * nodes the 2:1 rule grades the mesh, and a graded request field (which
+   * Gmsh needs for element quality) would refine many more cells.
+   */
+  constexpr double touching_cells_only = 1e6;
+
+  /**
    * @brief Sets the refine flag of every active cell larger than sqrt(2)
-   * times the size the requests ask for anywhere on it (the graded
-   * Geometry::local_size_at() at its vertices and centre, growth rate @p
-   * growth_rate): refining halves the cell, so it then lies within a
-   * factor sqrt(2) of the request. Clears the coarsen flag of a cell it
-   * flags. Joint requests sit on joint nodes (cell vertices), bulk requests
-   * at cell centres.
+   * times the size the requests ask for anywhere on it: min over requests
+   * of h_p + (g - 1) d_p, d_p the distance from request p to the cell (0 on
+   * or inside it), the grading law of Geometry::local_size_at() with growth
+   * rate g = @p growth_rate. Refining halves the cell, so it then lies
+   * within a factor sqrt(2) of the request. Clears the coarsen flag of a
+   * cell it flags. Joint requests sit on joint nodes (cell vertices), bulk
+   * requests at cell centres.
    * @return The number of cells flagged.
    */
   unsigned int

@@ -1,5 +1,6 @@
-// `floorblock converge` end to end on the coarse 3-block scene: 3 uniform
-// and 3 adaptive levels (about 7 s on the 2-core test machine). CTest runs
+// `floorblock converge` end to end on the coarse 3-block scene: 3 uniform,
+// 3 adaptive (hanging nodes) and 3 remesh levels (about 10 s on the 2-core
+// test machine), and the adaptive ladder on rounded corners. CTest runs
 // every TEST in its own process, so the study's checks share one TEST and
 // one run.
 #include "process.h"
@@ -74,7 +75,10 @@ namespace
     return std::stod(row.at(column));
   }
 
-  // The tool shall record every level of both ladders with its mesh, cost,
+  const std::vector<std::string> ladder_modes = {"uniform", "adaptive",
+                                                 "remesh"};
+
+  // The tool shall record every level of all three ladders with its mesh, cost,
   // quantities of interest and error estimate, units in the column names.
   void
   check_every_level_and_column(const std::string &output)
@@ -82,7 +86,8 @@ namespace
     for (const char *name : {"convergence.csv", "convergence.json",
                              "error_vs_wall_time.png", "summary.json",
                              "uniform/level_2/fem.json",
-                             "adaptive/level_2/mesh.msh"})
+                             "adaptive/level_2/mesh.msh",
+                             "remesh/level_2/mesh.msh"})
       EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
 
     const Table table = read_csv(output + "/convergence.csv");
@@ -100,13 +105,11 @@ namespace
                 table.columns.end())
         << column;
 
-    ASSERT_EQ(table.rows.size(), 6u);
-    const std::vector<std::string> modes = {"uniform", "uniform", "uniform",
-                                            "adaptive", "adaptive", "adaptive"};
+    ASSERT_EQ(table.rows.size(), 9u);
     for (std::size_t k = 0; k < table.rows.size(); ++k)
       {
         const Row &row = table.rows[k];
-        EXPECT_EQ(row.at("mode"), modes[k]);
+        EXPECT_EQ(row.at("mode"), ladder_modes[k / 3]);
         EXPECT_EQ(row.at("level"), std::to_string(k % 3));
         EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
         for (const auto &[column, value] : row)
@@ -114,24 +117,29 @@ namespace
                       value.find("inf") == std::string::npos)
             << column << " = " << value;
       }
-    // Both ladders start from the same mesh.
+    // All ladders start from the same mesh.
     EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[3].at("n_dofs"));
+    EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[6].at("n_dofs"));
   }
 
   // The tool shall refine: uniform levels multiply the DoFs (each halves the
   // whole size function, so about x4 in 2D; the coarsest meshes are held up by
-  // the minimum cell counts, hence the bound 2), adaptive levels add some.
+  // the minimum cell counts, hence the bound 2), adaptive and remesh levels
+  // add some; the adaptive levels' meshes are deal.II refinements (no Gmsh
+  // run: their mesh time is far below level 0's).
   void
   check_levels_refine(const std::string &output)
   {
     const Table table = read_csv(output + "/convergence.csv");
-    ASSERT_EQ(table.rows.size(), 6u);
+    ASSERT_EQ(table.rows.size(), 9u);
     for (std::size_t k : {1u, 2u})
       EXPECT_GT(value_of(table.rows[k], "n_dofs"),
                 2. * value_of(table.rows[k - 1], "n_dofs"));
-    for (std::size_t k : {4u, 5u})
+    for (std::size_t k : {4u, 5u, 7u, 8u})
       EXPECT_GT(value_of(table.rows[k], "n_dofs"),
                 value_of(table.rows[k - 1], "n_dofs"));
+    for (std::size_t k : {4u, 5u})
+      EXPECT_GT(value_of(table.rows[k], "n_local_sizes"), 0.);
   }
 
   // The tool shall converge in the joint force Q at the face. Q is a
@@ -145,15 +153,16 @@ namespace
   check_face_force_converges(const std::string &output)
   {
     const Table table = read_csv(output + "/convergence.csv");
-    ASSERT_EQ(table.rows.size(), 6u);
+    ASSERT_EQ(table.rows.size(), 9u);
     const auto q = [&](const std::size_t k) {
       return value_of(table.rows[k], "Q_face_N_per_m");
     };
     constexpr double tolerance = 2.5e-3;
     EXPECT_LT(std::abs(q(2) - q(1)), tolerance * std::abs(q(2)));
     EXPECT_LT(std::abs(q(2) - q(1)), std::abs(q(1) - q(0)));
-    // The adaptive ladder ends at the same Q.
+    // The adaptive and remesh ladders end at the same Q.
     EXPECT_LT(std::abs(q(5) - q(2)), tolerance * std::abs(q(2)));
+    EXPECT_LT(std::abs(q(8) - q(2)), tolerance * std::abs(q(2)));
   }
 
   // The tool shall state for every quantity how its error was estimated.
@@ -162,7 +171,7 @@ namespace
   {
     std::ifstream in(output + "/convergence.json");
     const json    report = json::parse(in);
-    for (const char *mode : {"uniform", "adaptive"})
+    for (const std::string &mode : ladder_modes)
       for (const auto &[name, estimate] :
            report["modes"][mode]["quantities"].items())
         {
@@ -172,19 +181,23 @@ namespace
           EXPECT_FALSE(estimate["reason"].get<std::string>().empty());
           EXPECT_EQ(estimate["observed_orders"].size(), 3u);
         }
-    EXPECT_EQ(report["equal_error_comparison"].size(), 6u); // Q_1, Q_2, Q_face + 3
+    // Q_1, Q_2, Q_face + 3 face figures, adaptive and remesh each against uniform.
+    ASSERT_EQ(report["equal_error_comparison"].size(), 12u);
+    EXPECT_EQ(report["equal_error_comparison"][0]["mode"], "adaptive");
+    EXPECT_EQ(report["equal_error_comparison"][6]["mode"], "remesh");
     EXPECT_TRUE(report.contains("adaptive_target"));
+    EXPECT_TRUE(report.contains("remesh_target"));
   }
 
 } // namespace
 
-// The tool shall run a uniform and an adaptive refinement ladder and report
-// each level's cost, answers and error estimate.
+// The tool shall run uniform, adaptive and remesh refinement ladders and
+// report each level's cost, answers and error estimate.
 TEST(ConvergeCommand, StudyOfTheThreeBlockScene)
 {
   const std::string folder = fresh_output_folder("converge_three_blocks");
   const auto        result = run_floorblock(
-    "converge tests/scenarios/three_blocks.prm --levels 3 --mode both "
+    "converge tests/scenarios/three_blocks.prm --levels 3 --mode all "
     "--output " +
     shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
@@ -192,6 +205,40 @@ TEST(ConvergeCommand, StudyOfTheThreeBlockScene)
   check_levels_refine(folder);
   check_face_force_converges(folder);
   check_methods_and_orders(folder);
+}
+
+// The tool shall refine rounded corners with hanging nodes: the facing top
+// fillets (mirror images on this level floor) and the joints' common parts
+// get the same new nodes on both sides, so every level pairs and solves.
+// A pairing that lost a partner would fail the level ("failed"); a level
+// whose new fillet vertices left the arcs would still solve, which the
+// geometry unit test RefinementManifolds covers.
+TEST(ConvergeCommand, AdaptiveLadderOnRoundedCorners)
+{
+  const std::string folder = fresh_output_folder("converge_rounded");
+  const auto        result = run_floorblock(
+    "converge tests/scenarios/hard_rounded_corners.prm --levels 3 --mode "
+    "adaptive --output " + shell_quoted(folder));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const Table table = read_csv(folder + "/convergence.csv");
+  ASSERT_EQ(table.rows.size(), 3u);
+  for (std::size_t k = 0; k < table.rows.size(); ++k)
+    {
+      const Row &row = table.rows[k];
+      EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
+      // Equilibrium of every body holds on the refined meshes as on Gmsh's.
+      EXPECT_LT(value_of(row, "force_balance_relative_error"), 1e-8);
+      if (k > 0)
+        {
+          EXPECT_GT(value_of(row, "n_contact_pairs"),
+                    value_of(table.rows[k - 1], "n_contact_pairs"));
+          // Q at the face changes by less than the first step's 1 %.
+          EXPECT_LT(std::abs(value_of(row, "Q_face_N_per_m") /
+                               value_of(table.rows[0], "Q_face_N_per_m") - 1.),
+                    0.01);
+        }
+    }
+  EXPECT_FALSE(std::filesystem::exists(folder + "/uniform"));
 }
 
 // The tool shall refuse a ladder too short for any error estimate.
