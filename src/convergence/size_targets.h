@@ -13,10 +13,12 @@
 namespace FloorBlock::Convergence
 {
   /**
-   * @brief What the adaptive re-meshing refines, and how much.
+   * @brief What adaptive refinement refines, and how much.
    *
-   * Each marked place asks for half its current cell size; the requests of
-   * all levels are kept, so the mesh never coarsens from level to level.
+   * Each marked place asks for half its current cell size (a zone end for
+   * a quarter). `converge --mode remesh` keeps the requests of all levels
+   * (each level is a new Gmsh mesh); `--mode adaptive` applies each level's
+   * requests to the previous level's deal.II mesh, which keeps its cells.
    */
   struct RefinementSettings
   {

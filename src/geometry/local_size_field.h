@@ -9,14 +9,14 @@ namespace FloorBlock::Geometry
 {
   /**
    * @brief A requested cell size at one point, from a solution-driven
-   * refinement indicator (`floorblock converge --mode adaptive`).
+   * refinement indicator (`floorblock converge`).
    *
-   * Adaptive refinement re-meshes with Gmsh instead of refining cells in
-   * deal.II: the joints pair nodes one-to-one on matching meshes
-   * (Contact::pair_joint_nodes), and a hanging node on one side of a joint
-   * would have no partner. A size field is global, and the joint sides stay
+   * Two consumers: `--mode remesh` re-meshes with Gmsh through
+   * add_local_size_field() (a size field is global and the joint sides stay
    * periodic copies of each other, so both sides of every joint get the
-   * same refined nodes.
+   * same new nodes); `--mode adaptive` flags the deal.II cells the requests
+   * touch (Convergence::refine_matched, which keeps the joint sides
+   * matched itself).
    */
   struct LocalSize
   {
