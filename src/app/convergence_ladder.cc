@@ -322,11 +322,12 @@ namespace FloorBlock::App
      * the scene's curves) and writes it as mesh.msh.
      */
     Geometry::MeshStatistics
-    refine_for_next_level(const Parameters::ScenarioParameters &scene,
-                          const Indicators                     &next,
-                          const double                          coarsen_fraction,
-                          const std::string                    &msh_path,
-                          dealii::Triangulation<2>             &triangulation)
+    refine_for_next_level(const Parameters::ScenarioParameters   &scene,
+                          const Indicators                       &next,
+                          const double                            coarsen_fraction,
+                          const std::string                      &msh_path,
+                          dealii::Triangulation<2>               &triangulation,
+                          Convergence::MatchedRefinementSummary  &summary)
     {
       // A zone end asks for a quarter of its segment (zone_end_refinement
       // = 4: two halvings); one more sweep lets the 2:1 grading follow.
@@ -334,7 +335,7 @@ namespace FloorBlock::App
       dealii::Timer          timer;
       const auto description = Scene::assembly_description(scene);
       Geometry::attach_boundary_manifolds(description, triangulation);
-      Convergence::refine_matched(triangulation, joint_sides(scene),
+      summary = Convergence::refine_matched(triangulation, joint_sides(scene),
                                   next.requests,
                                   Convergence::touching_cells_only, next.kelly,
                                   coarsen_fraction, max_passes);
@@ -364,8 +365,9 @@ namespace FloorBlock::App
       Indicators               previous;
       for (unsigned int level = 0; level < n_levels; ++level)
         {
-          Indicators next;
-          log.add(solve_level(
+          Indicators                            next;
+          Convergence::MatchedRefinementSummary refinement_done;
+          LevelRecord record = solve_level(
             scene, RefinementMode::adaptive, level, previous.requests.size(),
             refinement, folder,
             [&](const SolveExtras &extras, const Output::ResultFolder &where) {
@@ -380,13 +382,16 @@ namespace FloorBlock::App
                   return solve_meshed_scene(scene, triangulation, mesh, where,
                                             false, extras);
                 }
-              const auto mesh =
-                refine_for_next_level(scene, previous, coarsen_fraction,
-                                      where.path_of("mesh.msh"), triangulation);
+              const auto mesh = refine_for_next_level(
+                scene, previous, coarsen_fraction, where.path_of("mesh.msh"),
+                triangulation, refinement_done);
               return solve_meshed_scene(scene, triangulation, mesh, where,
                                         false, extras);
             },
-            &next));
+            &next);
+          record.n_refinement_sweeps = refinement_done.n_passes;
+          record.n_cells_coarsened   = refinement_done.n_cells_coarsened;
+          log.add(record);
           if (level + 1 < n_levels && !log.can_refine_from(next))
             break;
           previous = std::move(next);

@@ -40,7 +40,8 @@ namespace FloorBlock::App
       triangulation, folder.path_of("mesh.png"),
       {1600, 0,
        fmt::format("{}: {} cells, {} bodies", scene.scene_name,
-                   statistics.n_cells, statistics.n_bodies)});
+                   statistics.n_cells, statistics.n_bodies),
+       {}});
 
     std::cout << fmt::format(
                    "meshed '{}': {} quadrilaterals, {} nodes, {} bodies, {} "

@@ -12,7 +12,7 @@ namespace FloorBlock::Convergence
   /** @brief One level of a refinement ladder: its mesh, cost and answers. */
   struct LevelRecord
   {
-    std::string  mode;  ///< "uniform" or "adaptive"
+    std::string  mode;  ///< "uniform", "adaptive" or "remesh"
     unsigned int level = 0;
     /** "converged", "not converged" (loading path not completed) or "failed" (mesh or solver error). */
     std::string status;
@@ -22,8 +22,12 @@ namespace FloorBlock::Convergence
     double corner_size = 0.;
     double far_size    = 0.;
     double growth_rate = 0.;
-    /** Adaptive: number of solution-driven size requests the mesh honours. */
+    /** Adaptive and remesh: number of solution-driven size requests the mesh honours. */
     std::size_t n_local_sizes = 0;
+    /** Adaptive: refinement sweeps that made this level's mesh from the previous one. */
+    unsigned int n_refinement_sweeps = 0;
+    /** Adaptive: cells of the previous level removed by coarsening (children of coarsened parents). */
+    std::size_t n_cells_coarsened = 0;
 
     std::size_t  n_cells           = 0;
     unsigned int n_dofs            = 0;

@@ -169,7 +169,7 @@ namespace FloorBlock::Convergence
     distance_to_cell(const dealii::Point<2>              &point,
                      const dealii::TriaAccessor<2, 2, 2> &cell)
     {
-      constexpr std::array<unsigned int, 4> around = {0, 1, 3, 2};
+      constexpr std::array<unsigned int, 4> around = {{0, 1, 3, 2}};
       double nearest = std::numeric_limits<double>::infinity();
       bool   inside  = true;
       double orientation = 0.;
@@ -360,6 +360,8 @@ namespace FloorBlock::Convergence
         if (n_refine == 0 && (pass > 0 || summary.n_coarsen_flagged == 0))
           break;
         prepare_matched_refinement(triangulation, joints);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          summary.n_cells_coarsened += cell->coarsen_flag_set() ? 1 : 0;
         triangulation.execute_coarsening_and_refinement();
         ++summary.n_passes;
       }

@@ -109,6 +109,7 @@ namespace FloorBlock::Convergence
     unsigned int n_cells_before     = 0;
     unsigned int n_cells_after      = 0;
     unsigned int n_coarsen_flagged  = 0; ///< cells flagged in the first pass
+    unsigned int n_cells_coarsened  = 0; ///< of those, coarsened (after the joint and 2:1 rules)
   };
 
   /**

@@ -139,7 +139,13 @@ namespace
       EXPECT_GT(value_of(table.rows[k], "n_dofs"),
                 value_of(table.rows[k - 1], "n_dofs"));
     for (std::size_t k : {4u, 5u})
-      EXPECT_GT(value_of(table.rows[k], "n_local_sizes"), 0.);
+      {
+        EXPECT_GT(value_of(table.rows[k], "n_local_sizes"), 0.);
+        EXPECT_GE(value_of(table.rows[k], "n_refinement_sweeps"), 1.);
+      }
+    // Gmsh levels are not refinements of each other.
+    for (std::size_t k : {0u, 1u, 2u, 6u, 7u, 8u})
+      EXPECT_EQ(value_of(table.rows[k], "n_refinement_sweeps"), 0.);
   }
 
   // The tool shall converge in the joint force Q at the face. Q is a

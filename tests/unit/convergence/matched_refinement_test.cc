@@ -136,6 +136,8 @@ namespace FloorBlock::Convergence
     const MatchedRefinementSummary summary = refine_matched(
       mesh, {}, requests, growth, dealii::Vector<float>(), 0., 5);
     EXPECT_EQ(summary.n_passes, 2u); // 1/8 -> 1/16 -> 1/32
+    EXPECT_EQ(summary.n_cells_coarsened, 0u);
+    EXPECT_EQ(summary.n_cells_after, 64u + 2u * 4u * 3u);
     double smallest = 1.;
     for (const auto &cell : mesh.active_cell_iterators())
       {

@@ -155,11 +155,13 @@ namespace FloorBlock::Geometry
             total += cad[body];
           }
         if (d.corner_rounding_radius == 0.0)
-          EXPECT_LT(relative_difference(
-                      total,
-                      (d.n_blocks * d.block_width + d.face_block_width) *
-                        (d.block_height + d.base_thickness)),
-                    area_tolerance);
+          {
+            EXPECT_LT(relative_difference(
+                        total,
+                        (d.n_blocks * d.block_width + d.face_block_width) *
+                          (d.block_height + d.base_thickness)),
+                      area_tolerance);
+          }
       }
   }
 } // namespace FloorBlock::Geometry
