@@ -189,7 +189,7 @@ namespace FloorBlock::Convergence
       return inside ? 0. : nearest;
     }
 
-    /** Requests sorted by x, for the window search of requested_size_on(). */
+    /** Requests sorted by x, so that on() searches only a window of them. */
     struct SortedRequests
     {
       std::vector<Geometry::LocalSize> requests;
