@@ -271,5 +271,15 @@ namespace FloorBlock
         }
       return reports;
     }
+
+    double
+    largest_overlap(const std::vector<JointReport> &joints)
+    {
+      double largest = 0.;
+      for (const auto &joint : joints)
+        for (const auto &sample : joint.profile)
+          largest = std::max(largest, -sample.gap);
+      return largest;
+    }
   } // namespace Contact
 } // namespace FloorBlock

@@ -102,5 +102,15 @@ namespace FloorBlock
      */
     void
     add_peak_stresses(JointReport &report, const std::vector<double> &weights);
+
+    /**
+     * @brief Largest overlap of the two sides of any joint (m, >= 0): minus
+     * the most negative gap of all profile nodes. The compliant law lets
+     * the sides overlap by t_n / k_n; the contact is small-strain and
+     * node-to-node, so an overlap that is not small against the blocks
+     * means that k_n is too soft for the loads.
+     */
+    double
+    largest_overlap(const std::vector<JointReport> &joints);
   } // namespace Contact
 } // namespace FloorBlock

@@ -361,6 +361,9 @@ namespace
     ConvergedCase result{outcome.folder,
                          read_json(outcome.folder + "/fem.json")};
     expect_physical_answer(result.fem, scene);
+    // Table 6.1's joints overlap by far less than 5 % of a block.
+    EXPECT_EQ(result.fem["joint_overlap"]["status"], "ok")
+      << result.fem["joint_overlap"]["text"];
     return result;
   }
 } // namespace
@@ -546,6 +549,18 @@ TEST(HardCases, VerySoftJoints)
 {
   const CaseOutcome outcome = run_case("solve", "soft_joints");
   expect_physical_answer_or_named_failure(outcome, SceneNumbers{});
+  // It converges, but the loaded blocks sink about 2 m into the bed: the
+  // answer must say that it is not physical (fem.json and the terminal).
+  if (outcome.process.exit_code == 0)
+    {
+      const json overlap =
+        read_json(outcome.folder + "/fem.json")["joint_overlap"];
+      EXPECT_EQ(overlap["status"], "large");
+      EXPECT_GT(overlap["largest_overlap_m"].get<double>(), 1.);
+      EXPECT_NE(outcome.process.output.find("warning: the joint sides overlap"),
+                std::string::npos)
+        << outcome.process.output;
+    }
 }
 
 // The tool shall report joint forces that balance every block, also with

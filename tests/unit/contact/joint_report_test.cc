@@ -367,4 +367,18 @@ namespace
     EXPECT_NEAR(report.averaged_peak_normal_stress,
                 (0.03 * 8e6 + 0.02 * 7e6) / 0.05, 1e-6);
   }
+
+  TEST(LargestOverlap, IsTheMostNegativeGapOfAnyJoint)
+  {
+    JointReport first, second;
+    for (const double gap : {1e-3, -2e-4, 0.})
+      first.profile.push_back({0., {}, 0., 0., gap, JointState::stick});
+    for (const double gap : {-5e-4, 3e-3})
+      second.profile.push_back({0., {}, 0., 0., gap, JointState::slip});
+    EXPECT_DOUBLE_EQ(largest_overlap({first, second}), 5e-4);
+    // Open or touching joints do not overlap.
+    EXPECT_DOUBLE_EQ(largest_overlap({JointReport{}}), 0.);
+    second.profile = {{0., {}, 0., 0., 2e-3, JointState::open}};
+    EXPECT_DOUBLE_EQ(largest_overlap({second}), 0.);
+  }
 } // namespace
