@@ -126,15 +126,6 @@ namespace FloorBlock::Convergence
     return targets;
   }
 
-  std::vector<Geometry::LocalSize>
-  bulk_size_targets(const Fem::FeSpace<2>                       &space,
-                    const dealii::TrilinosWrappers::MPI::Vector &solution,
-                    const RefinementSettings                    &settings)
-  {
-    return bulk_size_targets(space.dof_handler().get_triangulation(),
-                             kelly_indicator(space, solution), settings);
-  }
-
   void
   merge_size_requests(std::vector<Geometry::LocalSize> &requests,
                       std::vector<Geometry::LocalSize>  candidates,

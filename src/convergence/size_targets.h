@@ -65,33 +65,26 @@ namespace FloorBlock::Convergence
                      const RefinementSettings                &settings);
 
   /**
-   * @brief Size requests in the bodies, from the Kelly indicator of the
-   * displacement (the jump of the normal derivative, i.e. of the traction,
-   * across interior faces; joint faces are boundaries and add nothing,
-   * joint_size_targets() covers them).
-   *
-   * The RefinementSettings::bulk_fraction of cells with the largest
-   * indicator ask at their centre for half their size (square root of the
-   * area).
-   */
-  std::vector<Geometry::LocalSize>
-  bulk_size_targets(const Fem::FeSpace<2>                       &space,
-                    const dealii::TrilinosWrappers::MPI::Vector &solution,
-                    const RefinementSettings                    &settings);
-
-  /**
    * @brief The Kelly indicator of the displacement per active cell (by
-   * active cell index), as bulk_size_targets() uses it.
+   * active cell index): the jump of the normal derivative, i.e. of the
+   * traction, across interior faces; joint faces are boundaries and add
+   * nothing (joint_size_targets() covers them).
    */
   dealii::Vector<float>
   kelly_indicator(const Fem::FeSpace<2>                       &space,
                   const dealii::TrilinosWrappers::MPI::Vector &solution);
 
-  /** @brief bulk_size_targets() from an indicator already computed. */
+  /**
+   * @brief Size requests in the bodies: the
+   * RefinementSettings::bulk_fraction of cells with the largest @p
+   * indicator (kelly_indicator(), by active cell index) ask at their centre
+   * for half their size (square root of the area).
+   */
   std::vector<Geometry::LocalSize>
   bulk_size_targets(const dealii::Triangulation<2> &triangulation,
                     const dealii::Vector<float>    &indicator,
                     const RefinementSettings       &settings);
+
   /**
    * @brief Adds to @p requests those @p candidates that ask for less than
    * the requests already give at their position

@@ -39,17 +39,31 @@ namespace
     return result;
   }
 
+  /** Uniform: DoFs x4 and cost x4 per level. */
+  Ladder
+  uniform_ladder(const std::vector<double> &values)
+  {
+    return ladder("uniform", values, {1000, 4000, 16000, 64000},
+                  {1., 4., 16., 64.});
+  }
+
+  /**
+   * Adaptive: finest-difference estimates 0.2, 0.008, 0.009, - -> within
+   * 1 % from level 1 (2000 DoFs, cost 3).
+   */
+  Ladder
+  adaptive_ladder()
+  {
+    return ladder("adaptive", {1.2, 0.992, 1.009, 1.0},
+                  {1000, 2000, 3000, 4000}, {1., 3., 6., 10.});
+  }
+
   TEST(EqualError, LevelsAndRatiosAtTheTarget)
   {
     // Oscillating values: finest-difference estimates relative to the last.
     // Uniform: |q - 1|/1 = 0.1, 0.05, 0.005, - -> within 1 % from level 2.
-    const Ladder uniform = ladder("uniform", {1.1, 0.95, 1.005, 1.0},
-                                  {1000, 4000, 16000, 64000},
-                                  {1., 4., 16., 64.});
-    // Adaptive: 0.2, 0.008, 0.009, - -> within 1 % from level 1.
-    const Ladder adaptive = ladder("adaptive", {1.2, 0.992, 1.009, 1.0},
-                                   {1000, 2000, 3000, 4000},
-                                   {1., 3., 6., 10.});
+    const Ladder uniform  = uniform_ladder({1.1, 0.95, 1.005, 1.0});
+    const Ladder adaptive = adaptive_ladder();
     const auto comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     ASSERT_TRUE(comparison.uniform_level && comparison.adaptive_level);
@@ -64,12 +78,8 @@ namespace
   TEST(EqualError, UniformNeverReachingGivesUpperBounds)
   {
     // Uniform estimates 0.1, 0.05, 0.03: never within 1 %.
-    const Ladder uniform = ladder("uniform", {1.1, 0.95, 1.03, 1.0},
-                                  {1000, 4000, 16000, 64000},
-                                  {1., 4., 16., 64.});
-    const Ladder adaptive = ladder("adaptive", {1.2, 0.992, 1.009, 1.0},
-                                   {1000, 2000, 3000, 4000},
-                                   {1., 3., 6., 10.});
+    const Ladder uniform  = uniform_ladder({1.1, 0.95, 1.03, 1.0});
+    const Ladder adaptive = adaptive_ladder();
     const auto comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     EXPECT_FALSE(comparison.uniform_level);
@@ -82,13 +92,10 @@ namespace
 
   TEST(EqualError, ANonConvergedLevelBreaksTheRun)
   {
-    Ladder adaptive = ladder("adaptive", {1.2, 0.992, 1.009, 1.0},
-                             {1000, 2000, 3000, 4000}, {1., 3., 6., 10.});
+    Ladder adaptive = adaptive_ladder();
     adaptive.levels[2].status = "not converged";
     estimate_ladder_errors(adaptive, {length()});
-    const Ladder uniform = ladder("uniform", {1.1, 0.95, 1.005, 1.0},
-                                  {1000, 4000, 16000, 64000},
-                                  {1., 4., 16., 64.});
+    const Ladder uniform = uniform_ladder({1.1, 0.95, 1.005, 1.0});
     const auto comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     // Level 3 is the reference of the finest difference (no estimate of

@@ -150,7 +150,8 @@ namespace
     Convergence::RefinementSettings settings;
     settings.bulk_fraction = 0.1;
     const auto targets =
-      Convergence::bulk_size_targets(space, solution, settings);
+      Convergence::bulk_size_targets(
+        triangulation, Convergence::kelly_indicator(space, solution), settings);
     // ceil(0.1 x 64) = 7 cells, each 1/8 wide: requests of 1/16 m.
     ASSERT_EQ(targets.size(), 7u);
     for (const auto &target : targets)
