@@ -11,70 +11,12 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 using namespace FloorBlockTest;
 using nlohmann::json;
 
 namespace
 {
-  using Row = std::map<std::string, std::string>;
-
-  struct Table
-  {
-    std::vector<std::string> columns;
-    std::vector<Row>         rows;
-  };
-
-  /** Splits one CSV line; fields in double quotes may hold commas. */
-  std::vector<std::string>
-  split_csv(const std::string &line)
-  {
-    std::vector<std::string> fields(1);
-    bool                     quoted = false;
-    for (const char character : line)
-      if (character == '"')
-        quoted = !quoted;
-      else if (character == ',' && !quoted)
-        fields.emplace_back();
-      else
-        fields.back() += character;
-    return fields;
-  }
-
-  Table
-  read_csv(const std::string &path)
-  {
-    std::ifstream in(path);
-    Table         table;
-    std::string   line;
-    while (std::getline(in, line))
-      {
-        if (line.empty() || line[0] == '#')
-          continue;
-        const auto fields = split_csv(line);
-        if (table.columns.empty())
-          {
-            table.columns = fields;
-            continue;
-          }
-        Row row;
-        for (std::size_t k = 0; k < fields.size() && k < table.columns.size();
-             ++k)
-          row[table.columns[k]] = fields[k];
-        table.rows.push_back(row);
-      }
-    return table;
-  }
-
-  double
-  value_of(const Row &row, const std::string &column)
-  {
-    return std::stod(row.at(column));
-  }
-
   const std::vector<std::string> ladder_modes = {"uniform", "adaptive",
                                                  "remesh"};
 
@@ -90,7 +32,7 @@ namespace
                              "remesh/level_2/mesh.msh"})
       EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
 
-    const Table table = read_csv(output + "/convergence.csv");
+    const CsvTable table = read_csv(output + "/convergence.csv");
     for (const char *column :
          {"mode", "level", "status", "converged", "n_cells", "n_dofs",
           "n_increments", "newton_iterations", "force_balance_relative_error",
@@ -108,13 +50,12 @@ namespace
     ASSERT_EQ(table.rows.size(), 9u);
     for (std::size_t k = 0; k < table.rows.size(); ++k)
       {
-        const Row &row = table.rows[k];
+        const CsvRow &row = table.rows[k];
         EXPECT_EQ(row.at("mode"), ladder_modes[k / 3]);
         EXPECT_EQ(row.at("level"), std::to_string(k % 3));
         EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
         for (const auto &[column, value] : row)
-          EXPECT_TRUE(value.find("nan") == std::string::npos &&
-                      value.find("inf") == std::string::npos)
+          EXPECT_FALSE(has_non_finite_value(value))
             << column << " = " << value;
       }
     // All ladders start from the same mesh.
@@ -125,27 +66,27 @@ namespace
   // The tool shall refine: uniform levels multiply the DoFs (each halves the
   // whole size function, so about x4 in 2D; the coarsest meshes are held up by
   // the minimum cell counts, hence the bound 2), adaptive and remesh levels
-  // add some; the adaptive levels' meshes are deal.II refinements (no Gmsh
-  // run: their mesh time is far below level 0's).
+  // add some; the adaptive levels' meshes are deal.II refinements of the
+  // level before (n_refinement_sweeps >= 1), the others Gmsh meshes.
   void
   check_levels_refine(const std::string &output)
   {
-    const Table table = read_csv(output + "/convergence.csv");
+    const CsvTable table = read_csv(output + "/convergence.csv");
     ASSERT_EQ(table.rows.size(), 9u);
     for (std::size_t k : {1u, 2u})
-      EXPECT_GT(value_of(table.rows[k], "n_dofs"),
-                2. * value_of(table.rows[k - 1], "n_dofs"));
+      EXPECT_GT(number_in(table.rows[k], "n_dofs"),
+                2. * number_in(table.rows[k - 1], "n_dofs"));
     for (std::size_t k : {4u, 5u, 7u, 8u})
-      EXPECT_GT(value_of(table.rows[k], "n_dofs"),
-                value_of(table.rows[k - 1], "n_dofs"));
+      EXPECT_GT(number_in(table.rows[k], "n_dofs"),
+                number_in(table.rows[k - 1], "n_dofs"));
     for (std::size_t k : {4u, 5u})
       {
-        EXPECT_GT(value_of(table.rows[k], "n_local_sizes"), 0.);
-        EXPECT_GE(value_of(table.rows[k], "n_refinement_sweeps"), 1.);
+        EXPECT_GT(number_in(table.rows[k], "n_local_sizes"), 0.);
+        EXPECT_GE(number_in(table.rows[k], "n_refinement_sweeps"), 1.);
       }
     // Gmsh levels are not refinements of each other.
     for (std::size_t k : {0u, 1u, 2u, 6u, 7u, 8u})
-      EXPECT_EQ(value_of(table.rows[k], "n_refinement_sweeps"), 0.);
+      EXPECT_EQ(number_in(table.rows[k], "n_refinement_sweeps"), 0.);
   }
 
   // The tool shall converge in the joint force Q at the face. Q is a
@@ -158,15 +99,19 @@ namespace
   void
   check_face_force_converges(const std::string &output)
   {
-    const Table table = read_csv(output + "/convergence.csv");
+    const CsvTable table = read_csv(output + "/convergence.csv");
     ASSERT_EQ(table.rows.size(), 9u);
     const auto q = [&](const std::size_t k) {
-      return value_of(table.rows[k], "Q_face_N_per_m");
+      return number_in(table.rows[k], "Q_face_N_per_m");
     };
     constexpr double tolerance = 2.5e-3;
     EXPECT_LT(std::abs(q(2) - q(1)), tolerance * std::abs(q(2)));
     EXPECT_LT(std::abs(q(2) - q(1)), std::abs(q(1) - q(0)));
-    // The adaptive and remesh ladders end at the same Q.
+    // The adaptive and remesh ladders end within the same 0.25 % of the
+    // uniform ladder's finest Q (measured: 2.0e-3 adaptive, 1.2e-3 remesh;
+    // the uniform finest step 6.7e-5): a bound on how far two
+    // discretisations of Q may disagree at this coarse start, not a claim
+    // that they agree to their own step size.
     EXPECT_LT(std::abs(q(5) - q(2)), tolerance * std::abs(q(2)));
     EXPECT_LT(std::abs(q(8) - q(2)), tolerance * std::abs(q(2)));
   }
@@ -175,8 +120,7 @@ namespace
   void
   check_methods_and_orders(const std::string &output)
   {
-    std::ifstream in(output + "/convergence.json");
-    const json    report = json::parse(in);
+    const json report = read_json(output + "/convergence.json");
     for (const std::string &mode : ladder_modes)
       for (const auto &[name, estimate] :
            report["modes"][mode]["quantities"].items())
@@ -226,21 +170,24 @@ TEST(ConvergeCommand, AdaptiveLadderOnRoundedCorners)
     "converge tests/scenarios/hard_rounded_corners.prm --levels 3 --mode "
     "adaptive --output " + shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const Table table = read_csv(folder + "/convergence.csv");
+  const CsvTable table = read_csv(folder + "/convergence.csv");
   ASSERT_EQ(table.rows.size(), 3u);
   for (std::size_t k = 0; k < table.rows.size(); ++k)
     {
-      const Row &row = table.rows[k];
+      const CsvRow &row = table.rows[k];
       EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
       // Equilibrium of every body holds on the refined meshes as on Gmsh's.
-      EXPECT_LT(value_of(row, "force_balance_relative_error"), 1e-8);
+      EXPECT_LT(number_in(row, "force_balance_relative_error"), 1e-8);
       if (k > 0)
         {
-          EXPECT_GT(value_of(row, "n_contact_pairs"),
-                    value_of(table.rows[k - 1], "n_contact_pairs"));
-          // Q at the face changes by less than the first step's 1 %.
-          EXPECT_LT(std::abs(value_of(row, "Q_face_N_per_m") /
-                               value_of(table.rows[0], "Q_face_N_per_m") - 1.),
+          EXPECT_GT(number_in(row, "n_contact_pairs"),
+                    number_in(table.rows[k - 1], "n_contact_pairs"));
+          // Q at the face stays within 1 % of level 0 (measured 0.16 % and
+          // 0.17 %): refining the corners moves the joint force little,
+          // as on the uniform ladder of the three-block study (0.5 % at
+          // the first halving); a broken pairing or load moves it more.
+          EXPECT_LT(std::abs(number_in(row, "Q_face_N_per_m") /
+                               number_in(table.rows[0], "Q_face_N_per_m") - 1.),
                     0.01);
         }
     }

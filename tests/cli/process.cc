@@ -21,6 +21,55 @@ namespace FloorBlockTest
     return text.str();
   }
 
+  namespace
+  {
+    /** Splits one CSV line; fields in double quotes may hold commas. */
+    std::vector<std::string>
+    split_csv(const std::string &line)
+    {
+      std::vector<std::string> fields(1);
+      bool                     quoted = false;
+      for (const char character : line)
+        if (character == '"')
+          quoted = !quoted;
+        else if (character == ',' && !quoted)
+          fields.emplace_back();
+        else
+          fields.back() += character;
+      return fields;
+    }
+  } // namespace
+
+  CsvTable
+  read_csv(const std::string &path)
+  {
+    std::ifstream in(path);
+    CsvTable      table;
+    for (std::string line; std::getline(in, line);)
+      {
+        if (line.empty() || line[0] == '#')
+          continue;
+        const auto fields = split_csv(line);
+        if (table.columns.empty())
+          {
+            table.columns = fields;
+            continue;
+          }
+        CsvRow row;
+        for (std::size_t k = 0; k < fields.size() && k < table.columns.size();
+             ++k)
+          row[table.columns[k]] = fields[k];
+        table.rows.push_back(row);
+      }
+    return table;
+  }
+
+  double
+  number_in(const CsvRow &row, const std::string &column)
+  {
+    return std::stod(row.at(column));
+  }
+
   nlohmann::json
   read_json(const std::string &path)
   {

@@ -2,7 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace FloorBlockTest
 {
@@ -38,6 +40,28 @@ namespace FloorBlockTest
   /** @brief A JSON file parsed (throws if it is missing or malformed). */
   nlohmann::json
   read_json(const std::string &path);
+
+  /** One row of a CSV table: column name -> field. */
+  using CsvRow = std::map<std::string, std::string>;
+
+  /** @brief A CSV table: its header and its rows. */
+  struct CsvTable
+  {
+    std::vector<std::string> columns;
+    std::vector<CsvRow>      rows;
+  };
+
+  /**
+   * @brief A CSV file as written by floorblock: '#' lines are comments, the
+   * first other line is the header; fields in double quotes may hold
+   * commas. Empty if the file cannot be read.
+   */
+  CsvTable
+  read_csv(const std::string &path);
+
+  /** @brief A field of @p row as a number (throws if absent or not numeric). */
+  double
+  number_in(const CsvRow &row, const std::string &column);
 
   /** @brief The whole text of a file ("" if it cannot be read). */
   std::string

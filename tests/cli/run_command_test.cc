@@ -79,8 +79,6 @@ TEST(RunCommand, SummaryHasDocumentedKeys)
   EXPECT_FALSE(summary["comparison"]["lift_history"].empty());
 }
 
-// The tool shall compare numbers that anyone can recompute from fem.json
-// and analytic.json (to 1e-12 relative: the same doubles, re-derived).
 // Every FEM figure at the face joint carries its error estimate (or says
 // why there is none) and the time of the solve, next to its value.
 TEST(RunCommand, FaceJointFiguresCarryErrorAndTime)
@@ -106,6 +104,8 @@ TEST(RunCommand, FaceJointFiguresCarryErrorAndTime)
     }
 }
 
+// The tool shall compare numbers that anyone can recompute from fem.json
+// and analytic.json (to 1e-12 relative: the same doubles, re-derived).
 TEST(RunCommand, ComparisonEqualsRecomputedValues)
 {
   const std::string &output   = three_block_run();

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 using namespace FloorBlockTest;
@@ -26,27 +25,16 @@ TEST(SupportLoad, RoundedBlocksReceiveTheWholeSupportLoad)
 
   // Sum the bedding normal forces and the face-joint shear of the last
   // support-stage increment (stage_factor 1) in joints.csv.
-  std::istringstream csv(read_text(folder + "/joints.csv"));
-  std::string        line;
-  double             bedding_normal = 0., face_shear = 0.;
-  while (std::getline(csv, line))
+  double bedding_normal = 0., face_shear = 0.;
+  for (const CsvRow &row : read_csv(folder + "/joints.csv").rows)
     {
-      if (line.empty() || line[0] == '#' ||
-          line.find(",support_load,1.000000,") == std::string::npos)
+      if (row.at("stage") != "support_load" ||
+          number_in(row, "stage_factor") != 1.)
         continue;
-      std::istringstream fields(line);
-      std::string        increment, stage, factor, joint, kind, normal, shear;
-      std::getline(fields, increment, ',');
-      std::getline(fields, stage, ',');
-      std::getline(fields, factor, ',');
-      std::getline(fields, joint, ',');
-      std::getline(fields, kind, ',');
-      std::getline(fields, normal, ',');
-      std::getline(fields, shear, ',');
-      if (kind == "bedding")
-        bedding_normal += std::stod(normal);
-      else if (joint == "vertical 3")
-        face_shear += std::stod(shear);
+      if (row.at("kind") == "bedding")
+        bedding_normal += number_in(row, "normal_force_N_per_m");
+      else if (row.at("joint") == "vertical 3")
+        face_shear += number_in(row, "shear_force_N_per_m");
     }
 
   // Scene: 3 blocks 1 m x 2 m, rho 2500 kg/m^3, g 9.81 m/s^2, four fillets

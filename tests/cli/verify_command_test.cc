@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 
 using namespace FloorBlockTest;
 
@@ -24,8 +23,7 @@ namespace
     const auto result =
       run_floorblock("verify " + name + " --output " + shell_quoted(output));
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    std::ifstream  in(output + "/verify.json");
-    nlohmann::json json = nlohmann::json::parse(in);
+    nlohmann::json json = read_json(output + "/verify.json");
     std::filesystem::remove_all(output);
     return json;
   }

@@ -31,6 +31,9 @@ namespace
       std::atan(0.9 * std::tan(InclineSettings().friction_angle));
     const JointReport &joint  = result.stuck->joints.at(0);
     const double       weight = result.weight;
+    // W = rho g L H of the library's 1 x 0.5 m block, pinned so that a
+    // changed default cannot make the checks below vacuous.
+    EXPECT_DOUBLE_EQ(weight, 2500. * 9.81 * 1. * 0.5);
     // Equilibrium of the block alone; Newton tolerance 1e-12, so 1e-8.
     // Side A is the base, tangent (-n_y, n_x) = (-1, 0): the base holds the
     // block back against +x, so the shear traction on the joint is

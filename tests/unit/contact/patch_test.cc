@@ -32,6 +32,10 @@ namespace
   {
     const double       pressure = result.applied_pressure;
     const JointReport &report   = result.increment.joints.at(0);
+    // The closed form comes from the library's case: pin it, so that a
+    // changed default (a zero load) cannot make the checks below vacuous.
+    EXPECT_EQ(pressure, 2e6);
+    EXPECT_EQ(result.joint_length, 1.);
     EXPECT_EQ(report.counts.n_open, 0u);
     // Q1/Q2 represent the uniform stress exactly; what remains is the
     // direct solver's round-off (condition number ~1e6 x 1e-16) and the

@@ -34,6 +34,9 @@ namespace
   {
     const TwoBlocksResult outcome =
       run_two_blocks(4, JointLawKind::compliant, 9e9);
+    // 4e5 Pa on the upper quarter (0.5 m) of the 2 m block, pinned so that
+    // a changed default cannot make the checks below vacuous.
+    EXPECT_DOUBLE_EQ(outcome.applied_lateral_force, 4e5 * 0.5);
     // Horizontal equilibrium of the right block on a frictionless base;
     // Newton tolerance 1e-12 relative, so 1e-8 holds with margin.
     EXPECT_NEAR(outcome.joint_normal_force, outcome.applied_lateral_force,

@@ -76,13 +76,13 @@ namespace FloorBlock::Geometry
     };
     AssemblyDescription scene; // the default assembly
     scene.corner_rounding_radius = 0.01;
-    const std::string first  = ::testing::TempDir() + "repeat_first.msh";
-    const std::string second = ::testing::TempDir() + "repeat_second.msh";
+    const std::string first  = Testing::scratch_folder() + "/repeat_first.msh";
+    const std::string second = Testing::scratch_folder() + "/repeat_second.msh";
     write_gmsh_mesh(scene, first);
     AssemblyDescription other = scene;
     other.n_blocks            = 3;
     other.mesh_corner_size    = 0.1;
-    write_gmsh_mesh(other, ::testing::TempDir() + "repeat_other.msh");
+    write_gmsh_mesh(other, Testing::scratch_folder() + "/repeat_other.msh");
     write_gmsh_mesh(scene, second);
     const std::string first_text = read(first), second_text = read(second);
     EXPECT_EQ(first_text.size(), second_text.size());
