@@ -115,11 +115,8 @@ namespace FloorBlock
       matrix.reinit(pattern);
       bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
         fe_space, scene.model, homogeneous_constraints, pattern);
-      const bool direct =
-        settings.linear.kind == Solver::LinearSolverKind::direct ||
-        (settings.linear.kind == Solver::LinearSolverKind::automatic &&
-         fe_space.dof_handler().n_dofs() <= settings.linear.max_direct_dofs);
-      if (direct)
+      if (Solver::uses_direct_solver(settings.linear,
+                                     fe_space.dof_handler().n_dofs()))
         direct_solver =
           std::make_unique<Solver::ReusedFactorization>(settings.linear);
       const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
@@ -340,8 +337,6 @@ namespace FloorBlock
         iterate.residual_norm = residual.l2_norm();
         iterate.set_signature = active_set.signature();
         iterate.counts        = active_set.counts();
-        iterate.round_off_floor = bulk->round_off_floor(
-          current_solution, factors.gravity, factors.pressure);
         last_iterate_counts   = iterate.counts;
         console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
                 << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
@@ -359,6 +354,10 @@ namespace FloorBlock
       callbacks.set_step = [&](const double step) {
         current_solution = newton_base;
         current_solution.add(step, update);
+      };
+      callbacks.round_off_floor = [&]() {
+        return bulk->round_off_floor(
+          current_solution, factors.gravity, factors.pressure);
       };
 
       if (prediction > 0.)
@@ -630,6 +629,8 @@ namespace FloorBlock
           result.n_factorizations = direct_solver->statistics().n_factorizations;
           result.n_krylov_iterations =
             direct_solver->statistics().n_krylov_iterations;
+          result.n_solves_above_tolerance =
+            direct_solver->statistics().n_accepted_above_tolerance;
         }
     }
 

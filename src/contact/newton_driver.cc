@@ -77,9 +77,10 @@ namespace FloorBlock
               report.converged = true;
               return report;
             }
-          if (set_stable && current.residual_norm <= current.round_off_floor &&
+          if (set_stable && callbacks.round_off_floor &&
               report.relative_residual <=
-                settings.max_round_off_relief * settings.relative_tolerance)
+                settings.max_round_off_relief * settings.relative_tolerance &&
+              current.residual_norm <= callbacks.round_off_floor())
             {
               report.converged                  = true;
               report.stopped_at_round_off_floor = true;

@@ -29,7 +29,7 @@ namespace FloorBlock
       /** Armijo constant: accept if |R| <= (1 - c step)|R0| (-). */
       double sufficient_decrease = 1e-4;
       /**
-       * The round-off floor (NewtonIterate::round_off_floor) may relax the
+       * The round-off floor (NewtonCallbacks::round_off_floor) may relax the
        * relative tolerance by at most this factor. It is a relief for a
        * tolerance just out of double precision's reach, not a licence to
        * stop anywhere: a wild iterate (kn = 1e14 Pa/m) has a huge |K||u|,
@@ -46,13 +46,6 @@ namespace FloorBlock
     {
       /** l2 norm of the condensed residual (N). */
       double residual_norm = 0.;
-      /**
-       * Residual norm (N) that round-off alone can produce at this iterate
-       * (e.g. a multiple of eps |K| |u|); 0 if unknown. A stable set with a
-       * residual at or below it has converged as far as double precision
-       * allows, even if the relative tolerance asks for more.
-       */
-      double round_off_floor = 0.;
       /** Hash of the open/stick/slip set. */
       std::uint64_t set_signature = 0;
       StateCounts   counts;
@@ -70,6 +63,16 @@ namespace FloorBlock
       std::function<bool(std::string &message)> solve_update;
       /** Set iterate = iterate at the last solve + step * update. */
       std::function<void(double step)> set_step;
+      /**
+       * Optional: the residual norm (N) that round-off alone can produce at
+       * the iterate last assembled (e.g. a multiple of eps |K| |u|). A
+       * stable set with a residual at or below it has converged as far as
+       * double precision allows, even if the relative tolerance asks for
+       * more. Asked for only when that decides the stop (a stable set
+       * within NewtonSettings::max_round_off_relief of the tolerance): it
+       * costs a product with |K|, as much as the residual itself.
+       */
+      std::function<double()> round_off_floor;
     };
 
     /** @brief Outcome of one Newton solve. */

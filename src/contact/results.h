@@ -74,7 +74,10 @@ namespace FloorBlock
       LoadStage    stage = LoadStage::gravity;
       /** Fraction of the stage's load reached (-). */
       double       stage_factor        = 0.;
-      /** Including those of a discarded extrapolated start (see ContactSolverSettings::extrapolate_increments). */
+      /**
+       * Of the start that converged; a discarded extrapolated start's
+       * iterations count in SolveResult::n_failed_newton_iterations.
+       */
       unsigned int n_newton_iterations = 0;
       unsigned int n_multiplier_updates = 0;
       /** Failed attempts (cutbacks) before this increment converged. */
@@ -103,6 +106,8 @@ namespace FloorBlock
       unsigned int n_factorizations = 0;
       /** GMRES iterations on stored or fresh LU factors (direct solver only). */
       unsigned int n_krylov_iterations = 0;
+      /** Direct solutions accepted above the residual tolerance (ill-conditioned matrix). */
+      unsigned int n_solves_above_tolerance = 0;
       /** Newton iterations of failed attempts (cut back or retried), not in any increment. */
       unsigned int n_failed_newton_iterations = 0;
     };

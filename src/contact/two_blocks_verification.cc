@@ -1,3 +1,4 @@
+#include <common/units.h>
 #include <contact/block_assembly_mesh.h>
 #include <contact/contact_solver.h>
 #include <contact/two_blocks_verification.h>
@@ -29,7 +30,7 @@ namespace FloorBlock
       constexpr double loaded_from_y = 1.5; // m, lateral load on the upper quarter
       constexpr double density       = 2500.; // kg/m^3
       constexpr double gravity_acceleration = 9.81; // m/s^2
-      const double vertical_friction_angle = 30. * M_PI / 180.;
+      constexpr double vertical_friction_angle = Units::degrees_to_radians(30.);
     } // namespace
 
     TwoBlocksResult

@@ -217,6 +217,7 @@ namespace FloorBlock::Output
             {"linear_solves", result.n_linear_solves},
             {"lu_factorizations", result.n_factorizations},
             {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
+            {"linear_solves_above_tolerance", result.n_solves_above_tolerance},
             {"wall_time_s", result.wall_times},
             {"joints", joints},
             {"body_motions_by_material_id", blocks},

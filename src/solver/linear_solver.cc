@@ -109,6 +109,15 @@ namespace FloorBlock
       return true;
     }
 
+    bool
+    uses_direct_solver(const LinearSolverSettings &settings,
+                       const std::size_t           n_dofs)
+    {
+      return settings.kind == LinearSolverKind::direct ||
+             (settings.kind == LinearSolverKind::automatic &&
+              n_dofs <= settings.max_direct_dofs);
+    }
+
     LinearSolveInfo
     solve_linear_system(const LinearSolverSettings           &settings,
                         const SparseMatrix                   &matrix,
@@ -116,11 +125,7 @@ namespace FloorBlock
                         const std::vector<std::vector<bool>> &constant_modes,
                         Vector                               &solution)
     {
-      const bool direct =
-        settings.kind == LinearSolverKind::direct ||
-        (settings.kind == LinearSolverKind::automatic &&
-         matrix.m() <= settings.max_direct_dofs);
-      return direct ?
+      return uses_direct_solver(settings, matrix.m()) ?
                solve_direct(settings, matrix, rhs, solution) :
                solve_iterative(settings, matrix, rhs, constant_modes, solution);
     }

@@ -67,12 +67,6 @@ namespace FloorBlock
       bool         success       = false;
       bool         used_direct   = false;
       unsigned int n_iterations  = 0;
-      /**
-       * False when a direct solution was accepted although its residual is
-       * above LinearSolverSettings::relative_tolerance (ReusedFactorization
-       * on an ill-conditioned matrix); the message says so.
-       */
-      bool         met_tolerance = true;
       std::string  message;
     };
 
@@ -97,6 +91,15 @@ namespace FloorBlock
      * @return Success flag, which solver ran and its iteration count. A
      *   failure never throws and never leaves NaN in @p solution.
      */
+    /**
+     * @brief Whether @p settings choose the direct solver for @p n_dofs
+     * unknowns (always, never, or up to LinearSolverSettings::
+     * max_direct_dofs when automatic).
+     */
+    bool
+    uses_direct_solver(const LinearSolverSettings &settings,
+                       const std::size_t           n_dofs);
+
     LinearSolveInfo
     solve_linear_system(
       const LinearSolverSettings                  &settings,

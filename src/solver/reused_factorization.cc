@@ -30,24 +30,30 @@ namespace FloorBlock
       constexpr unsigned int fresh_factor_iterations = 10;
 
       /**
-       * Rows in which two matrices of the same pattern differ: an upper
+       * Rows in which two matrices differ (values or columns): an upper
        * bound of the rank of their difference, hence of the GMRES
        * iterations the factors of one need to solve with the other (at most
-       * rank + 1 in exact arithmetic).
+       * rank + 1 in exact arithmetic). Matrices of different sizes differ
+       * everywhere.
        */
       unsigned int
       count_differing_rows(const SparseMatrix &a, const SparseMatrix &b)
       {
         const Epetra_CrsMatrix &left  = a.trilinos_matrix();
         const Epetra_CrsMatrix &right = b.trilinos_matrix();
-        unsigned int            count = 0;
+        if (left.NumMyRows() != right.NumMyRows())
+          return std::max(left.NumMyRows(), right.NumMyRows());
+        unsigned int count = 0;
         for (int row = 0; row < left.NumMyRows(); ++row)
           {
             int     n_left = 0, n_right = 0;
             double *values_left = nullptr, *values_right = nullptr;
-            left.ExtractMyRowView(row, n_left, values_left);
-            right.ExtractMyRowView(row, n_right, values_right);
+            int    *columns_left = nullptr, *columns_right = nullptr;
+            left.ExtractMyRowView(row, n_left, values_left, columns_left);
+            right.ExtractMyRowView(row, n_right, values_right, columns_right);
             if (n_left != n_right ||
+                !std::equal(columns_left, columns_left + n_left,
+                            columns_right) ||
                 !std::equal(values_left, values_left + n_left, values_right))
               ++count;
           }
@@ -101,6 +107,8 @@ namespace FloorBlock
             {
               if (!direct || new_matrix_object)
                 {
+                  // The old solver points into the old problem: it goes first.
+                  direct.reset();
                   problem = std::make_unique<Epetra_LinearProblem>();
                   // Amesos takes a non-const pointer but only reads the
                   // matrix.
@@ -266,9 +274,9 @@ namespace FloorBlock
                          " returned non-finite values (singular matrix)";
           return info;
         }
-      solution           = trial;
-      info.success       = true;
-      info.met_tolerance = false;
+      solution     = trial;
+      info.success = true;
+      ++counters.n_accepted_above_tolerance;
       info.message       = "direct solution accepted above the residual "
                            "tolerance (ill-conditioned matrix)";
       return info;

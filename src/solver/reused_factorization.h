@@ -24,6 +24,12 @@ namespace FloorBlock
       unsigned int n_reused = 0;
       /** GMRES iterations of all solves, including abandoned attempts. */
       unsigned int n_krylov_iterations = 0;
+      /**
+       * Direct solutions accepted although their residual stays above the
+       * tolerance (ill-conditioned matrix: fresh factors and GMRES on them
+       * could not reach it either).
+       */
+      unsigned int n_accepted_above_tolerance = 0;
     };
 
     class UmfpackFactors;
@@ -46,7 +52,7 @@ namespace FloorBlock
      * LinearSolverSettings::relative_tolerance, so reuse changes cost, not
      * results; only on a matrix so ill-conditioned that fresh factors miss
      * it too is the plain direct solution accepted, flagged by
-     * LinearSolveInfo::met_tolerance.
+     * ReuseStatistics::n_accepted_above_tolerance.
      */
     class ReusedFactorization
     {

@@ -26,10 +26,10 @@ namespace
       NewtonCallbacks result;
       result.assemble = [this]() {
         NewtonIterate iterate;
-        iterate.residual_norm   = std::max(std::abs(slope * x - load), noise);
-        iterate.round_off_floor = floor;
+        iterate.residual_norm = std::max(std::abs(slope * x - load), noise);
         return iterate; // one contact set throughout: signature 0
       };
+      result.round_off_floor = [this]() { return floor; };
       result.solve_update = [this](std::string &) {
         update = -(slope * x - load) / slope;
         base   = x;

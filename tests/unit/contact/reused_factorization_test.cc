@@ -104,6 +104,7 @@ namespace
     EXPECT_LT(relative_residual(matrix, x, rhs), 1e-10);
     EXPECT_EQ(solver.statistics().n_factorizations, 2u);
     EXPECT_EQ(solver.statistics().n_reused, 0u);
+    EXPECT_EQ(solver.statistics().n_accepted_above_tolerance, 0u);
   }
 
   TEST_F(ReusedFactorizationTest, IllConditionedMatrixIsNeverWorseThanFreshFactors)
