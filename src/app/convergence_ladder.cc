@@ -1,12 +1,12 @@
 #include <app/convergence_ladder.h>
 #include <app/fem_pipeline.h>
+#include <common/atomic_file.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
 #include <contact/floor_scene.h>
 #include <convergence/matched_refinement.h>
 #include <geometry/assembly_description.h>
 #include <geometry/refinement_manifolds.h>
-#include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 
@@ -16,9 +16,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace FloorBlock::App
 {
@@ -322,28 +321,28 @@ namespace FloorBlock::App
      * the scene's curves) and writes it as mesh.msh.
      */
     Geometry::MeshStatistics
-    refine_for_next_level(const Parameters::ScenarioParameters   &scene,
-                          const Indicators                       &next,
-                          const double                            coarsen_fraction,
-                          const std::string                      &msh_path,
-                          dealii::Triangulation<2>               &triangulation,
-                          Convergence::MatchedRefinementSummary  &summary)
+    refine_for_next_level(const Geometry::AssemblyDescription         &description,
+                          const std::vector<Convergence::JointSides> &joints,
+                          const Indicators                            &next,
+                          const double                       coarsen_fraction,
+                          const std::string                          &msh_path,
+                          dealii::Triangulation<2>              &triangulation,
+                          Convergence::MatchedRefinementSummary &summary)
     {
       // A zone end asks for a quarter of its segment (zone_end_refinement
       // = 4: two halvings); one more sweep lets the 2:1 grading follow.
       constexpr unsigned int max_passes = 3;
       dealii::Timer          timer;
-      const auto description = Scene::assembly_description(scene);
       Geometry::attach_boundary_manifolds(description, triangulation);
-      summary = Convergence::refine_matched(triangulation, joint_sides(scene),
-                                  next.requests,
-                                  Convergence::touching_cells_only, next.kelly,
-                                  coarsen_fraction, max_passes);
+      summary = Convergence::refine_matched(triangulation, joints,
+                                            next.requests,
+                                            Convergence::touching_cells_only,
+                                            next.kelly, coarsen_fraction,
+                                            max_passes);
       Geometry::detach_boundary_manifolds(triangulation);
-      std::filesystem::create_directories(
-        std::filesystem::path(msh_path).parent_path());
-      std::ofstream msh(msh_path);
+      std::ostringstream msh;
       dealii::GridOut().write_msh(triangulation, msh);
+      write_file_atomically(msh_path, msh.str());
       Geometry::MeshStatistics statistics;
       statistics.n_cells   = triangulation.n_active_cells();
       statistics.n_nodes   = triangulation.n_used_vertices();
@@ -361,6 +360,8 @@ namespace FloorBlock::App
                         const LevelCallback                   &after_level)
     {
       LadderLog                log(RefinementMode::adaptive, after_level);
+      const auto description = Scene::assembly_description(scene);
+      const auto joints      = joint_sides(scene);
       dealii::Triangulation<2> triangulation;
       Indicators               previous;
       for (unsigned int level = 0; level < n_levels; ++level)
@@ -371,20 +372,13 @@ namespace FloorBlock::App
             scene, RefinementMode::adaptive, level, previous.requests.size(),
             refinement, folder,
             [&](const SolveExtras &extras, const Output::ResultFolder &where) {
-              if (level == 0)
-                {
-                  std::filesystem::create_directories(where.path_of(""));
-                  const auto mesh = Geometry::write_gmsh_mesh(
-                    Scene::assembly_description(scene),
-                    where.path_of("mesh.msh"));
-                  Geometry::read_triangulation(where.path_of("mesh.msh"),
-                                               triangulation);
-                  return solve_meshed_scene(scene, triangulation, mesh, where,
-                                            false, extras);
-                }
-              const auto mesh = refine_for_next_level(
-                scene, previous, coarsen_fraction, where.path_of("mesh.msh"),
-                triangulation, refinement_done);
+              const auto mesh =
+                level == 0 ?
+                  mesh_scene(scene, where, {}, triangulation) :
+                  refine_for_next_level(description, joints, previous,
+                                        coarsen_fraction,
+                                        where.path_of("mesh.msh"),
+                                        triangulation, refinement_done);
               return solve_meshed_scene(scene, triangulation, mesh, where,
                                         false, extras);
             },

@@ -96,15 +96,26 @@ namespace FloorBlock::App
   {
     if (Scene::uses_rigid_blocks(scene))
       return solve_rigid_scene(scene, folder);
+    dealii::Triangulation<2>       triangulation;
+    const Geometry::MeshStatistics mesh =
+      mesh_scene(scene, folder, extras.local_sizes, triangulation);
+    return solve_meshed_scene(scene, triangulation, mesh, folder, write_vtu,
+                              extras);
+  }
+
+  Geometry::MeshStatistics
+  mesh_scene(const Parameters::ScenarioParameters   &scene,
+             const Output::ResultFolder             &folder,
+             const std::vector<Geometry::LocalSize> &local_sizes,
+             dealii::Triangulation<2>               &triangulation)
+  {
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
     const Geometry::MeshStatistics mesh =
       Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
-                                folder.path_of("mesh.msh"), extras.local_sizes);
-    dealii::Triangulation<2> triangulation;
+                                folder.path_of("mesh.msh"), local_sizes);
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
-    return solve_meshed_scene(scene, triangulation, mesh, folder, write_vtu,
-                              extras);
+    return mesh;
   }
 
   FemOutcome

@@ -59,6 +59,17 @@ namespace FloorBlock::App
               const SolveExtras &                   extras    = {});
 
   /**
+   * @brief The Gmsh mesh of the scene (with @p local_sizes, adaptive
+   * re-meshing) written into @p folder as mesh.msh and read into @p
+   * triangulation: solve_scene()'s first half.
+   */
+  Geometry::MeshStatistics
+  mesh_scene(const Parameters::ScenarioParameters   &scene,
+             const Output::ResultFolder             &folder,
+             const std::vector<Geometry::LocalSize> &local_sizes,
+             dealii::Triangulation<2>               &triangulation);
+
+  /**
    * @brief solve_scene() on a mesh the caller made (e.g. refined by deal.II
    * in `converge --mode adaptive`): the same solve and files, except that
    * no mesh.msh is written and @p mesh describes the mesh in fem.json.

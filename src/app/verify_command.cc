@@ -1,10 +1,12 @@
 #include <app/command_options.h>
 #include <common/input_error.h>
+#include <common/units.h>
 #include <contact/hertz_verification.h>
 #include <contact/incline_verification.h>
 #include <contact/patch_verification.h>
 #include <contact/two_blocks_verification.h>
 #include <output/result_folder.h>
+#include <scene/contact_inputs.h>
 
 #include <fmt/format.h>
 
@@ -36,14 +38,6 @@ namespace FloorBlock::App
     const std::vector<std::string> verification_base = {
       "Joints/Law=rigid", "Joints/Normal stiffness=1e14",
       "Joints/Shear stiffness=1e14"};
-
-    Contact::JointLawKind
-    law_of(const Parameters::ScenarioParameters &scene)
-    {
-      return scene.joints.law == Parameters::JointLaw::rigid ?
-               Contact::JointLawKind::rigid :
-               Contact::JointLawKind::compliant;
-    }
 
     /** A quantity whose closed form may be 0: error relative to @p scale. */
     json
@@ -82,7 +76,7 @@ namespace FloorBlock::App
       settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
       settings.poissons_ratio = scene.verify.hertz_poissons_ratio;
       settings.mesh_level     = scene.verify.hertz_mesh_level;
-      settings.law                 = law_of(scene);
+      settings.law                 = Scene::joint_law_kind(scene);
       settings.compliant_stiffness = scene.joints.normal_stiffness;
       settings.fe_degree           = scene.solver.fe_degree;
 
@@ -102,7 +96,7 @@ namespace FloorBlock::App
     {
       Contact::PatchSettings settings;
       settings.pressure  = scene.verify.patch_pressure;
-      settings.law       = law_of(scene);
+      settings.law       = Scene::joint_law_kind(scene);
       settings.fe_degree = scene.solver.fe_degree;
       const Contact::PatchResult result = Contact::run_patch_verification(settings);
       const Contact::JointReport &joint = result.increment.joints.at(0);
@@ -140,9 +134,17 @@ namespace FloorBlock::App
     {
       Contact::InclineSettings settings;
       settings.friction_angle   = scene.joints.bedding_friction_angle;
+      // The case tilts the block to (1 -+ margin) tan(phi): with phi = 0
+      // both inclines are 0 and the closed-form shear W sin(0) = 0 leaves
+      // no relative error to state.
+      if (!(settings.friction_angle > 0.))
+        throw InputError("Joints/Bedding friction angle",
+                         fmt::format("{} deg", Units::radians_to_degrees(
+                                                 settings.friction_angle)),
+                         "> 0 deg for verify incline");
       settings.normal_stiffness = scene.joints.normal_stiffness;
       settings.shear_stiffness  = scene.joints.shear_stiffness;
-      settings.law              = law_of(scene);
+      settings.law              = Scene::joint_law_kind(scene);
       const double friction = std::tan(settings.friction_angle);
       const double margin   = scene.verify.incline_margin;
       settings.incline = std::atan((1. - margin) * friction);
@@ -153,8 +155,8 @@ namespace FloorBlock::App
       json quantities = {
         {"slips_below_threshold", decision(slips(below), false)},
         {"slips_above_threshold", decision(slips(above), true)},
-        {"incline_below_deg", incline_below * 180. / M_PI},
-        {"incline_above_deg", settings.incline * 180. / M_PI}};
+        {"incline_below_deg", Units::radians_to_degrees(incline_below)},
+        {"incline_above_deg", Units::radians_to_degrees(settings.incline)}};
       if (below.stuck)
         {
           const Contact::JointReport &joint = below.stuck->joints.at(0);
@@ -173,7 +175,7 @@ namespace FloorBlock::App
     {
       Contact::TwoBlocksSettings settings;
       settings.cells_per_metre  = scene.verify.two_blocks_cells_per_metre;
-      settings.law              = law_of(scene);
+      settings.law              = Scene::joint_law_kind(scene);
       settings.joint_stiffness  = scene.joints.normal_stiffness;
       settings.lateral_pressure = scene.verify.two_blocks_lateral_pressure;
       const Contact::TwoBlocksResult result =

@@ -207,9 +207,8 @@ namespace FloorBlock::Convergence
       }
 
       /**
-       * Smallest graded request on @p cell: h_p + (g - 1) d_p with d_p the
-       * distance from request p to the cell (0 inside), the grading law of
-       * Geometry::local_size_at(). Only requests within reach matter: beyond
+       * Smallest graded request on @p cell: Geometry::graded_size() at the
+       * distance d_p from request p to the cell (0 inside). Only requests within reach matter: beyond
        * d = s / (g - 1) a request asks for more than the cell's own size s;
        * candidates come from that x window plus the cell's extent.
        */
@@ -230,8 +229,9 @@ namespace FloorBlock::Convergence
              ++it)
           requested = std::min(
             requested,
-            it->size + (growth_rate - 1.) *
-                         distance_to_cell({it->position.x, it->position.y}, cell));
+            Geometry::graded_size(
+              *it, growth_rate,
+              distance_to_cell({it->position.x, it->position.y}, cell)));
         return requested;
       }
     };
@@ -276,12 +276,6 @@ namespace FloorBlock::Convergence
       }
     throw std::logic_error("prepare_matched_refinement: the refinement flags "
                            "of the two sides of the joints did not settle");
-  }
-
-  double
-  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell)
-  {
-    return std::sqrt(cell.measure());
   }
 
   unsigned int

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <convergence/size_targets.h>
 #include <geometry/local_size_field.h>
 
 #include <deal.II/base/types.h>
@@ -55,13 +56,6 @@ namespace FloorBlock::Convergence
                              const std::vector<JointSides>  &joints);
 
   /**
-   * @brief Size a cell is compared with the requests: the square root of
-   * its area, like the bulk requests' own sizes. Units: m.
-   */
-  double
-  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell);
-
-  /**
    * Growth rate that makes a request act on the cells it touches only
    * (h_p + (g - 1) d is far above any cell size for d > 0): with hanging
    * nodes the 2:1 rule grades the mesh, and a graded request field (which
@@ -73,7 +67,7 @@ namespace FloorBlock::Convergence
    * @brief Sets the refine flag of every active cell larger than sqrt(2)
    * times the size the requests ask for anywhere on it: min over requests
    * of h_p + (g - 1) d_p, d_p the distance from request p to the cell (0 on
-   * or inside it), the grading law of Geometry::local_size_at() with growth
+   * or inside it), Geometry::graded_size() with growth
    * rate g = @p growth_rate. Refining halves the cell, so it then lies
    * within a factor sqrt(2) of the request. Clears the coarsen flag of a
    * cell it flags. Joint requests sit on joint nodes (cell vertices), bulk

@@ -83,6 +83,12 @@ namespace FloorBlock::Convergence
     return targets;
   }
 
+  double
+  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell)
+  {
+    return std::sqrt(cell.measure());
+  }
+
   dealii::Vector<float>
   kelly_indicator(const Fem::FeSpace<2>                       &space,
                   const dealii::TrilinosWrappers::MPI::Vector &solution)
@@ -122,7 +128,7 @@ namespace FloorBlock::Convergence
       if (marked[cell->active_cell_index()])
         targets.push_back(
           {point2(cell->center()),
-           std::max(settings.smallest_size, std::sqrt(cell->measure()) / 2.)});
+           std::max(settings.smallest_size, cell_size(*cell) / 2.)});
     return targets;
   }
 

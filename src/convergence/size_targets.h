@@ -65,6 +65,13 @@ namespace FloorBlock::Convergence
                      const RefinementSettings                &settings);
 
   /**
+   * @brief The size of a cell that requests are made for and compared
+   * with: the square root of its area. Units: m.
+   */
+  double
+  cell_size(const dealii::TriaAccessor<2, 2, 2> &cell);
+
+  /**
    * @brief The Kelly indicator of the displacement per active cell (by
    * active cell index): the jump of the normal derivative, i.e. of the
    * traction, across interior faces; joint faces are boundaries and add

@@ -58,11 +58,18 @@ namespace FloorBlock::Geometry
     double size = std::numeric_limits<double>::max();
     for (const LocalSize &local : local_sizes)
       size = std::min(size,
-                      local.size +
-                        (growth_rate - 1.0) *
-                          std::hypot(point.x - local.position.x,
-                                     point.y - local.position.y));
+                      graded_size(local, growth_rate,
+                                  std::hypot(point.x - local.position.x,
+                                             point.y - local.position.y)));
     return size;
+  }
+
+  double
+  graded_size(const LocalSize &local,
+              const double     growth_rate,
+              const double     distance)
+  {
+    return local.size + (growth_rate - 1.0) * distance;
   }
 
   double

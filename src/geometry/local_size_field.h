@@ -36,6 +36,16 @@ namespace FloorBlock::Geometry
                        const AssemblyDescription     &description);
 
   /**
+   * @brief The size request @p local asks for at @p distance (m) from its
+   * point: h_p + (g - 1) d, the grading law of the corner refinement of
+   * write_gmsh_mesh() (g = @p growth_rate). Units: m.
+   */
+  double
+  graded_size(const LocalSize &local,
+              const double     growth_rate,
+              const double     distance);
+
+  /**
    * @brief The graded size the points ask for at @p point:
    * \f$h(x) = \min_p (h_p + (g - 1)\,|x - x_p|)\f$, the same grading law as
    * the corner refinement of write_gmsh_mesh() (g = growth rate).

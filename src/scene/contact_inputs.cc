@@ -110,9 +110,7 @@ namespace FloorBlock::Scene
                                                scene.material.shear_modulus),
       scene.material.density,
       scene.loading.gravity,
-      scene.joints.law == Parameters::JointLaw::rigid ?
-        Contact::JointLawKind::rigid :
-        Contact::JointLawKind::compliant,
+      joint_law_kind(scene),
       joint_parameters(scene.joints, scene.joints.vertical_friction_angle),
       joint_parameters(scene.joints, scene.joints.bedding_friction_angle),
       support_pressures,
@@ -125,6 +123,14 @@ namespace FloorBlock::Scene
     settings.steps.n_pressure = scene.solver.n_support_steps;
     settings.steps.n_uplift   = scene.solver.n_uplift_steps;
     return settings;
+  }
+
+  Contact::JointLawKind
+  joint_law_kind(const Parameters::ScenarioParameters &scene)
+  {
+    return scene.joints.law == Parameters::JointLaw::rigid ?
+             Contact::JointLawKind::rigid :
+             Contact::JointLawKind::compliant;
   }
 
   Contact::ContactSolverSettings

@@ -21,6 +21,7 @@ namespace
     std::string scene_extension;
     std::string arguments;      ///< extra command-line arguments
     std::string must_mention;
+    std::string command = "";   ///< empty: analytic on the scene
   };
 
   std::ostream &
@@ -66,7 +67,11 @@ namespace
      "--set 'Geometry/Corner rounding radius=0.4'", "Corner rounding radius"},
     {"tensile_strength_with_rounded_corners", "", "",
      "--set 'Joints/Tensile strength=1e6'", "Joints/Tensile strength"},
-    {"unknown_verification_case", "", "", "", "available: hertz"},
+    {"unknown_verification_case", "", "", "", "available: hertz",
+     "verify sphere"},
+    {"frictionless_incline_verification", "", "",
+     "--set 'Joints/Bedding friction angle=0'", "Joints/Bedding friction angle",
+     "verify incline"},
     {"corner_size_above_far_size", "", "",
      "--set 'Mesh/Corner size=0.5' --set 'Mesh/Far size=0.3'", "Corner size"},
     {"unknown_entry_in_file",
@@ -105,8 +110,7 @@ TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
     scene = "params/no_such_scene.prm";
 
   const std::string command =
-    input.name == "unknown_verification_case" ? "verify sphere" :
-                                                "analytic " + shell_quoted(scene);
+    input.command.empty() ? "analytic " + shell_quoted(scene) : input.command;
   const ProcessResult result = run_floorblock(
     command + " " + input.arguments + " --output " + shell_quoted(output));
 
