@@ -1,3 +1,4 @@
+#include <common/units.h>
 #include <output/figure_summary.h>
 
 #include <fmt/format.h>
@@ -20,10 +21,13 @@ namespace FloorBlock::Output
     };
 
     constexpr std::array<Figure, 4> figures = {
-      {{"normal_force_N_per_m", "Q", "N/m", 1e-3, "kN/m"},
+      {{"normal_force_N_per_m", "Q", "N/m", 1. / Units::newtons_per_kilonewton,
+        "kN/m"},
        {"contact_length_m", "contact length", "m", 1e3, "mm"},
-       {"sigma_max_Pa", "sigma_max", "Pa", 1e-6, "MPa"},
-       {"sigma_max_averaged_Pa", "sigma_max averaged", "Pa", 1e-6, "MPa"}}};
+       {"sigma_max_Pa", "sigma_max", "Pa", 1. / Units::pascals_per_megapascal,
+        "MPa"},
+       {"sigma_max_averaged_Pa", "sigma_max averaged", "Pa",
+        1. / Units::pascals_per_megapascal, "MPa"}}};
 
     double
     solve_time(const json &fem)

@@ -25,7 +25,7 @@ namespace FloorBlock::Output
                      const nlohmann::json &error_estimate,
                      const unsigned int    n_blocks);
 
-  /** @brief One line per figure for the terminal and report.md. */
+  /** @brief One line per figure, for the terminal. */
   std::string
   figure_lines(const nlohmann::json &figures);
 } // namespace FloorBlock::Output
