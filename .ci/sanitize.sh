@@ -7,8 +7,8 @@
 # unless halt_on_error=1, so the options below are essential, not cosmetic.
 #
 # Subset: labels unit, cli and fuzz of the executables in `targets`.
-# Left out: unit_tests_geometry and unit_tests_contact (Gmsh meshing and FEM
-# contact solves; too slow under ASan + deal.II debug for a CI step). ctest
+# Left out: unit_tests_geometry, unit_tests_contact and unit_tests_verification
+# (Gmsh meshing and FEM contact solves; too slow under ASan + deal.II debug for a CI step). ctest
 # lists tests of unbuilt executables as "<target>_NOT_BUILT"; they are
 # excluded by name.
 #

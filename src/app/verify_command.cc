@@ -1,12 +1,12 @@
 #include <app/command_options.h>
 #include <common/input_error.h>
 #include <common/units.h>
-#include <contact/hertz_verification.h>
-#include <contact/incline_verification.h>
-#include <contact/patch_verification.h>
-#include <contact/two_blocks_verification.h>
 #include <output/result_folder.h>
 #include <scene/contact_inputs.h>
+#include <verification/hertz_verification.h>
+#include <verification/incline_verification.h>
+#include <verification/patch_verification.h>
+#include <verification/two_blocks_verification.h>
 
 #include <fmt/format.h>
 
@@ -21,15 +21,6 @@ namespace FloorBlock::App
 
   namespace
   {
-    // Tolerances of the Hertz check: the half-width is resolved to
-    // one contact cell, the peak pressure is a nodal value of a smooth field.
-    constexpr double half_width_tolerance    = 0.02;
-    constexpr double peak_pressure_tolerance = 0.05;
-    // Patch, incline and two blocks check equilibrium quantities that the
-    // discretisation represents exactly; what remains is the direct solver's
-    // round-off and the Newton tolerance 1e-12 relative.
-    constexpr double equilibrium_tolerance = 1e-8;
-
     /**
      * A verification case starts from exact contact (rigid law; stiff
      * springs if the user asks for the compliant law), then the user's
@@ -70,7 +61,7 @@ namespace FloorBlock::App
     json
     verify_hertz(const Parameters::ScenarioParameters &scene)
     {
-      Contact::HertzSettings settings;
+      Verification::HertzSettings settings;
       settings.radius         = scene.verify.hertz_radius;
       settings.line_load      = scene.verify.hertz_line_load;
       settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
@@ -80,13 +71,15 @@ namespace FloorBlock::App
       settings.compliant_stiffness = scene.joints.normal_stiffness;
       settings.fe_degree           = scene.solver.fe_degree;
 
-      const Contact::HertzResult result = Contact::run_hertz_verification(settings);
+      const Verification::HertzResult result =
+        Verification::run_hertz_verification(settings);
       return {{"contact_half_width",
                quantity(result.half_width_computed, result.half_width_exact,
-                        half_width_tolerance)},
+                        Verification::hertz_half_width_tolerance)},
               {"peak_pressure",
                quantity(result.peak_pressure_computed,
-                        result.peak_pressure_exact, peak_pressure_tolerance)},
+                        result.peak_pressure_exact,
+                        Verification::hertz_peak_pressure_tolerance)},
               {"n_dofs", result.n_dofs},
               {"contact_cell_size_m", result.contact_cell_size}};
     }
@@ -94,11 +87,12 @@ namespace FloorBlock::App
     json
     verify_patch(const Parameters::ScenarioParameters &scene)
     {
-      Contact::PatchSettings settings;
+      Verification::PatchSettings settings;
       settings.pressure  = scene.verify.patch_pressure;
       settings.law       = Scene::joint_law_kind(scene);
       settings.fe_degree = scene.solver.fe_degree;
-      const Contact::PatchResult result = Contact::run_patch_verification(settings);
+      const Verification::PatchResult result =
+        Verification::run_patch_verification(settings);
       const Contact::JointReport &joint = result.increment.joints.at(0);
       const double pressure = result.applied_pressure;
       double       lowest = pressure, highest = pressure;
@@ -108,31 +102,21 @@ namespace FloorBlock::App
           highest = std::max(highest, sample.normal_traction);
         }
       const double force = pressure * result.joint_length;
+      constexpr double tolerance = Verification::patch_tolerance;
       return {{"joint_normal_force",
-               quantity(joint.normal_force, force, equilibrium_tolerance)},
-              {"lowest_normal_traction",
-               quantity(lowest, pressure, equilibrium_tolerance)},
+               quantity(joint.normal_force, force, tolerance)},
+              {"lowest_normal_traction", quantity(lowest, pressure, tolerance)},
               {"highest_normal_traction",
-               quantity(highest, pressure, equilibrium_tolerance)},
+               quantity(highest, pressure, tolerance)},
               {"joint_shear_force_over_normal",
-               scaled_quantity(joint.shear_force, 0., force,
-                               equilibrium_tolerance)},
+               scaled_quantity(joint.shear_force, 0., force, tolerance)},
               {"n_open_pairs", joint.counts.n_open}};
-    }
-
-    /** A slip is no equilibrium with every closed pair at the slip limit. */
-    bool
-    slips(const Contact::InclineResult &result)
-    {
-      return result.slipped && result.last_iterate_counts.n_stick == 0 &&
-             result.last_iterate_counts.n_closed() > 0 &&
-             !result.had_converged_state;
     }
 
     json
     verify_incline(const Parameters::ScenarioParameters &scene)
     {
-      Contact::InclineSettings settings;
+      Verification::InclineSettings settings;
       settings.friction_angle   = scene.joints.bedding_friction_angle;
       // The case tilts the block to (1 -+ margin) tan(phi): with phi = 0
       // both inclines are 0 and the closed-form shear W sin(0) = 0 leaves
@@ -148,13 +132,16 @@ namespace FloorBlock::App
       const double friction = std::tan(settings.friction_angle);
       const double margin   = scene.verify.incline_margin;
       settings.incline = std::atan((1. - margin) * friction);
-      const Contact::InclineResult below = Contact::run_incline_verification(settings);
+      const Verification::InclineResult below =
+        Verification::run_incline_verification(settings);
       const double incline_below = settings.incline;
       settings.incline = std::atan((1. + margin) * friction);
-      const Contact::InclineResult above = Contact::run_incline_verification(settings);
+      const Verification::InclineResult above =
+        Verification::run_incline_verification(settings);
       json quantities = {
-        {"slips_below_threshold", decision(slips(below), false)},
-        {"slips_above_threshold", decision(slips(above), true)},
+        {"slips_below_threshold",
+         decision(Verification::slips(below), false)},
+        {"slips_above_threshold", decision(Verification::slips(above), true)},
         {"incline_below_deg", Units::radians_to_degrees(incline_below)},
         {"incline_above_deg", Units::radians_to_degrees(settings.incline)}};
       if (below.stuck)
@@ -162,10 +149,10 @@ namespace FloorBlock::App
           const Contact::JointReport &joint = below.stuck->joints.at(0);
           quantities["joint_shear_force"] = quantity(
             std::abs(joint.shear_force), below.weight * std::sin(incline_below),
-            equilibrium_tolerance);
+            Verification::incline_tolerance);
           quantities["joint_normal_force"] = quantity(
             joint.normal_force, below.weight * std::cos(incline_below),
-            equilibrium_tolerance);
+            Verification::incline_tolerance);
         }
       return quantities;
     }
@@ -173,16 +160,16 @@ namespace FloorBlock::App
     json
     verify_two_blocks(const Parameters::ScenarioParameters &scene)
     {
-      Contact::TwoBlocksSettings settings;
+      Verification::TwoBlocksSettings settings;
       settings.cells_per_metre  = scene.verify.two_blocks_cells_per_metre;
       settings.law              = Scene::joint_law_kind(scene);
       settings.joint_stiffness  = scene.joints.normal_stiffness;
       settings.lateral_pressure = scene.verify.two_blocks_lateral_pressure;
-      const Contact::TwoBlocksResult result =
-        Contact::run_two_blocks_verification(settings);
+      const Verification::TwoBlocksResult result =
+        Verification::run_two_blocks_verification(settings);
       return {{"joint_normal_force",
                quantity(result.joint_normal_force, result.applied_lateral_force,
-                        equilibrium_tolerance)},
+                        Verification::two_blocks_tolerance)},
               {"closed_length_m", result.closed_length},
               {"relative_imbalance", result.relative_imbalance}};
     }

@@ -6,8 +6,8 @@
 
 #include <contact/contact_solver.h>
 #include <contact/floor_scene.h>
-#include <contact/hertz_verification.h>
 #include <scene/contact_inputs.h>
+#include <verification/hertz_verification.h>
 
 #include <benchmark/benchmark.h>
 
@@ -319,13 +319,13 @@ namespace FloorBlock::Benchmark
       record.mesh_level = mesh_level;
       for (auto _ : state)
         {
-          Contact::HertzSettings settings;
+          Verification::HertzSettings settings;
           settings.mesh_level = mesh_level;
           const Stopwatch clock;
           try
             {
-              const Contact::HertzResult result =
-                Contact::run_hertz_verification(settings);
+              const Verification::HertzResult result =
+                Verification::run_hertz_verification(settings);
               record.n_dofs               = result.n_dofs;
               record.n_newton_iterations  = result.n_newton_iterations;
               record.n_multiplier_updates = result.n_multiplier_updates;

@@ -1,14 +1,14 @@
 #pragma once
 
-// The block-assembly mesher lives in the contact library, where the
+// The block-assembly mesher lives in the verification library, where the
 // verification cases share it; tests keep their Testing:: names.
-#include <contact/block_assembly_mesh.h>
+#include <verification/block_assembly_mesh.h>
 
 namespace FloorBlock
 {
   namespace Testing
   {
-    using Contact::BlockSpec;
-    using Contact::make_block_assembly;
+    using Verification::BlockSpec;
+    using Verification::make_block_assembly;
   } // namespace Testing
 } // namespace FloorBlock

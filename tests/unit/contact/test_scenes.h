@@ -1,20 +1,20 @@
 #pragma once
 
-// The helpers live in the contact library, where the verification cases
-// share them; tests keep their Testing:: names.
-#include <contact/verification_setup.h>
+// The helpers live in the verification library, where the verification
+// cases share them; tests keep their Testing:: names.
+#include <verification/verification_setup.h>
 
 namespace FloorBlock
 {
   namespace Testing
   {
-    using Contact::fixed_support;
-    using Contact::table_rock;
+    using Verification::fixed_support;
+    using Verification::table_rock;
 
     inline Contact::ContactSolverSettings
     test_settings(const unsigned int degree = 1)
     {
-      return Contact::verification_settings(degree);
+      return Verification::verification_settings(degree);
     }
   } // namespace Testing
 } // namespace FloorBlock

@@ -2,10 +2,10 @@
 // joint must get the same new nodes, or Contact::pair_joint_nodes has no
 // partner for a hanging node; cells larger than the requests must be
 // refined, and coarsening must not undo a request.
-#include <contact/block_assembly_mesh.h>
 #include <contact/joint_pairing.h>
 #include <convergence/matched_refinement.h>
 #include <fem/fe_space.h>
+#include <verification/block_assembly_mesh.h>
 
 #include <deal.II/grid/grid_generator.h>
 
@@ -26,7 +26,7 @@ namespace FloorBlock::Convergence
     void
     make_two_blocks(dealii::Triangulation<2> &mesh)
     {
-      Contact::make_block_assembly(
+      Verification::make_block_assembly(
         {{-1., 0., 0., 2., 2, 4, 1, 11, left_joint, 13, 14},
          {0., 1., 0., 2., 2, 4, 2, right_joint, 22, 23, 24}},
         mesh);

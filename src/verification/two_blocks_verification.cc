@@ -1,8 +1,8 @@
 #include <common/units.h>
-#include <contact/block_assembly_mesh.h>
 #include <contact/contact_solver.h>
-#include <contact/two_blocks_verification.h>
-#include <contact/verification_setup.h>
+#include <verification/block_assembly_mesh.h>
+#include <verification/two_blocks_verification.h>
+#include <verification/verification_setup.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -10,7 +10,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     namespace
     {
@@ -60,7 +60,7 @@ namespace FloorBlock
               cell->set_refine_flag();
           mesh.execute_coarsening_and_refinement();
         }
-      SceneDefinition<2> scene;
+      Contact::SceneDefinition<2> scene;
       for (const dealii::types::material_id body : {left_block, right_block, base})
         scene.model.laws.emplace(body, table_rock());
       scene.model.densities[right_block]       = density;
@@ -69,7 +69,7 @@ namespace FloorBlock
       scene.supports = {fixed_support(left_outer, true, true),
                         fixed_support(left_bottom, true, true),
                         fixed_support(base_bottom, true, true)};
-      JointDefinition<2> vertical;
+      Contact::JointDefinition<2> vertical;
       vertical.name                        = "vertical";
       vertical.side_a                      = left_joint;
       vertical.side_b                      = right_joint;
@@ -77,7 +77,7 @@ namespace FloorBlock
       vertical.parameters.normal_stiffness = settings.joint_stiffness;
       vertical.parameters.shear_stiffness  = settings.joint_stiffness;
       vertical.parameters.friction_angle   = vertical_friction_angle;
-      JointDefinition<2> bedding           = vertical;
+      Contact::JointDefinition<2> bedding  = vertical;
       bedding.name                         = "bedding";
       bedding.side_a                       = base_top;
       bedding.side_b                       = right_bottom;
@@ -89,10 +89,10 @@ namespace FloorBlock
       // alone, frictionless bedding and an opening joint would leave the
       // right block a horizontal mechanism with no unique answer.
       scene.steps = {0, 2, 0};
-      ContactSolver          solver(mesh, scene, verification_settings());
-      const SolveResult      solved = solver.run();
-      const IncrementResult &last   = solved.increments.back();
-      TwoBlocksResult        result;
+      Contact::ContactSolver solver(mesh, scene, verification_settings());
+      const Contact::SolveResult      solved = solver.run();
+      const Contact::IncrementResult &last   = solved.increments.back();
+      TwoBlocksResult                 result;
       result.applied_lateral_force =
         settings.lateral_pressure * (block_height - loaded_from_y);
       result.joint_normal_force = last.joints.at(0).normal_force;
@@ -103,5 +103,5 @@ namespace FloorBlock
       result.block_height       = block_height;
       return result;
     }
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock

@@ -2,7 +2,7 @@
 // and a stuck block's joint carries exactly W sin(alpha). The set-up is the
 // library's run_incline_verification(), shared with `floorblock verify
 // incline`.
-#include <contact/incline_verification.h>
+#include <verification/incline_verification.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@ namespace
 {
   using namespace FloorBlock;
   using namespace FloorBlock::Contact;
+  using namespace FloorBlock::Verification;
 
   /** Incline with tan(alpha) = ratio x tan(phi) for the default phi. */
   InclineResult

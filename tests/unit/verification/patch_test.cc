@@ -1,7 +1,7 @@
 // Contact patch test: two bodies pressed together over a flat joint with
 // matching meshes must transmit a uniform pressure. The set-up is the
 // library's run_patch_verification(), shared with `floorblock verify patch`.
-#include <contact/patch_verification.h>
+#include <verification/patch_verification.h>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@ namespace
 {
   using namespace FloorBlock;
   using namespace FloorBlock::Contact;
+  using namespace FloorBlock::Verification;
 
   PatchResult
   run_patch_test(const JointLawKind             law,

@@ -7,7 +7,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     /** A structured rectangular body of a verification mesh (m). */
     struct BlockSpec
@@ -30,5 +30,5 @@ namespace FloorBlock
     void
     make_block_assembly(const std::vector<BlockSpec> &blocks,
                         dealii::Triangulation<2>     &triangulation);
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock

@@ -1,7 +1,7 @@
-#include <contact/block_assembly_mesh.h>
 #include <contact/contact_solver.h>
-#include <contact/incline_verification.h>
-#include <contact/verification_setup.h>
+#include <verification/block_assembly_mesh.h>
+#include <verification/incline_verification.h>
+#include <verification/verification_setup.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -9,7 +9,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     namespace
     {
@@ -23,17 +23,17 @@ namespace FloorBlock
       constexpr double block_width = 1., block_height = 0.5; // m
       constexpr double base_depth  = 0.5;                     // m
 
-      SceneDefinition<2>
+      Contact::SceneDefinition<2>
       incline_scene(const InclineSettings &settings)
       {
-        SceneDefinition<2> scene;
+        Contact::SceneDefinition<2> scene;
         scene.model.laws.emplace(block, table_rock());
         scene.model.laws.emplace(base, table_rock());
         scene.model.densities[block] = density;
         scene.model.gravity[0] = gravity_acceleration * std::sin(settings.incline);
         scene.model.gravity[1] = -gravity_acceleration * std::cos(settings.incline);
         scene.supports = {fixed_support(base_bottom, true, true)};
-        JointDefinition<2> joint;
+        Contact::JointDefinition<2> joint;
         joint.name                        = "bedding";
         joint.side_a                      = base_top;
         joint.side_b                      = block_bottom;
@@ -59,12 +59,14 @@ namespace FloorBlock
       InclineResult result;
       result.weight =
         density * gravity_acceleration * block_width * block_height;
-      ContactSolver solver(mesh, incline_scene(settings), verification_settings());
+      Contact::ContactSolver solver(mesh,
+                                    incline_scene(settings),
+                                    verification_settings());
       try
         {
           result.stuck = solver.run().increments.back();
         }
-      catch (const ContactSolveFailure &failure)
+      catch (const Contact::ContactSolveFailure &failure)
         {
           result.slipped             = true;
           result.last_iterate_counts = failure.last_iterate_counts;
@@ -73,5 +75,13 @@ namespace FloorBlock
         }
       return result;
     }
-  } // namespace Contact
+
+    bool
+    slips(const InclineResult &result)
+    {
+      return result.slipped && result.last_iterate_counts.n_stick == 0 &&
+             result.last_iterate_counts.n_closed() > 0 &&
+             !result.had_converged_state;
+    }
+  } // namespace Verification
 } // namespace FloorBlock

@@ -1,19 +1,20 @@
 #pragma once
 
 #include <contact/scene.h>
+#include <verification/verification_setup.h>
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     /** @brief Settings of the two-blocks verification. */
     struct TwoBlocksSettings
     {
       /** Cells per metre of the structured meshes (blocks 1 m x 2 m). */
-      unsigned int cells_per_metre  = 4;
-      JointLawKind law              = JointLawKind::compliant;
-      double       joint_stiffness  = 9e9; ///< kn = ks, compliant law (Pa/m)
-      double       lateral_pressure = 4e5; ///< on the upper quarter (Pa)
+      unsigned int          cells_per_metre = 4;
+      Contact::JointLawKind law = Contact::JointLawKind::compliant;
+      double joint_stiffness  = 9e9; ///< kn = ks, compliant law (Pa/m)
+      double lateral_pressure = 4e5; ///< on the upper quarter (Pa)
       /**
        * Local refinements (hanging nodes) of the cells within
        * corner_refinement_radius of the joint's top corner, on both sides
@@ -22,6 +23,14 @@ namespace FloorBlock
       unsigned int corner_refinements      = 0;
       double       corner_refinement_radius = 0.6; ///< m
     };
+
+    /**
+     * Relative tolerance of the joint normal force against the applied
+     * lateral force: horizontal equilibrium of the right block on its
+     * frictionless bedding, exact in any discretisation, so only round-off
+     * and the Newton tolerance remain.
+     */
+    constexpr double two_blocks_tolerance = equilibrium_tolerance;
 
     /** @brief Joint and block response of the two-blocks case. */
     struct TwoBlocksResult
@@ -46,5 +55,5 @@ namespace FloorBlock
      */
     TwoBlocksResult
     run_two_blocks_verification(const TwoBlocksSettings &settings);
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock

@@ -1,13 +1,13 @@
-#include <contact/block_assembly_mesh.h>
 #include <contact/contact_solver.h>
-#include <contact/patch_verification.h>
-#include <contact/verification_setup.h>
+#include <verification/block_assembly_mesh.h>
+#include <verification/patch_verification.h>
+#include <verification/verification_setup.h>
 
 #include <deal.II/grid/tria.h>
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     namespace
     {
@@ -33,7 +33,7 @@ namespace FloorBlock
                            {0., joint_length, 1., 2., 4, 5, 2, upper_left,
                             upper_right, upper_bottom, upper_top}},
                           mesh);
-      SceneDefinition<2> scene;
+      Contact::SceneDefinition<2> scene;
       scene.model.laws.emplace(1, table_rock());
       scene.model.laws.emplace(2, table_rock());
       scene.model.pressures[upper_top] = settings.pressure;
@@ -42,7 +42,7 @@ namespace FloorBlock
       scene.supports = {fixed_support(lower_bottom, false, true),
                         fixed_support(lower_left, true, false),
                         fixed_support(upper_left, true, false)};
-      JointDefinition<2> joint;
+      Contact::JointDefinition<2> joint;
       joint.name                        = "patch";
       joint.side_a                      = lower_top;
       joint.side_b                      = upper_bottom;
@@ -52,16 +52,17 @@ namespace FloorBlock
       joint.parameters.friction_angle   = joint_friction_angle;
       scene.joints                      = {joint};
       scene.steps                       = {0, 1, 0};
-      ContactSolverSettings numerics = verification_settings(settings.fe_degree);
-      numerics.linear.kind           = settings.linear_solver;
-      ContactSolver     solver(mesh, scene, numerics);
-      const SolveResult solved = solver.run();
-      PatchResult       result;
+      Contact::ContactSolverSettings numerics =
+        verification_settings(settings.fe_degree);
+      numerics.linear.kind = settings.linear_solver;
+      Contact::ContactSolver     solver(mesh, scene, numerics);
+      const Contact::SolveResult solved = solver.run();
+      PatchResult                result;
       result.increment        = solved.increments.back();
       result.n_increments     = solved.increments.size();
       result.joint_length     = joint_length;
       result.applied_pressure = settings.pressure;
       return result;
     }
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock

@@ -1,5 +1,5 @@
 #include <contact/contact_solver.h>
-#include <contact/hertz_verification.h>
+#include <verification/hertz_verification.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -11,7 +11,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     namespace
     {
@@ -96,16 +96,16 @@ namespace FloorBlock
                             result.half_width_exact,
                             settings.mesh_level,
                             mesh);
-      SceneDefinition<2> scene;
+      Contact::SceneDefinition<2> scene;
       scene.model.laws.emplace(cylinder, law);
       // Half model: P/2 spread over the cut of length R.
       scene.model.pressures[loaded_cut] =
         settings.line_load / (2. * settings.radius);
-      SupportDefinition<2> symmetry;
+      Contact::SupportDefinition<2> symmetry;
       symmetry.boundary_id            = symmetry_plane;
       symmetry.constrained_components = {{true, false}};
       scene.supports                  = {symmetry};
-      JointDefinition<2> contact;
+      Contact::JointDefinition<2> contact;
       contact.name                        = "hertz";
       contact.side_a                      = curved_surface;
       contact.law                         = settings.law;
@@ -117,14 +117,15 @@ namespace FloorBlock
       scene.joints                        = {contact};
       scene.steps                         = {0, 1, 0};
 
-      ContactSolverSettings numerics;
+      Contact::ContactSolverSettings numerics;
       numerics.fe_degree   = settings.fe_degree;
       numerics.linear.kind = Solver::LinearSolverKind::direct;
-      ContactSolver     solver(mesh, scene, numerics);
-      const SolveResult solved = solver.run();
-      const JointReport &report = solved.increments.back().joints.at(0);
-      result.n_dofs        = solved.n_dofs;
-      for (const IncrementResult &increment : solved.increments)
+      Contact::ContactSolver      solver(mesh, scene, numerics);
+      const Contact::SolveResult  solved = solver.run();
+      const Contact::JointReport &report =
+        solved.increments.back().joints.at(0);
+      result.n_dofs = solved.n_dofs;
+      for (const Contact::IncrementResult &increment : solved.increments)
         {
           result.n_newton_iterations += increment.n_newton_iterations;
           result.n_multiplier_updates += increment.n_multiplier_updates;
@@ -134,17 +135,18 @@ namespace FloorBlock
       for (const auto &sample : report.profile)
         {
           const double x = sample.position[0];
-          if (sample.state != JointState::open)
+          if (sample.state != Contact::JointState::open)
             last_closed = std::max(last_closed, x);
           result.peak_pressure_computed =
             std::max(result.peak_pressure_computed, sample.normal_traction);
         }
       for (const auto &sample : report.profile)
-        if (sample.state == JointState::open && sample.position[0] > last_closed)
+        if (sample.state == Contact::JointState::open &&
+            sample.position[0] > last_closed)
           first_open = std::min(first_open, sample.position[0]);
       result.half_width_computed = (last_closed + first_open) / 2.;
       result.contact_cell_size   = first_open - last_closed;
       return result;
     }
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock

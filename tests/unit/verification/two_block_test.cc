@@ -2,7 +2,7 @@
 // that the vertical joint closes only over its upper part. The set-up is the
 // library's run_two_blocks_verification(), shared with `floorblock verify
 // two-blocks`.
-#include <contact/two_blocks_verification.h>
+#include <verification/two_blocks_verification.h>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@ namespace
 {
   using namespace FloorBlock;
   using namespace FloorBlock::Contact;
+  using namespace FloorBlock::Verification;
 
   /** The library's run_two_blocks_verification(), shared with the CLI. */
   TwoBlocksResult

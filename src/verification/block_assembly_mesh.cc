@@ -1,4 +1,4 @@
-#include <contact/block_assembly_mesh.h>
+#include <verification/block_assembly_mesh.h>
 
 #include <deal.II/grid/tria_description.h>
 
@@ -6,7 +6,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Verification
   {
     void
     make_block_assembly(const std::vector<BlockSpec> &blocks,
@@ -60,5 +60,5 @@ namespace FloorBlock
               }
           }
     }
-  } // namespace Contact
+  } // namespace Verification
 } // namespace FloorBlock
