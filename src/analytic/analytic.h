@@ -10,6 +10,7 @@
 #include <analytic/centroid_heights.h>
 #include <analytic/corner_contact.h>
 #include <analytic/floor_shape.h>
+#include <analytic/hertz.h>
 #include <analytic/rotation_no_vertical_slip.h>
 #include <analytic/rotation_vertical_slip.h>
 #include <analytic/slip_no_rotation.h>

@@ -1,3 +1,5 @@
+#include <analytic/hertz.h>
+#include <common/input_error.h>
 #include <contact/contact_solver.h>
 #include <verification/hertz_verification.h>
 
@@ -83,13 +85,18 @@ namespace FloorBlock
     {
       const Material::ElasticLaw<2> law = Material::ElasticLaw<2>::from_youngs_poisson(
         settings.youngs_modulus, settings.poissons_ratio);
+      // Rigid flat: the contact modulus is the cylinder's plane-strain
+      // modulus, 1/E* = (1 - nu^2)/E.
+      const Analytic::HertzLineContact closed_form =
+        Analytic::hertz_line_contact(settings.line_load,
+                                     settings.radius,
+                                     law.plane_strain_modulus());
+      if (closed_form.status != Analytic::Status::ok)
+        throw InputError("verify hertz: " +
+                         Analytic::describe(closed_form.status));
       HertzResult result;
-      // Johnson (1985) eq. 4.43/4.45, rigid flat: 1/E* = (1 - nu^2)/E.
-      result.half_width_exact =
-        std::sqrt(4. * settings.line_load * settings.radius /
-                  (M_PI * law.plane_strain_modulus()));
-      result.peak_pressure_exact =
-        2. * settings.line_load / (M_PI * result.half_width_exact);
+      result.half_width_exact    = closed_form.half_width;
+      result.peak_pressure_exact = closed_form.peak_pressure;
 
       dealii::Triangulation<2> mesh;
       make_quarter_cylinder(settings.radius,

@@ -36,11 +36,12 @@ namespace FloorBlock
     /** @brief Computed versus closed-form Hertz quantities. */
     struct HertzResult
     {
-      /** \f$a = \sqrt{4PR/(\pi E^*)}\f$ (m). */
+      /** \f$a = \sqrt{4PR/(\pi E^*)}\f$ (m), from
+       *  Analytic::hertz_line_contact(). */
       double half_width_exact = 0.;
       /** Midway between the last closed and the first open node (m). */
       double half_width_computed = 0.;
-      /** \f$p_0 = 2P/(\pi a)\f$ (Pa). */
+      /** \f$p_0 = 2P/(\pi a)\f$ (Pa), from Analytic::hertz_line_contact(). */
       double peak_pressure_exact = 0.;
       /** Largest nodal contact pressure (Pa). */
       double peak_pressure_computed = 0.;
