@@ -3,12 +3,12 @@
 #include <common/atomic_file.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
-#include <contact/floor_scene.h>
 #include <convergence/matched_refinement.h>
 #include <geometry/assembly_description.h>
 #include <geometry/refinement_manifolds.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
+#include <scene/floor_scene.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_out.h>
@@ -310,7 +310,7 @@ namespace FloorBlock::App
     {
       std::vector<Convergence::JointSides> sides;
       for (const auto &joint :
-           Contact::make_floor_scene(Scene::floor_scene_settings(scene)).joints)
+           Scene::make_floor_scene(Scene::floor_scene_settings(scene)).joints)
         if (!joint.against_rigid_plane)
           sides.push_back({joint.side_a, joint.side_b});
       return sides;

@@ -7,6 +7,7 @@
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
+#include <scene/floor_scene.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/grid/tria.h>
@@ -135,7 +136,7 @@ namespace FloorBlock::App
                                      scene.material.youngs_modulus()};
     Contact::ContactSolver solver(
       triangulation,
-      Contact::make_floor_scene(Scene::floor_scene_settings(scene)),
+      Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
       Scene::contact_solver_settings(scene,
                                      write_vtu ? folder.path_of("vtu") : ""));
     json failure_record;

@@ -85,7 +85,7 @@ namespace FloorBlock::Scene
     }
   } // namespace
 
-  Contact::FloorSceneSettings
+  FloorSceneSettings
   floor_scene_settings(const Parameters::ScenarioParameters &scene)
   {
     const Analytic::BlockChain     chain = block_chain(scene);
@@ -104,7 +104,7 @@ namespace FloorBlock::Scene
 
     // Aggregate initialisation in member order: the elastic law is an
     // immutable value (const members) and cannot be assigned afterwards.
-    Contact::FloorSceneSettings settings{
+    FloorSceneSettings settings{
       scene.geometry.n_blocks,
       Material::ElasticLaw<2>::from_bulk_shear(scene.material.bulk_modulus,
                                                scene.material.shear_modulus),

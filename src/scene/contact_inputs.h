@@ -1,8 +1,8 @@
 #pragma once
 
-#include <contact/floor_scene.h>
 #include <contact/scene.h>
 #include <parameters/scenario_parameters.h>
+#include <scene/floor_scene.h>
 
 #include <string>
 
@@ -23,7 +23,7 @@ namespace FloorBlock::Scene
    * - parabola: the base bends into u_y = lift (x/nL)^2, i.e. y = x^2/k
    *   with k = (nL)^2/lift.
    */
-  Contact::FloorSceneSettings
+  FloorSceneSettings
   floor_scene_settings(const Parameters::ScenarioParameters &scene);
 
   /** @brief The contact law of Joints/Law. */

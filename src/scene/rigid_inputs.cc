@@ -8,8 +8,8 @@ namespace FloorBlock::Scene
   RigidBlocks::ModelDescription
   rigid_model_description(const Parameters::ScenarioParameters &scene)
   {
-    const Contact::FloorSceneSettings floor = floor_scene_settings(scene);
-    RigidBlocks::ModelDescription     description;
+    const FloorSceneSettings      floor = floor_scene_settings(scene);
+    RigidBlocks::ModelDescription description;
     description.assembly           = assembly_description(scene);
     description.density            = floor.density;
     description.gravity            = floor.gravity;

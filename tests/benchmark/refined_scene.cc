@@ -1,13 +1,13 @@
 #include "refined_scene.h"
 
 #include <contact/contact_assembly.h>
-#include <contact/floor_scene.h>
 #include <contact/joint_pairing.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/sparsity.h>
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
+#include <scene/floor_scene.h>
 #include <solver/linear_solver.h>
 
 #include <sstream>
@@ -58,7 +58,7 @@ namespace FloorBlock::Benchmark
   LinearElasticSystem::LinearElasticSystem(
     const Parameters::ScenarioParameters &scene_parameters,
     const dealii::Triangulation<2>       &triangulation)
-    : scene(Contact::make_floor_scene(
+    : scene(Scene::make_floor_scene(
         Scene::floor_scene_settings(scene_parameters)))
     , settings(Scene::contact_solver_settings(scene_parameters, ""))
     , space(triangulation, settings.fe_degree)

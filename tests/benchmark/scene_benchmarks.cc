@@ -5,8 +5,8 @@
 #include "refined_scene.h"
 
 #include <contact/contact_solver.h>
-#include <contact/floor_scene.h>
 #include <scene/contact_inputs.h>
+#include <scene/floor_scene.h>
 #include <verification/hertz_verification.h>
 
 #include <benchmark/benchmark.h>
@@ -289,7 +289,7 @@ namespace FloorBlock::Benchmark
             {
               Contact::ContactSolver solver(
                 level.triangulation,
-                Contact::make_floor_scene(Scene::floor_scene_settings(scene)),
+                Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
                 Scene::contact_solver_settings(scene, ""));
               fill_solve_record(solver.run(), scene.geometry.n_blocks, record);
               record.converged = true;

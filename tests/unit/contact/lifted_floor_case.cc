@@ -2,7 +2,7 @@
 
 #include "rounded_mesh.h"
 
-#include <contact/floor_scene.h>
+#include <scene/floor_scene.h>
 
 #include <cmath>
 
@@ -36,7 +36,7 @@ namespace FloorBlock
       dealii::Triangulation<2> mesh;
       mesh_assembly(description, "lifted_floor", mesh);
 
-      Contact::FloorSceneSettings settings;
+      Scene::FloorSceneSettings settings;
       settings.n_blocks = floor_case.n_blocks;
       settings.law      = floor_case.law;
       const double degree      = M_PI / 180.;
@@ -56,7 +56,7 @@ namespace FloorBlock
       solver_settings.extrapolate_increments =
         floor_case.extrapolate_increments;
       Contact::ContactSolver solver(mesh,
-                                    Contact::make_floor_scene(settings),
+                                    Scene::make_floor_scene(settings),
                                     solver_settings);
       const Contact::SolveResult result = solver.run();
       LiftedFloorOutcome         outcome;

@@ -7,7 +7,7 @@
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Scene
   {
     /**
      * @brief Plain description of the chapter's block-assembly physics on a
@@ -23,11 +23,11 @@ namespace FloorBlock
       double density = 2500.;
       /** Gravity acceleration magnitude (m/s^2), acting in -y. */
       double gravity = 9.81;
-      JointLawKind    law = JointLawKind::compliant;
+      Contact::JointLawKind law = Contact::JointLawKind::compliant;
       /** Vertical fractures (Table 6.1: kn 9 GPa/m, ks 6.7 GPa/m). */
-      JointParameters vertical_joints;
+      Contact::JointParameters vertical_joints;
       /** Bedding joint under the blocks. */
-      JointParameters bedding_joints;
+      Contact::JointParameters bedding_joints;
       /** Support pressure on the top of block i (Pa), keyed by chapter index i. */
       std::map<unsigned int, double> support_pressures;
       /**
@@ -35,8 +35,8 @@ namespace FloorBlock
        * the closed forms' vertical P_i, or normal to the block top (false).
        */
       bool vertical_support_load = true;
-      UpliftSettings uplift;
-      LoadSteps      steps;
+      Contact::UpliftSettings uplift;
+      Contact::LoadSteps      steps;
     };
 
     /**
@@ -50,7 +50,7 @@ namespace FloorBlock
      * bottom (4000), so no contact is modelled under it; the base bottom
      * (7001) follows the uplift (zero in stages 1 and 2).
      */
-    SceneDefinition<2>
+    Contact::SceneDefinition<2>
     make_floor_scene(const FloorSceneSettings &settings);
-  } // namespace Contact
+  } // namespace Scene
 } // namespace FloorBlock

@@ -1,23 +1,23 @@
 #include <common/input_error.h>
-#include <contact/floor_scene.h>
 #include <geometry/ids.h>
+#include <scene/floor_scene.h>
 
 #include <string>
 
 namespace FloorBlock
 {
-  namespace Contact
+  namespace Scene
   {
     namespace Ids = Geometry::Ids;
 
-    SceneDefinition<2>
+    Contact::SceneDefinition<2>
     make_floor_scene(const FloorSceneSettings &settings)
     {
       if (settings.n_blocks < 1 || settings.n_blocks > Ids::max_n_blocks)
         throw InputError("Geometry/Number of blocks",
                          std::to_string(settings.n_blocks),
                          "1 .. " + std::to_string(Ids::max_n_blocks));
-      SceneDefinition<2> scene;
+      Contact::SceneDefinition<2> scene;
       for (unsigned int i = 1; i <= settings.n_blocks; ++i)
         {
           scene.model.laws.emplace(Ids::block_material(i), settings.rock);
@@ -38,11 +38,11 @@ namespace FloorBlock
             scene.model.vertical_pressures.insert(Ids::floor_surface(block));
         }
 
-      const auto add_joint = [&](const std::string          &name,
+      const auto add_joint = [&](const std::string               &name,
                                  const dealii::types::boundary_id side_a,
                                  const dealii::types::boundary_id side_b,
-                                 const JointParameters           &parameters) {
-        JointDefinition<2> joint;
+                                 const Contact::JointParameters  &parameters) {
+        Contact::JointDefinition<2> joint;
         joint.name       = name;
         joint.side_a     = side_a;
         joint.side_b     = side_b;
@@ -61,18 +61,18 @@ namespace FloorBlock
                   Ids::bedding_block_side(i),
                   settings.bedding_joints);
 
-      SupportDefinition<2> face_outer;
+      Contact::SupportDefinition<2> face_outer;
       face_outer.boundary_id            = Ids::face_block_outer_side;
       face_outer.constrained_components = {{true, true}};
-      SupportDefinition<2> face_bottom  = face_outer;
+      Contact::SupportDefinition<2> face_bottom = face_outer;
       face_bottom.boundary_id = Ids::bedding_block_side(Ids::face_block_index);
-      SupportDefinition<2> base         = face_outer;
-      base.boundary_id                  = Ids::base_bottom;
-      base.moves_with_uplift            = true;
+      Contact::SupportDefinition<2> base = face_outer;
+      base.boundary_id                   = Ids::base_bottom;
+      base.moves_with_uplift             = true;
       scene.supports = {face_outer, face_bottom, base};
       scene.uplift   = settings.uplift;
       scene.steps    = settings.steps;
       return scene;
     }
-  } // namespace Contact
+  } // namespace Scene
 } // namespace FloorBlock
