@@ -1,4 +1,5 @@
 #include <analytic/corner_contact.h>
+#include <analytic/input_checks.h>
 
 #include <cmath>
 
@@ -6,14 +7,7 @@ namespace FloorBlock
 {
   namespace Analytic
   {
-    namespace
-    {
-      bool
-      is_positive(const double value)
-      {
-        return std::isfinite(value) && value > 0.;
-      }
-    } // namespace
+    using Internal::is_positive;
 
     CornerContact
     corner_contact(const double lateral_force_over_width,

@@ -1,4 +1,5 @@
 #include <analytic/hertz.h>
+#include <analytic/input_checks.h>
 
 #include <cmath>
 
@@ -6,14 +7,7 @@ namespace FloorBlock
 {
   namespace Analytic
   {
-    namespace
-    {
-      bool
-      is_positive(const double value)
-      {
-        return std::isfinite(value) && value > 0.;
-      }
-    } // namespace
+    using Internal::is_positive;
 
     HertzLineContact
     hertz_line_contact(const double line_load,

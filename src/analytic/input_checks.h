@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cmath>
+
+namespace FloorBlock
+{
+  namespace Analytic
+  {
+    namespace Internal
+    {
+      /** @brief True if @p value is finite and > 0 (a valid length, load,
+       *  modulus). */
+      inline bool
+      is_positive(const double value)
+      {
+        return std::isfinite(value) && value > 0.;
+      }
+    } // namespace Internal
+  }   // namespace Analytic
+} // namespace FloorBlock
