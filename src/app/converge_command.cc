@@ -1,5 +1,5 @@
 #include <app/command_options.h>
-#include <app/convergence_ladder.h>
+#include <pipeline/convergence_ladder.h>
 #include <convergence/equal_error.h>
 #include <output/convergence_report.h>
 #include <output/gnuplot.h>
@@ -177,23 +177,23 @@ namespace FloorBlock::App
     const auto quantities = Convergence::quantities_of_interest(
       scene.geometry.n_blocks);
     const std::string          &chosen = options.refinement_mode;
-    std::vector<RefinementMode> modes;
+    std::vector<Pipeline::RefinementMode> modes;
     if (chosen == "uniform" || chosen == "both" || chosen == "all")
-      modes.push_back(RefinementMode::uniform);
+      modes.push_back(Pipeline::RefinementMode::uniform);
     if (chosen == "adaptive" || chosen == "both" || chosen == "all")
-      modes.push_back(RefinementMode::adaptive);
+      modes.push_back(Pipeline::RefinementMode::adaptive);
     if (chosen == "remesh" || chosen == "all")
-      modes.push_back(RefinementMode::remesh);
+      modes.push_back(Pipeline::RefinementMode::remesh);
     Convergence::RefinementSettings refinement;
     refinement.bulk_fraction          = options.bulk_fraction;
     refinement.traction_jump_fraction = options.jump_fraction;
 
     std::vector<Ladder> ladders;
     bool                all_converged = true;
-    for (const RefinementMode mode : modes)
+    for (const Pipeline::RefinementMode mode : modes)
       {
-        ladders.push_back({mode_name(mode), {}, {}});
-        const auto levels = run_ladder(
+        ladders.push_back({Pipeline::mode_name(mode), {}, {}});
+        const auto levels = Pipeline::run_ladder(
           scene, mode, options.n_levels, refinement, options.coarsen_fraction,
           folder,
           [&](const std::vector<Convergence::LevelRecord> &so_far) {

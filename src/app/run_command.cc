@@ -1,6 +1,6 @@
 #include <app/command_options.h>
-#include <app/error_estimate.h>
-#include <app/fem_pipeline.h>
+#include <pipeline/error_estimate.h>
+#include <pipeline/fem_pipeline.h>
 #include <compare/joint_comparison.h>
 #include <output/figure_summary.h>
 #include <output/analytic_report.h>
@@ -29,7 +29,7 @@ namespace FloorBlock::App
 
     /// Face-joint comparison at every converged uplift increment.
     json
-    lift_history(const FemOutcome &                    outcome,
+    lift_history(const Pipeline::FemOutcome &          outcome,
                  const Scene::ClosedForms &            closed_forms,
                  const Parameters::ScenarioParameters &scene)
     {
@@ -76,7 +76,7 @@ namespace FloorBlock::App
 
     /// Compares, plots and reports the last converged increment.
     void
-    compare_and_report(const FemOutcome &                    outcome,
+    compare_and_report(const Pipeline::FemOutcome &          outcome,
                        const Scene::ClosedForms &            closed_forms,
                        const Parameters::ScenarioParameters &scene,
                        const Output::ResultFolder &          folder,
@@ -110,17 +110,17 @@ namespace FloorBlock::App
 
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
     const json analytic     = write_closed_forms(folder, closed_forms);
-    const FemOutcome outcome = solve_scene(scene, folder);
-    std::cout << fem_summary_text(outcome);
+    const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
+    std::cout << Pipeline::fem_summary_text(outcome);
     json summary = {{"scene", scene.scene_name},
                     {"model", outcome.fem["model"]},
                     {"inputs", scene.expanded_text},
                     {"analytic", analytic},
                     {"fem", outcome.fem}};
     if (scene.solver.estimate_error_by_refined_solve && outcome.converged)
-      summary["fem_error_estimate"] = refined_solve_error(
+      summary["fem_error_estimate"] = Pipeline::refined_solve_error(
         outcome,
-        solve_scene(refined_scene(scene),
+        Pipeline::solve_scene(Pipeline::refined_scene(scene),
                     Output::ResultFolder(folder.path_of("refined"))));
     if (!outcome.result.increments.empty())
       {

@@ -1,5 +1,5 @@
 #include <app/command_options.h>
-#include <app/fem_pipeline.h>
+#include <pipeline/fem_pipeline.h>
 
 #include <iostream>
 
@@ -11,8 +11,8 @@ namespace FloorBlock::App
     const auto scene = read_scene(options);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
-    const FemOutcome outcome = solve_scene(scene, folder);
-    std::cout << fem_summary_text(outcome) << "wrote "
+    const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
+    std::cout << Pipeline::fem_summary_text(outcome) << "wrote "
               << folder.path_of("fem.json") << ", "
               << folder.path_of("joints.csv") << std::endl;
     return outcome.converged ? exit_code::success : exit_code::failure;

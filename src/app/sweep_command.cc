@@ -1,5 +1,5 @@
 #include <app/command_options.h>
-#include <app/fem_sweep.h>
+#include <pipeline/fem_sweep.h>
 #include <common/input_error.h>
 #include <common/units.h>
 #include <output/gnuplot.h>
@@ -37,7 +37,7 @@ namespace FloorBlock::App
       const Output::ResultFolder folder(output_directory(options, scene));
       folder.write_inputs(scene);
       const unsigned int remaining =
-        run_fem_sweep(points, folder, options.case_limit);
+        Pipeline::run_fem_sweep(points, folder, options.case_limit);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << points.size() - remaining << " of " << points.size()
                   << " FEM cases finished; results in "

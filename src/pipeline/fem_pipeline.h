@@ -18,7 +18,7 @@ namespace FloorBlock::Contact
   class ContactSolver;
 } // namespace FloorBlock::Contact
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /** What meshing and solving a scene produced. */
   struct FemOutcome
@@ -85,4 +85,4 @@ namespace FloorBlock::App
   /** @brief Terminal summary: one line per joint, the state, and times. */
   std::string
   fem_summary_text(const FemOutcome &outcome);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

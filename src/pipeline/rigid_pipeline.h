@@ -1,8 +1,8 @@
 #pragma once
 
-#include <app/fem_pipeline.h>
+#include <pipeline/fem_pipeline.h>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /**
    * @brief solve_scene() for a scene with Model/Blocks = rigid: solves the
@@ -20,4 +20,4 @@ namespace FloorBlock::App
   FemOutcome
   solve_rigid_scene(const Parameters::ScenarioParameters &scene,
                     const Output::ResultFolder &          folder);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

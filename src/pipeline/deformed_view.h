@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /**
    * @brief deformed.png: the blocks displaced by a magnified copy of the
@@ -15,4 +15,4 @@ namespace FloorBlock::App
   void
   write_deformed_view(const Contact::ContactSolver &solver,
                       const std::string            &png_path);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

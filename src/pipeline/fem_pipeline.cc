@@ -1,6 +1,6 @@
-#include <app/fem_pipeline.h>
-#include <app/deformed_view.h>
-#include <app/rigid_pipeline.h>
+#include <pipeline/fem_pipeline.h>
+#include <pipeline/deformed_view.h>
+#include <pipeline/rigid_pipeline.h>
 #include <common/units.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
@@ -17,7 +17,7 @@
 #include <algorithm>
 #include <filesystem>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   using nlohmann::json;
 
@@ -225,4 +225,4 @@ namespace FloorBlock::App
               outcome.fem["joint_overlap"]["text"].get<std::string>() + "\n";
     return text;
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -1,11 +1,11 @@
-#include <app/rigid_pipeline.h>
+#include <pipeline/rigid_pipeline.h>
 #include <rigid/contact_adapter.h>
 #include <rigid/model.h>
 #include <scene/rigid_inputs.h>
 
 #include <string>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   using nlohmann::json;
 
@@ -80,4 +80,4 @@ namespace FloorBlock::App
     folder.write("joints.csv", Output::joints_csv(outcome.result, context));
     return outcome;
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

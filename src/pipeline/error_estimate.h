@@ -1,10 +1,10 @@
 #pragma once
 
-#include <app/fem_pipeline.h>
+#include <pipeline/fem_pipeline.h>
 
 #include <nlohmann/json.hpp>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /**
    * @brief The discretisation error of each FEM figure, estimated as the
@@ -23,4 +23,4 @@ namespace FloorBlock::App
    */
   Parameters::ScenarioParameters
   refined_scene(Parameters::ScenarioParameters scene);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

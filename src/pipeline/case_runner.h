@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /** One case of a sweep: a stable id (its file name) and how to compute it. */
   struct SweepCase
@@ -45,4 +45,4 @@ namespace FloorBlock::App
             const Output::CaseStore &     store,
             const MPI_Comm                communicator,
             std::ostream &                progress);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

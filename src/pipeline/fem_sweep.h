@@ -5,7 +5,7 @@
 
 #include <vector>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /**
    * @brief Runs the contact FEM for every figure point without a finished
@@ -25,4 +25,4 @@ namespace FloorBlock::App
   run_fem_sweep(const std::vector<Scene::FigurePoint> &points,
                 const Output::ResultFolder &           folder,
                 const unsigned int                     limit);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -1,4 +1,4 @@
-#include <app/case_runner.h>
+#include <pipeline/case_runner.h>
 #include <common/interrupt.h>
 
 #include <deal.II/base/mpi.h>
@@ -8,7 +8,7 @@
 
 #include <ostream>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   SweepProgress
   run_cases(const std::vector<SweepCase> &cases,
@@ -53,4 +53,4 @@ namespace FloorBlock::App
     result.wall_time = timer.wall_time();
     return result;
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -1,5 +1,5 @@
-#include <app/convergence_ladder.h>
-#include <app/fem_pipeline.h>
+#include <pipeline/convergence_ladder.h>
+#include <pipeline/fem_pipeline.h>
 #include <common/atomic_file.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
@@ -19,7 +19,7 @@
 #include <iostream>
 #include <sstream>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   namespace
   {
@@ -418,4 +418,4 @@ namespace FloorBlock::App
                                      coarsen_fraction, folder, after_level);
       }
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   /** How the levels of a ladder are refined. */
   enum class RefinementMode
@@ -69,4 +69,4 @@ namespace FloorBlock::App
              const double                            coarsen_fraction,
              const Output::ResultFolder             &folder,
              const LevelCallback                    &after_level);
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -1,7 +1,7 @@
-#include <app/deformed_view.h>
+#include <pipeline/deformed_view.h>
 #include <output/deformed_picture.h>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   namespace
   {
@@ -40,4 +40,4 @@ namespace FloorBlock::App
                                    0.,
                                    "joint node states");
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

@@ -1,9 +1,9 @@
-#include <app/convergence_ladder.h>
-#include <app/error_estimate.h>
+#include <pipeline/convergence_ladder.h>
+#include <pipeline/error_estimate.h>
 
 #include <cmath>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   using nlohmann::json;
 
@@ -65,4 +65,4 @@ namespace FloorBlock::App
             {"refined_status", fine.fem["status"]},
             {"joints", joints}};
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline

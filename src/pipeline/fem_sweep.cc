@@ -1,6 +1,6 @@
-#include <app/case_runner.h>
-#include <app/fem_pipeline.h>
-#include <app/fem_sweep.h>
+#include <pipeline/case_runner.h>
+#include <pipeline/fem_pipeline.h>
+#include <pipeline/fem_sweep.h>
 #include <common/units.h>
 #include <output/fem_sweep_report.h>
 #include <output/gnuplot.h>
@@ -14,7 +14,7 @@
 
 #include <unistd.h>
 
-namespace FloorBlock::App
+namespace FloorBlock::Pipeline
 {
   using nlohmann::json;
 
@@ -87,4 +87,4 @@ namespace FloorBlock::App
       }
     return points.size() - records.size();
   }
-} // namespace FloorBlock::App
+} // namespace FloorBlock::Pipeline
