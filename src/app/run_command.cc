@@ -2,9 +2,10 @@
 #include <pipeline/error_estimate.h>
 #include <pipeline/fem_pipeline.h>
 #include <compare/joint_comparison.h>
-#include <output/figure_summary.h>
 #include <output/analytic_report.h>
 #include <output/comparison_report.h>
+#include <output/fem_report.h>
+#include <output/figure_summary.h>
 #include <output/gnuplot.h>
 #include <output/report_markdown.h>
 #include <output/result_folder.h>
@@ -95,7 +96,9 @@ namespace FloorBlock::App
       const auto lines = Output::verdicts(final_joints.back());
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
-      folder.write("report.md", Output::report_markdown(scene, summary, lines));
+      folder.write("report.md",
+                   Output::report_markdown(scene, outcome.result,
+                                           outcome.report, summary, lines));
     }
   } // namespace
 
@@ -113,10 +116,10 @@ namespace FloorBlock::App
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
     std::cout << Pipeline::fem_summary_text(outcome);
     json summary = {{"scene", scene.scene_name},
-                    {"model", outcome.fem["model"]},
+                    {"model", outcome.report.model},
                     {"inputs", scene.expanded_text},
                     {"analytic", analytic},
-                    {"fem", outcome.fem}};
+                    {"fem", Output::fem_json(outcome.result, outcome.report)}};
     if (scene.solver.estimate_error_by_refined_solve && outcome.converged)
       summary["fem_error_estimate"] = Pipeline::refined_solve_error(
         outcome,
@@ -125,7 +128,7 @@ namespace FloorBlock::App
     if (!outcome.result.increments.empty())
       {
         summary["face_joint_figures"] = Output::face_joint_figures(
-          outcome.fem,
+          outcome.result,
           summary.contains("fem_error_estimate") ?
             summary["fem_error_estimate"] :
             json(),
@@ -137,8 +140,8 @@ namespace FloorBlock::App
       }
 
     // Written last: its presence marks a finished run.
-    summary["status"]      = outcome.fem["status"];
-    summary["status_text"] = outcome.fem["status_text"];
+    summary["status"]      = outcome.report.status;
+    summary["status_text"] = outcome.report.status_text;
     summary["wall_time_s"] = timer.wall_time();
     folder.write_summary(summary);
     if (outcome.result.increments.empty())

@@ -13,65 +13,79 @@ namespace FloorBlock::Output
 
   namespace
   {
-    std::string
-    state_summary(const Contact::StateCounts &counts)
+    json
+    balance_json(const ForceBalanceSummary &balance)
     {
-      if (counts.n_closed() == 0)
-        return "open";
-      if (counts.n_slip == 0)
-        return "stick";
-      return counts.n_stick == 0 ? "slip" : "stick-slip";
+      return {{"force_balance_relative_error", balance.worst_relative_error},
+              {"force_balance_absolute_error_N_per_m",
+               balance.worst_absolute_error},
+              {"force_balance_status", balance.status},
+              {"force_balance_status_text", balance.status_text}};
     }
-
-    /** |applied load + support reactions| (N/m): the relative numerator. */
-    double
-    absolute_imbalance(const Contact::ForceBalance &balance)
-    {
-      return (balance.applied_load + balance.support_reaction).norm();
-    }
-
-    /** Worst force balance over the increments that carry load. */
-    struct BalanceSummary
-    {
-      double       worst_relative = 0.;
-      double       worst_absolute = 0.; ///< N/m, over every increment
-      unsigned int n_unloaded     = 0;
-      double       largest_round_off_force = 0.; ///< N/m
-    };
 
     json
-    balance_json(const BalanceSummary &summary, const std::size_t n_increments)
+    failure_json(const SolveFailureRecord &failure)
     {
-      std::string status = "ok";
-      std::string text   = fmt::format(
-        "worst relative error over the {} increments that carry load",
-        n_increments - summary.n_unloaded);
-      if (n_increments == 0)
-        {
-          status = "no increment";
-          text   = "no increment converged: nothing to balance";
-        }
-      else if (summary.n_unloaded == n_increments)
-        {
-          status = "no load";
-          text   = fmt::format(
-            "no increment carries load (the applied load, the support "
-            "reactions and every joint force stay below the round-off of the "
-            "elastic forces, at most {:.1e} N/m): a relative error of a zero "
-            "load is undefined and reported as 0; the absolute error is the "
-            "round-off",
-            summary.largest_round_off_force);
-        }
-      else if (summary.n_unloaded > 0)
-        text += fmt::format("; {} increments carry no load and are left out "
-                            "(their relative error is reported as 0)",
-                            summary.n_unloaded);
-      return {{"force_balance_relative_error", summary.worst_relative},
-              {"force_balance_absolute_error_N_per_m", summary.worst_absolute},
-              {"force_balance_status", status},
-              {"force_balance_status_text", text}};
+      return {
+        {"cutbacks_before_failure", failure.cutbacks_before_failure},
+        {"n_failed_attempts", failure.failed_attempts.size()},
+        {"failed_attempts", failure.failed_attempts},
+        {"failed_newton_iterations", failure.n_failed_newton_iterations},
+        {"counted",
+         "n_increments, newton_iterations and increments cover every "
+         "converged increment; cutbacks adds cutbacks_before_failure, the "
+         "cutbacks of the increment that failed; failed_newton_iterations, "
+         "linear_solves, lu_factorizations and wall_time_s include the "
+         "failed attempts"}};
+    }
+
+    json
+    overlap_json(const OverlapCheck &overlap)
+    {
+      return {{"largest_overlap_m", overlap.largest_overlap},
+              {"limit_m", overlap.limit},
+              {"status", overlap.large ? "large" : "ok"},
+              {"text", overlap.text}};
+    }
+
+    /** What the rigid model is, and what it does not produce. */
+    void
+    describe_rigid_model(const RigidModelNote &rigid, json &fem)
+    {
+      fem["rigid_status"] = rigid.rigid_status;
+      fem["dofs"] = "3 per block: centroid translation x, y and rotation";
+      fem["points_per_joint"] = rigid.points_per_joint;
+      fem["tractions"] =
+        "joint springs on rigid blocks: t_n = kn x overlap at each "
+        "integration point (the Winkler reading of Eq. 6.51)";
+      fem["force_balance_definition"] =
+        "largest force or moment (over L) imbalance of a single block, from "
+        "the joint resultants and the loads, over the larger of the total "
+        "load and the largest joint resultant";
+      fem["n_contact_pairs"] = nullptr;
+      fem["mesh"]            = nullptr;
+      fem["absent"] = {
+        {"mesh", "rigid blocks need no mesh"},
+        {"vtu", "no field to write: the blocks move rigidly"},
+        {"n_contact_pairs", "joints are integrated at points, not paired "
+                            "nodes"}};
+      if (rigid.corner_rounding_radius > 0.)
+        fem["geometry_note"] =
+          "Geometry/Corner rounding radius = " +
+          std::to_string(rigid.corner_rounding_radius) +
+          " m is ignored: the rigid blocks have sharp corners";
     }
   } // namespace
+
+  std::string
+  state_summary(const Contact::StateCounts &counts)
+  {
+    if (counts.n_closed() == 0)
+      return "open";
+    if (counts.n_slip == 0)
+      return "stick";
+    return counts.n_stick == 0 ? "slip" : "stick-slip";
+  }
 
   std::string
   no_load_text(const Compare::LoadCheck &check)
@@ -86,19 +100,16 @@ namespace FloorBlock::Output
   }
 
   std::string
-  force_balance_text(const json &fem)
+  force_balance_text(const ForceBalanceSummary &balance)
   {
-    const std::string status = fem["force_balance_status"];
-    const double      absolute =
-      fem["force_balance_absolute_error_N_per_m"].get<double>();
-    if (status == "no load")
+    if (balance.status == "no load")
       return fmt::format("no load (force balance {:.1e} N/m, round-off)",
-                         absolute);
-    if (status != "ok")
-      return "force balance: " + status;
+                         balance.worst_absolute_error);
+    if (balance.status != "ok")
+      return "force balance: " + balance.status;
     return fmt::format("force balance error {:.1e} ({:.1e} N/m)",
-                       fem["force_balance_relative_error"].get<double>(),
-                       absolute);
+                       balance.worst_relative_error,
+                       balance.worst_absolute_error);
   }
 
   json
@@ -128,17 +139,18 @@ namespace FloorBlock::Output
 
   json
   joint_json(const Contact::JointReport &joint,
-             const FemReportContext &    context)
+             const unsigned int          n_blocks,
+             const double                support_width)
   {
     const auto name = Compare::parse_joint_name(joint.name);
     return {{"name", joint.name},
             {"kind", name.kind},
-            {"blocks", joint_bodies(name.kind, name.number, context.n_blocks)},
+            {"blocks", joint_bodies(name.kind, name.number, n_blocks)},
             {"normal_force_N_per_m", joint.normal_force},
-            {"normal_force_N_over_b", joint.normal_force * context.support_width},
+            {"normal_force_N_over_b", joint.normal_force * support_width},
             {"shear_force_N_per_m", joint.shear_force},
             {"contact_length_m", joint.closed_length},
-            {"contact_area_m2", joint.closed_length * context.support_width},
+            {"contact_area_m2", joint.closed_length * support_width},
             {"sigma_max_Pa", joint.peak_normal_stress},
             {"sigma_max_position_m",
              {joint.peak_position[0], joint.peak_position[1]}},
@@ -152,27 +164,13 @@ namespace FloorBlock::Output
   }
 
   json
-  fem_json(const Contact::SolveResult &result,
-           const FemReportContext &    context)
+  fem_json(const Contact::SolveResult &result, const FemReport &report)
   {
-    json           increments = json::array();
-    unsigned int   n_newton   = 0;
-    unsigned int   n_cutbacks = context.cutbacks_before_failure;
-    BalanceSummary balance;
-    for (const auto &increment : result.increments)
+    json increments = json::array();
+    for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
-        n_newton += increment.n_newton_iterations;
-        n_cutbacks += increment.n_cutbacks;
-        const Compare::LoadCheck load =
-          Compare::check_load(increment, context.youngs_modulus);
-        const double relative =
-          load.carries_load() ? increment.balance.relative_imbalance : 0.;
-        const double absolute = absolute_imbalance(increment.balance);
-        balance.worst_relative = std::max(balance.worst_relative, relative);
-        balance.worst_absolute = std::max(balance.worst_absolute, absolute);
-        balance.n_unloaded += load.carries_load() ? 0 : 1;
-        balance.largest_round_off_force =
-          std::max(balance.largest_round_off_force, load.round_off_force);
+        const auto &increment = result.increments[k];
+        const auto &balance   = report.increment_balances[k];
         increments.push_back(
           {{"stage", stage_name(increment.stage)},
            {"stage_factor", increment.stage_factor},
@@ -184,9 +182,9 @@ namespace FloorBlock::Output
            {"n_stick", increment.counts.n_stick},
            {"n_slip", increment.counts.n_slip},
            {"n_open", increment.counts.n_open},
-           {"force_balance_relative_error", relative},
-           {"force_balance_absolute_error_N_per_m", absolute},
-           {"force_balance_status", load.carries_load() ? "ok" : "no load"},
+           {"force_balance_relative_error", balance.relative_error},
+           {"force_balance_absolute_error_N_per_m", balance.absolute_error},
+           {"force_balance_status", balance.carries_load ? "ok" : "no load"},
            {"wall_time_s", increment.wall_time}});
       }
 
@@ -196,24 +194,25 @@ namespace FloorBlock::Output
       {
         const auto &last = result.increments.back();
         for (const auto &joint : last.joints)
-          joints.push_back(joint_json(joint, context));
+          joints.push_back(
+            joint_json(joint, report.n_blocks, report.support_width));
         for (const auto &[material, motion] : last.motions)
           blocks[std::to_string(material)] = {
             {"translation_m", {motion.translation[0], motion.translation[1]}},
             {"rotation_rad", motion.rotation}};
       }
 
-    json fem = {{"status", context.status},
-            {"status_text", context.status_text},
+    json fem = {{"status", report.status},
+            {"status_text", report.status_text},
             {"numbering", numbering_note},
             {"forces_per", "*_N_per_m per metre of face; *_N_over_b and "
                            "contact_area_m2 over the support width b"},
-            {"b_m", context.support_width},
+            {"b_m", report.support_width},
             {"n_dofs", result.n_dofs},
             {"n_contact_pairs", result.n_contact_pairs},
             {"n_increments", result.increments.size()},
-            {"newton_iterations", n_newton},
-            {"cutbacks", n_cutbacks},
+            {"newton_iterations", report.n_newton_iterations},
+            {"cutbacks", report.n_cutbacks},
             {"linear_solves", result.n_linear_solves},
             {"lu_factorizations", result.n_factorizations},
             {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
@@ -221,21 +220,32 @@ namespace FloorBlock::Output
             {"wall_time_s", result.wall_times},
             {"joints", joints},
             {"body_motions_by_material_id", blocks},
-            {"increments", increments}};
-    fem.update(balance_json(balance, result.increments.size()));
+            {"increments", increments},
+            {"model", report.model},
+            {"model_choice", report.model_choice}};
+    fem.update(balance_json(report.force_balance));
+    if (report.failure)
+      fem["failure"] = failure_json(*report.failure);
+    if (report.joint_overlap)
+      fem["joint_overlap"] = overlap_json(*report.joint_overlap);
+    if (report.mesh)
+      fem["mesh"] = {{"n_cells", report.mesh->n_cells},
+                     {"n_nodes", report.mesh->n_nodes},
+                     {"wall_time_s", report.mesh->wall_time}};
+    if (report.rigid)
+      describe_rigid_model(*report.rigid, fem);
     return fem;
   }
 
   std::string
-  joints_csv(const Contact::SolveResult &result,
-             const FemReportContext &    context)
+  joints_csv(const Contact::SolveResult &result, const double support_width)
   {
     std::string csv = fmt::format(
       "# {}\n# Forces per metre of face; areas over b = {} m.\n"
       "increment,stage,stage_factor,joint,kind,normal_force_N_per_m,"
       "shear_force_N_per_m,contact_length_m,contact_area_m2,sigma_max_Pa,"
       "sigma_max_averaged_Pa,sigma_mean_Pa,n_stick,n_slip,n_open\n",
-      numbering_note, context.support_width);
+      numbering_note, support_width);
     for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
         const auto &increment = result.increments[k];
@@ -246,7 +256,7 @@ namespace FloorBlock::Output
             k + 1, stage_name(increment.stage), increment.stage_factor,
             joint.name, Compare::parse_joint_name(joint.name).kind,
             joint.normal_force, joint.shear_force, joint.closed_length,
-            joint.closed_length * context.support_width,
+            joint.closed_length * support_width,
             joint.peak_normal_stress, joint.averaged_peak_normal_stress,
             joint.mean_normal_stress, joint.counts.n_stick,
             joint.counts.n_slip, joint.counts.n_open);

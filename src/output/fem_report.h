@@ -2,55 +2,123 @@
 
 #include <compare/load_check.h>
 #include <contact/results.h>
+#include <geometry/assembly_mesher.h>
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace FloorBlock::Output
 {
-  /** What the FEM report needs besides the solver's own results. */
-  struct FemReportContext
+  /** Force balance of one converged increment. */
+  struct IncrementBalance
   {
-    unsigned int n_blocks;
-    double       support_width; ///< b (m): areas and forces "over b"
-    std::string  status;        ///< "converged" or "not converged"
-    std::string  status_text;   ///< why, in words
-    /** E of the blocks (Pa): sets Compare::check_load's round-off force. */
-    double       youngs_modulus;
     /**
-     * Cutbacks of an increment that failed for good (not among the
-     * result's converged increments); 0 for a converged run.
+     * |applied load + support reactions| over the load; 0 for an increment
+     * that carries no load (Compare::check_load), whose ratio would divide
+     * round-off by round-off.
      */
-    unsigned int cutbacks_before_failure = 0;
+    double relative_error = 0.;
+    /** |applied load + support reactions| (N/m). */
+    double absolute_error = 0.;
+    bool   carries_load   = true;
+  };
+
+  /** The worst force balance over a solve's converged increments. */
+  struct ForceBalanceSummary
+  {
+    /** Worst relative error over the increments that carry load. */
+    double      worst_relative_error = 0.;
+    /** Worst absolute error over every increment (N/m). */
+    double      worst_absolute_error = 0.;
+    std::string status;      ///< "ok", "no load" or "no increment"
+    std::string status_text; ///< what the worst error covers, in words
+  };
+
+  /** The work of a solve that failed after its cutbacks. */
+  struct SolveFailureRecord
+  {
+    /** Cutbacks of the increment that failed for good. */
+    unsigned int             cutbacks_before_failure = 0;
+    std::vector<std::string> failed_attempts;
+    /** Newton iterations of the failed attempts. */
+    unsigned int             n_failed_newton_iterations = 0;
+  };
+
+  /** Whether the joint sides overlap more than small strains allow. */
+  struct OverlapCheck
+  {
+    double      largest_overlap = 0.; ///< m, over the last increment's joints
+    double      limit           = 0.; ///< m, 5 % of the smaller block side
+    bool        large           = false;
+    std::string text;                 ///< the finding in words
+  };
+
+  /** What the rigid-block model is (Model/Blocks = rigid). */
+  struct RigidModelNote
+  {
+    std::string  rigid_status; ///< RigidBlocks::to_string(status)
+    unsigned int points_per_joint = 0;
+    /** Geometry/Corner rounding radius (m), ignored by rigid blocks. */
+    double       corner_rounding_radius = 0.;
+  };
+
+  /**
+   * The FEM report of one solve, besides the solver's own
+   * Contact::SolveResult: model, status, totals over the increments, force
+   * balance and the model's particulars. fem_json() writes it as fem.json.
+   */
+  struct FemReport
+  {
+    std::string  model;        ///< "elastic FEM" or "rigid blocks"
+    std::string  model_choice; ///< why this model (Model/Blocks = auto)
+    std::string  status;       ///< "converged" or "not converged"
+    std::string  status_text;  ///< why, in words
+    unsigned int n_blocks      = 0;
+    double       support_width = 0.; ///< b (m): areas and forces "over b"
+    /** Newton iterations of the converged increments. */
+    unsigned int n_newton_iterations = 0;
+    /** Cutbacks, including those of an increment that failed for good. */
+    unsigned int n_cutbacks = 0;
+    /** One per converged increment of the result. */
+    std::vector<IncrementBalance>     increment_balances;
+    ForceBalanceSummary               force_balance;
+    std::optional<SolveFailureRecord> failure;       ///< failed solves only
+    std::optional<OverlapCheck>       joint_overlap; ///< elastic FEM only
+    std::optional<Geometry::MeshStatistics> mesh;    ///< elastic FEM only
+    std::optional<RigidModelNote>     rigid;         ///< rigid blocks only
+
+    bool
+    converged() const
+    {
+      return status == "converged";
+    }
   };
 
   /**
    * @brief fem.json: the final joint table (chapter numbering, units in the
-   * keys), per-increment statistics, DoFs, wall time per stage and the
-   * force-balance error. A run that stopped early reports its last
-   * converged increment under the given status; its "cutbacks" include
-   * context.cutbacks_before_failure.
+   * keys), per-increment statistics, DoFs, wall time per stage, the
+   * force-balance error and the model's particulars. A run that stopped
+   * early reports its last converged increment under the report's status.
    *
-   * The relative force-balance error of an increment that carries no load
-   * (Compare::check_load) divides round-off by round-off: such increments
-   * report 0 with force_balance_status "no load", and every increment
-   * reports its absolute imbalance |applied load + support reactions| in
-   * N/m.
+   * Every increment reports its absolute imbalance |applied load + support
+   * reactions| in N/m; one that carries no load reports a relative error of
+   * 0 with force_balance_status "no load".
    */
   nlohmann::json
-  fem_json(const Contact::SolveResult &result,
-           const FemReportContext &    context);
+  fem_json(const Contact::SolveResult &result, const FemReport &report);
 
   /** @brief One joint as the JSON object of fem.json's "joints" list. */
   nlohmann::json
   joint_json(const Contact::JointReport &joint,
-             const FemReportContext &    context);
+             const unsigned int          n_blocks,
+             const double                support_width);
 
   /** @brief joints.csv: one row per joint per converged increment. */
   std::string
-  joints_csv(const Contact::SolveResult &result,
-             const FemReportContext &    context);
+  joints_csv(const Contact::SolveResult &result, const double support_width);
 
   /**
    * @brief The two bodies a joint separates, chapter numbering: [j, j+1] or
@@ -70,12 +138,16 @@ namespace FloorBlock::Output
   no_load_text(const Compare::LoadCheck &check);
 
   /**
-   * @brief fem.json's force balance in words: "force balance error 1.2e-13
+   * @brief The force balance in words: "force balance error 1.2e-13
    * (3.4e-08 N/m)", "no load (force balance 2.1e-07 N/m, round-off)" or
    * "force balance: no increment".
    */
   std::string
-  force_balance_text(const nlohmann::json &fem);
+  force_balance_text(const ForceBalanceSummary &balance);
+
+  /** @brief A joint's state: "open", "stick", "slip" or "stick-slip". */
+  std::string
+  state_summary(const Contact::StateCounts &counts);
 
   /** @brief "stage 3 (uplift)" style name of a loading stage. */
   std::string

@@ -18,12 +18,14 @@ namespace FloorBlock::Output
     constexpr double kN  = Units::newtons_per_kilonewton;
     constexpr double MPa = Units::pascals_per_megapascal;
 
-    json
-    face_joint(const json &fem, const unsigned int n_blocks)
+    /** The face joint of the last converged increment, if any. */
+    const Contact::JointReport *
+    face_joint(const Contact::SolveResult &result, const unsigned int n_blocks)
     {
-      for (const auto &joint : fem["joints"])
-        if (joint["name"] == "vertical " + std::to_string(n_blocks))
-          return joint;
+      if (!result.increments.empty())
+        for (const auto &joint : result.increments.back().joints)
+          if (joint.name == "vertical " + std::to_string(n_blocks))
+            return &joint;
       return nullptr;
     }
 
@@ -50,9 +52,15 @@ namespace FloorBlock::Output
   } // namespace
 
   json
-  fem_case_record(const Scene::FigurePoint &point, const json &fem)
+  fem_case_record(const Scene::FigurePoint   &point,
+                  const Contact::SolveResult &result,
+                  const FemReport            &report)
   {
-    const json face = face_joint(fem, point.closed_forms.chain.n_blocks());
+    const Contact::JointReport *face =
+      face_joint(result, point.closed_forms.chain.n_blocks());
+    const auto of_face = [face](const double Contact::JointReport::*member) {
+      return face ? json(face->*member) : json(nullptr);
+    };
     json closed = json::object();
     for (const auto &entry : point.closed_forms.mechanisms)
       {
@@ -77,18 +85,16 @@ namespace FloorBlock::Output
       {"support_load_t",
        as_written(point.support_load / Units::tonnes_force_to_newtons(1.))},
       {"fem",
-       {{"status", fem["status"]},
-        {"status_text", fem["status_text"]},
-        {"model", fem.value("model", "elastic FEM")},
-        {"Q_face_N_per_m",
-         face.is_null() ? json(nullptr) : face["normal_force_N_per_m"]},
-        {"contact_length_m",
-         face.is_null() ? json(nullptr) : face["contact_length_m"]},
-        {"sigma_max_Pa", face.is_null() ? json(nullptr) : face["sigma_max_Pa"]},
+       {{"status", report.status},
+        {"status_text", report.status_text},
+        {"model", report.model},
+        {"Q_face_N_per_m", of_face(&Contact::JointReport::normal_force)},
+        {"contact_length_m", of_face(&Contact::JointReport::closed_length)},
+        {"sigma_max_Pa", of_face(&Contact::JointReport::peak_normal_stress)},
         {"sigma_max_averaged_Pa",
-         face.is_null() ? json(nullptr) : face["sigma_max_averaged_Pa"]},
-        {"n_dofs", fem["n_dofs"]},
-        {"wall_time_s", fem["wall_time_s"]}}},
+         of_face(&Contact::JointReport::averaged_peak_normal_stress)},
+        {"n_dofs", result.n_dofs},
+        {"wall_time_s", result.wall_times}}},
       {"closed_forms", closed}};
   }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <output/fem_report.h>
 #include <scene/chapter_figures.h>
 
 #include <nlohmann/json.hpp>
@@ -15,7 +16,9 @@ namespace FloorBlock::Output
    * form's Q_n and sigma_max (Eq. 6.53, geometric y) for the same inputs.
    */
   nlohmann::json
-  fem_case_record(const Scene::FigurePoint &point, const nlohmann::json &fem);
+  fem_case_record(const Scene::FigurePoint   &point,
+                  const Contact::SolveResult &result,
+                  const FemReport            &report);
 
   /** @brief One CSV row per case of @p figure; units in the column names. */
   std::string

@@ -14,6 +14,7 @@ namespace FloorBlock::Output
     struct Figure
     {
       const char *key;   ///< field in fem.json and in the error estimate
+      double Contact::JointReport::*member; ///< the figure, SI
       const char *name;  ///< shown to the user
       const char *unit;  ///< SI unit of the stored value
       double      scale; ///< SI -> shown unit
@@ -21,39 +22,42 @@ namespace FloorBlock::Output
     };
 
     constexpr std::array<Figure, 4> figures = {
-      {{"normal_force_N_per_m", "Q", "N/m", 1. / Units::newtons_per_kilonewton,
-        "kN/m"},
-       {"contact_length_m", "contact length", "m", 1e3, "mm"},
-       {"sigma_max_Pa", "sigma_max", "Pa", 1. / Units::pascals_per_megapascal,
-        "MPa"},
-       {"sigma_max_averaged_Pa", "sigma_max averaged", "Pa",
-        1. / Units::pascals_per_megapascal, "MPa"}}};
+      {{"normal_force_N_per_m", &Contact::JointReport::normal_force, "Q",
+        "N/m", 1. / Units::newtons_per_kilonewton, "kN/m"},
+       {"contact_length_m", &Contact::JointReport::closed_length,
+        "contact length", "m", 1e3, "mm"},
+       {"sigma_max_Pa", &Contact::JointReport::peak_normal_stress, "sigma_max",
+        "Pa", 1. / Units::pascals_per_megapascal, "MPa"},
+       {"sigma_max_averaged_Pa",
+        &Contact::JointReport::averaged_peak_normal_stress,
+        "sigma_max averaged", "Pa", 1. / Units::pascals_per_megapascal,
+        "MPa"}}};
 
     double
-    solve_time(const json &fem)
+    solve_time(const Contact::SolveResult &result)
     {
       double total = 0.;
-      if (fem.contains("wall_time_s") && fem["wall_time_s"].is_object())
-        for (const auto &[section, seconds] : fem["wall_time_s"].items())
-          total += seconds.get<double>();
+      for (const auto &[section, seconds] : result.wall_times)
+        total += seconds;
       return total;
     }
   } // namespace
 
   json
-  face_joint_figures(const json        &fem,
-                     const json        &error_estimate,
-                     const unsigned int n_blocks)
+  face_joint_figures(const Contact::SolveResult &solve,
+                     const json                 &error_estimate,
+                     const unsigned int          n_blocks)
   {
-    const std::string face = "vertical " + std::to_string(n_blocks);
-    json joint;
-    for (const auto &candidate : fem["joints"])
-      if (candidate["name"] == face)
-        joint = candidate;
+    const std::string           face  = "vertical " + std::to_string(n_blocks);
+    const Contact::JointReport *joint = nullptr;
+    if (!solve.increments.empty())
+      for (const auto &candidate : solve.increments.back().joints)
+        if (candidate.name == face)
+          joint = &candidate;
     const bool estimated = error_estimate.is_object() &&
                            error_estimate.value("status", "") == "available";
     json result = json::array();
-    if (joint.is_null())
+    if (joint == nullptr)
       return result;
     for (const Figure &figure : figures)
       {
@@ -67,7 +71,7 @@ namespace FloorBlock::Output
         result.push_back(
           {{"quantity", figure.name},
            {"field", figure.key},
-           {"value", joint[figure.key]},
+           {"value", joint->*figure.member},
            {"unit", figure.unit},
            {"relative_error", error},
            // A null error always comes with a status that says why.
@@ -75,7 +79,7 @@ namespace FloorBlock::Output
            {"error_method",
             estimated ? error_estimate["method"] :
                         json("none: no error estimate was made or it failed")},
-           {"wall_time_s", solve_time(fem)}});
+           {"wall_time_s", solve_time(solve)}});
       }
     return result;
   }

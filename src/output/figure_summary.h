@@ -1,5 +1,7 @@
 #pragma once
 
+#include <contact/results.h>
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -11,7 +13,8 @@ namespace FloorBlock::Output
    * discretisation error and the time it cost: what a user reads as
    * "sigma_max = 15.7 MPa +- 0.1 % in 4.2 s".
    *
-   * @param[in] fem fem.json content (joints, wall_time_s per section).
+   * @param[in] solve The solve: its last converged increment's joints and
+   *   its wall time per section.
    * @param[in] error_estimate summary.json's fem_error_estimate (may be
    *   null or "unavailable": the errors are then null with that status).
    * @param[in] n_blocks Face joint = "vertical n".
@@ -21,9 +24,9 @@ namespace FloorBlock::Output
    *   same for every figure of one solve (they come out together).
    */
   nlohmann::json
-  face_joint_figures(const nlohmann::json &fem,
-                     const nlohmann::json &error_estimate,
-                     const unsigned int    n_blocks);
+  face_joint_figures(const Contact::SolveResult &solve,
+                     const nlohmann::json       &error_estimate,
+                     const unsigned int          n_blocks);
 
   /** @brief One line per figure, for the terminal. */
   std::string

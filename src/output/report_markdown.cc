@@ -115,10 +115,11 @@ namespace FloorBlock::Output
 
   std::string
   report_markdown(const Parameters::ScenarioParameters &scene,
-                  const json &                          summary,
-                  const std::vector<std::string> &      verdicts)
+                  const Contact::SolveResult           &result,
+                  const FemReport                      &report,
+                  const json                           &summary,
+                  const std::vector<std::string>       &verdicts)
   {
-    const auto &fem   = summary["fem"];
     const auto &final = summary["comparison"]["final"];
     std::string text  = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
@@ -138,17 +139,15 @@ namespace FloorBlock::Output
       scene.loading.support_load / Units::tonnes_force_to_newtons(1.),
       fmt::join(scene.loading.loaded_blocks_from_face, ","),
       scene.geometry.support_width, scene.loading.floor_lift,
-      fem["status"].get<std::string>() == "converged" ? "reached" : "not reached",
+      report.converged() ? "reached" : "not reached",
       scene.joints.law == Parameters::JointLaw::rigid ? "rigid" : "compliant",
-      fem.value("model", "elastic FEM"), fem.value("model_choice", ""),
-      fem["status"].get<std::string>(), fem["status_text"].get<std::string>(),
-      fem["n_dofs"].dump(), fem["n_increments"].dump(),
-      fem["newton_iterations"].dump(), fem["cutbacks"].dump(),
-      force_balance_text(fem));
+      report.model, report.model_choice, report.status, report.status_text,
+      result.n_dofs, result.increments.size(), report.n_newton_iterations,
+      report.n_cutbacks, force_balance_text(report.force_balance));
 
-    if (fem.value("model", "elastic FEM") != "elastic FEM")
+    if (report.model != "elastic FEM")
       text += "Columns and verdicts marked FEM hold the numbers of the " +
-              fem["model"].get<std::string>() + " model.\n\n";
+              report.model + " model.\n\n";
     text += "## Verdicts (face joint, final lift)\n\n";
     for (const auto &line : verdicts)
       text += "- " + line + "\n";
@@ -162,11 +161,10 @@ namespace FloorBlock::Output
             "## Discretisation error\n\n" +
             error_section(summary);
     text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
-    if (fem["mesh"].is_object())
-      text += fmt::format("| mesh | {:.3f} |\n",
-                          fem["mesh"]["wall_time_s"].get<double>());
-    for (const auto &[section, seconds] : fem["wall_time_s"].items())
-      text += fmt::format("| {} | {:.3f} |\n", section, seconds.get<double>());
+    if (report.mesh)
+      text += fmt::format("| mesh | {:.3f} |\n", report.mesh->wall_time);
+    for (const auto &[section, seconds] : result.wall_times)
+      text += fmt::format("| {} | {:.3f} |\n", section, seconds);
     return text;
   }
 } // namespace FloorBlock::Output

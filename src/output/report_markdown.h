@@ -1,5 +1,7 @@
 #pragma once
 
+#include <contact/results.h>
+#include <output/fem_report.h>
 #include <parameters/scenario_parameters.h>
 
 #include <nlohmann/json.hpp>
@@ -13,11 +15,14 @@ namespace FloorBlock::Output
    * @brief report.md: the scene, a table per joint (FEM against each closed
    * form, contact area and stresses against 6.51-6.53), the plots, one
    * verdict per quantity, the error estimate and the cost.
-   * @param[in] summary The summary.json content so far (analytic, fem,
-   * comparison, fem_error_estimate).
+   * @param[in] result, report The solve and its FEM report.
+   * @param[in] summary The summary.json content so far (comparison,
+   * fem_error_estimate).
    */
   std::string
   report_markdown(const Parameters::ScenarioParameters &scene,
-                  const nlohmann::json &                summary,
-                  const std::vector<std::string> &      verdicts);
+                  const Contact::SolveResult           &result,
+                  const FemReport                      &report,
+                  const nlohmann::json                 &summary,
+                  const std::vector<std::string>       &verdicts);
 } // namespace FloorBlock::Output

@@ -53,8 +53,8 @@ namespace FloorBlock::Pipeline
                    const unsigned int n_blocks,
                    LevelRecord      &record)
     {
-      record.status      = outcome.fem["status"].get<std::string>();
-      record.status_text = outcome.fem["status_text"].get<std::string>();
+      record.status      = outcome.report.status;
+      record.status_text = outcome.report.status_text;
       record.n_cells      = outcome.mesh.n_cells;
       record.n_increments = outcome.result.increments.size();
       if (record.n_dofs == 0) // no solver was inspected
@@ -62,11 +62,10 @@ namespace FloorBlock::Pipeline
           record.n_dofs          = outcome.result.n_dofs;
           record.n_contact_pairs = outcome.result.n_contact_pairs;
         }
-      record.newton_iterations =
-        outcome.fem["newton_iterations"].get<unsigned int>();
-      record.cutbacks = outcome.fem["cutbacks"].get<unsigned int>();
+      record.newton_iterations = outcome.report.n_newton_iterations;
+      record.cutbacks          = outcome.report.n_cutbacks;
       record.force_balance_error =
-        outcome.fem["force_balance_relative_error"].get<double>();
+        outcome.report.force_balance.worst_relative_error;
       record.stage_wall_times["mesh"] = outcome.mesh.wall_time;
       for (const auto &[section, seconds] : outcome.result.wall_times)
         record.stage_wall_times[section] = seconds;

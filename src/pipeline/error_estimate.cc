@@ -2,6 +2,8 @@
 #include <pipeline/error_estimate.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace FloorBlock::Pipeline
 {
@@ -24,7 +26,7 @@ namespace FloorBlock::Pipeline
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
   {
     const std::string method =
-      coarse.fem["model"] == "rigid blocks" ?
+      coarse.report.model == "rigid blocks" ?
         "difference to one solve with twice the points per joint" :
         "difference to a solve on the next uniform refinement level "
         "(all mesh sizes and the growth rate's excess over 1 halved)";
@@ -34,20 +36,30 @@ namespace FloorBlock::Pipeline
       return {{"method", method},
               {"status", "unavailable"},
               {"status_text", "the refined solve did not converge: " +
-                                fine.fem["status_text"].get<std::string>()}};
+                                fine.report.status_text}};
     json joints = json::object();
-    const auto &coarse_joints = coarse.fem["joints"];
-    const auto &fine_joints   = fine.fem["joints"];
+    const auto final_joints = [](const FemOutcome &outcome) {
+      return outcome.result.increments.empty() ?
+               std::vector<Contact::JointReport>() :
+               outcome.result.increments.back().joints;
+    };
+    const auto coarse_joints = final_joints(coarse);
+    const auto fine_joints   = final_joints(fine);
+    using Member = double Contact::JointReport::*;
+    const std::pair<const char *, Member> figures[] = {
+      {"normal_force_N_per_m", &Contact::JointReport::normal_force},
+      {"contact_length_m", &Contact::JointReport::closed_length},
+      {"sigma_max_Pa", &Contact::JointReport::peak_normal_stress},
+      {"sigma_max_averaged_Pa",
+       &Contact::JointReport::averaged_peak_normal_stress}};
     for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
          ++k)
       {
         json quantities = json::object();
-        for (const char *key :
-             {"normal_force_N_per_m", "contact_length_m", "sigma_max_Pa",
-              "sigma_max_averaged_Pa"})
+        for (const auto &[key, member] : figures)
           {
-            const double coarse_value = coarse_joints[k][key].get<double>();
-            const double fine_value   = fine_joints[k][key].get<double>();
+            const double coarse_value = coarse_joints[k].*member;
+            const double fine_value   = fine_joints[k].*member;
             const double difference   = std::abs(coarse_value - fine_value);
             quantities[key] = {
               {"value", coarse_value},
@@ -57,12 +69,12 @@ namespace FloorBlock::Pipeline
                fine_value != 0. ? json(difference / std::abs(fine_value)) :
                                   json(nullptr)}};
           }
-        joints[coarse_joints[k]["name"].get<std::string>()] = quantities;
+        joints[coarse_joints[k].name] = quantities;
       }
     return {{"method", method},
             {"status", "available"},
             {"refined_n_dofs", fine.result.n_dofs},
-            {"refined_status", fine.fem["status"]},
+            {"refined_status", fine.report.status},
             {"joints", joints}};
   }
 } // namespace FloorBlock::Pipeline

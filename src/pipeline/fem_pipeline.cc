@@ -1,5 +1,6 @@
 #include <pipeline/fem_pipeline.h>
 #include <pipeline/deformed_view.h>
+#include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
 #include <common/units.h>
 #include <contact/contact_solver.h>
@@ -16,11 +17,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 namespace FloorBlock::Pipeline
 {
-  using nlohmann::json;
-
   namespace
   {
     std::string
@@ -32,24 +32,6 @@ namespace FloorBlock::Pipeline
       return text;
     }
 
-    /** What fem.json says about the work of a failed solve. */
-    json
-    failure_json(const Contact::ContactSolveFailure &failure,
-                 const Parameters::SolverParameters &solver)
-    {
-      return {
-        {"cutbacks_before_failure", solver.max_cutbacks},
-        {"n_failed_attempts", failure.attempts.size()},
-        {"failed_attempts", failure.attempts},
-        {"failed_newton_iterations",
-         failure.partial_result.n_failed_newton_iterations},
-        {"counted",
-         "n_increments, newton_iterations and increments cover every "
-         "converged increment; cutbacks adds cutbacks_before_failure, the "
-         "cutbacks of the increment that failed; failed_newton_iterations, "
-         "linear_solves, lu_factorizations and wall_time_s include the "
-         "failed attempts"}};
-    }
     /**
      * Whether the joints overlap by more than small-strain contact allows:
      * 5 % of the smaller block side. The compliant law's overlap t_n / k_n
@@ -59,7 +41,7 @@ namespace FloorBlock::Pipeline
      * the loaded blocks sink 2.2 m into the bed and the solver still
      * converges, so that answer needs a warning.
      */
-    json
+    Output::OverlapCheck
     overlap_check(const Contact::SolveResult            &result,
                   const Parameters::ScenarioParameters  &scene)
     {
@@ -72,11 +54,10 @@ namespace FloorBlock::Pipeline
           0. :
           Contact::largest_overlap(result.increments.back().joints);
       const bool large = overlap > limit;
-      return {{"largest_overlap_m", overlap},
-              {"limit_m", limit},
-              {"status", large ? "large" : "ok"},
-              {"text",
-               large ?
+      return {overlap,
+              limit,
+              large,
+              large ?
                  fmt::format("the joint sides overlap by up to {:.3g} m, "
                              "more than 5 % of the smaller block side "
                              "({:.3g} m): Joints/Normal stiffness is too soft "
@@ -85,7 +66,7 @@ namespace FloorBlock::Pipeline
                              overlap, limit) :
                  fmt::format("largest overlap {:.3g} m, within 5 % of the "
                              "smaller block side",
-                             overlap)}};
+                             overlap)};
     }
   } // namespace
 
@@ -129,17 +110,13 @@ namespace FloorBlock::Pipeline
   {
     FemOutcome outcome;
     outcome.mesh = mesh;
-    Output::FemReportContext context{scene.geometry.n_blocks,
-                                     scene.geometry.support_width,
-                                     "converged",
-                                     "every loading increment converged",
-                                     scene.material.youngs_modulus()};
     Contact::ContactSolver solver(
       triangulation,
       Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
       Scene::contact_solver_settings(scene,
                                      write_vtu ? folder.path_of("vtu") : ""));
-    json failure_record;
+    std::string status_text = "every loading increment converged";
+    std::optional<Output::SolveFailureRecord> failure_record;
     try
       {
         outcome.result    = solver.run();
@@ -147,10 +124,10 @@ namespace FloorBlock::Pipeline
       }
     catch (const Contact::ContactSolveFailure &failure)
       {
-        context.status      = "not converged";
-        context.status_text = failure_text(failure);
-        context.cutbacks_before_failure = scene.solver.max_cutbacks;
-        failure_record = failure_json(failure, scene.solver);
+        status_text    = failure_text(failure);
+        failure_record = Output::SolveFailureRecord{
+          scene.solver.max_cutbacks, failure.attempts,
+          failure.partial_result.n_failed_newton_iterations};
         outcome.result = failure.partial_result;
       }
     if (extras.inspect)
@@ -158,19 +135,17 @@ namespace FloorBlock::Pipeline
     if (write_vtu)
       write_deformed_view(solver, folder.path_of("deformed.png"));
 
-    outcome.fem = Output::fem_json(outcome.result, context);
-    if (!outcome.converged)
-      {
-        outcome.fem["failure"] = failure_record;
-      }
-    outcome.fem["joint_overlap"] = overlap_check(outcome.result, scene);
-    outcome.fem["model"]        = "elastic FEM";
-    outcome.fem["model_choice"] = scene.model.choice_reason;
-    outcome.fem["mesh"] = {{"n_cells", outcome.mesh.n_cells},
-                           {"n_nodes", outcome.mesh.n_nodes},
-                           {"wall_time_s", outcome.mesh.wall_time}};
-    folder.write_json("fem.json", outcome.fem);
-    folder.write("joints.csv", Output::joints_csv(outcome.result, context));
+    outcome.report = make_fem_report(
+      outcome.result, scene, "elastic FEM", outcome.converged, status_text,
+      failure_record ? failure_record->cutbacks_before_failure : 0);
+    outcome.report.failure       = failure_record;
+    outcome.report.joint_overlap = overlap_check(outcome.result, scene);
+    outcome.report.mesh          = outcome.mesh;
+    folder.write_json("fem.json",
+                      Output::fem_json(outcome.result, outcome.report));
+    folder.write("joints.csv",
+                 Output::joints_csv(outcome.result,
+                                    scene.geometry.support_width));
     return outcome;
   }
 
@@ -179,50 +154,44 @@ namespace FloorBlock::Pipeline
   {
     constexpr double kN  = Units::newtons_per_kilonewton;
     constexpr double MPa = Units::pascals_per_megapascal;
-    const bool  meshed = outcome.fem["mesh"].is_object();
+    const Output::FemReport &report = outcome.report;
+    const bool               meshed = report.mesh.has_value();
     // A failed solve keeps only its last converged increment (fem.json
     // "failure"): say so instead of passing it off as the whole run.
     const std::string increments =
-      outcome.fem.contains("failure") ?
+      report.failure ?
         fmt::format("{} converged increment(s) kept with {} Newton "
                     "iterations (failed attempts not counted), {} cutbacks",
                     outcome.result.increments.size(),
-                    outcome.fem["newton_iterations"].get<unsigned int>(),
-                    outcome.fem["cutbacks"].get<unsigned int>()) :
+                    report.n_newton_iterations, report.n_cutbacks) :
         fmt::format("{} increments, {} Newton iterations, {} cutbacks",
                     outcome.result.increments.size(),
-                    outcome.fem["newton_iterations"].get<unsigned int>(),
-                    outcome.fem["cutbacks"].get<unsigned int>());
+                    report.n_newton_iterations, report.n_cutbacks);
     std::string text = fmt::format(
-      "{}: {} ({}), {}{} DoFs, {}, {}\n",
-      outcome.fem["model"].get<std::string>(),
-      outcome.fem["status"].get<std::string>(),
-      outcome.fem["status_text"].get<std::string>(),
+      "{}: {} ({}), {}{} DoFs, {}, {}\n", report.model, report.status,
+      report.status_text,
       meshed ? fmt::format("{} cells, ", outcome.mesh.n_cells) : "",
       outcome.result.n_dofs, increments,
-      Output::force_balance_text(outcome.fem));
+      Output::force_balance_text(report.force_balance));
     text += fmt::format("  {:<12} {:>12} {:>14} {:>12} {:>14} {:>10}\n",
                         "joint", "N (kN/m)", "contact (mm)",
                         "peak (MPa)", "averaged (MPa)", "state");
-    for (const auto &joint : outcome.fem["joints"])
-      text += fmt::format(
-        "  {:<12} {:>12.1f} {:>14.1f} {:>12.2f} {:>14.2f} {:>10}\n",
-        joint["name"].get<std::string>(),
-        joint["normal_force_N_per_m"].get<double>() / kN,
-        joint["contact_length_m"].get<double>() * 1e3,
-        joint["sigma_max_Pa"].get<double>() / MPa,
-        joint["sigma_max_averaged_Pa"].get<double>() / MPa,
-        joint["state"].get<std::string>());
+    if (!outcome.result.increments.empty())
+      for (const auto &joint : outcome.result.increments.back().joints)
+        text += fmt::format(
+          "  {:<12} {:>12.1f} {:>14.1f} {:>12.2f} {:>14.2f} {:>10}\n",
+          joint.name, joint.normal_force / kN, joint.closed_length * 1e3,
+          joint.peak_normal_stress / MPa,
+          joint.averaged_peak_normal_stress / MPa,
+          Output::state_summary(joint.counts));
     std::string times =
       meshed ? fmt::format("mesh {:.3f} s", outcome.mesh.wall_time) : "";
     for (const auto &[section, seconds] : outcome.result.wall_times)
       times += fmt::format("{}{} {:.3f} s", times.empty() ? "" : ", ",
                            section, seconds);
     text += "  " + times + "\n";
-    if (outcome.fem.contains("joint_overlap") &&
-        outcome.fem["joint_overlap"]["status"] == "large")
-      text += "  warning: " +
-              outcome.fem["joint_overlap"]["text"].get<std::string>() + "\n";
+    if (report.joint_overlap && report.joint_overlap->large)
+      text += "  warning: " + report.joint_overlap->text + "\n";
     return text;
   }
 } // namespace FloorBlock::Pipeline

@@ -8,8 +8,6 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <nlohmann/json.hpp>
-
 #include <functional>
 #include <vector>
 
@@ -26,7 +24,7 @@ namespace FloorBlock::Pipeline
     Geometry::MeshStatistics mesh;
     Contact::SolveResult     result; ///< converged increments only
     bool                     converged = false;
-    nlohmann::json           fem;    ///< fem.json content
+    Output::FemReport        report; ///< written as fem.json
   };
 
   /** Optional extras of solve_scene(), for refinement studies. */

@@ -50,7 +50,7 @@ namespace FloorBlock::Pipeline
       const FemOutcome outcome =
         solve_scene(point.scene, Output::ResultFolder(scratch.path.string()),
                     false);
-      return Output::fem_case_record(point, outcome.fem);
+      return Output::fem_case_record(point, outcome.result, outcome.report);
     }
   } // namespace
 
