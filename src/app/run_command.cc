@@ -14,6 +14,7 @@
 #include <deal.II/base/timer.h>
 
 #include <iostream>
+#include <optional>
 
 namespace FloorBlock::App
 {
@@ -81,6 +82,7 @@ namespace FloorBlock::App
                        const Scene::ClosedForms &            closed_forms,
                        const Parameters::ScenarioParameters &scene,
                        const Output::ResultFolder &          folder,
+                       const std::optional<Output::FemErrorEstimate> &estimate,
                        json &                                summary)
     {
       const auto &last         = outcome.result.increments.back();
@@ -98,7 +100,8 @@ namespace FloorBlock::App
         std::cout << "  " << line << "\n";
       folder.write("report.md",
                    Output::report_markdown(scene, outcome.result,
-                                           outcome.report, summary, lines));
+                                           outcome.report, estimate, summary,
+                                           lines));
     }
   } // namespace
 
@@ -120,23 +123,24 @@ namespace FloorBlock::App
                     {"inputs", scene.expanded_text},
                     {"analytic", analytic},
                     {"fem", Output::fem_json(outcome.result, outcome.report)}};
+    std::optional<Output::FemErrorEstimate> estimate;
     if (scene.solver.estimate_error_by_refined_solve && outcome.converged)
-      summary["fem_error_estimate"] = Pipeline::refined_solve_error(
-        outcome,
-        Pipeline::solve_scene(Pipeline::refined_scene(scene),
-                    Output::ResultFolder(folder.path_of("refined"))));
+      {
+        estimate = Pipeline::refined_solve_error(
+          outcome,
+          Pipeline::solve_scene(Pipeline::refined_scene(scene),
+                                Output::ResultFolder(folder.path_of("refined"))));
+        summary["fem_error_estimate"] = Output::fem_error_estimate_json(*estimate);
+      }
     if (!outcome.result.increments.empty())
       {
         summary["face_joint_figures"] = Output::face_joint_figures(
-          outcome.result,
-          summary.contains("fem_error_estimate") ?
-            summary["fem_error_estimate"] :
-            json(),
-          scene.geometry.n_blocks);
+          outcome.result, estimate, scene.geometry.n_blocks);
         std::cout << "face joint: each figure with its estimated error and "
                      "the time of the solve that gave it\n"
                   << Output::figure_lines(summary["face_joint_figures"]);
-        compare_and_report(outcome, closed_forms, scene, folder, summary);
+        compare_and_report(outcome, closed_forms, scene, folder, estimate,
+                           summary);
       }
 
     // Written last: its presence marks a finished run.

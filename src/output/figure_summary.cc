@@ -15,6 +15,7 @@ namespace FloorBlock::Output
     {
       const char *key;   ///< field in fem.json and in the error estimate
       double Contact::JointReport::*member; ///< the figure, SI
+      FigureError JointErrors::*error;      ///< its estimated error
       const char *name;  ///< shown to the user
       const char *unit;  ///< SI unit of the stored value
       double      scale; ///< SI -> shown unit
@@ -22,16 +23,18 @@ namespace FloorBlock::Output
     };
 
     constexpr std::array<Figure, 4> figures = {
-      {{"normal_force_N_per_m", &Contact::JointReport::normal_force, "Q",
-        "N/m", 1. / Units::newtons_per_kilonewton, "kN/m"},
+      {{"normal_force_N_per_m", &Contact::JointReport::normal_force,
+        &JointErrors::normal_force, "Q", "N/m",
+        1. / Units::newtons_per_kilonewton, "kN/m"},
        {"contact_length_m", &Contact::JointReport::closed_length,
-        "contact length", "m", 1e3, "mm"},
-       {"sigma_max_Pa", &Contact::JointReport::peak_normal_stress, "sigma_max",
-        "Pa", 1. / Units::pascals_per_megapascal, "MPa"},
+        &JointErrors::contact_length, "contact length", "m", 1e3, "mm"},
+       {"sigma_max_Pa", &Contact::JointReport::peak_normal_stress,
+        &JointErrors::sigma_max, "sigma_max", "Pa",
+        1. / Units::pascals_per_megapascal, "MPa"},
        {"sigma_max_averaged_Pa",
         &Contact::JointReport::averaged_peak_normal_stress,
-        "sigma_max averaged", "Pa", 1. / Units::pascals_per_megapascal,
-        "MPa"}}};
+        &JointErrors::sigma_max_averaged, "sigma_max averaged", "Pa",
+        1. / Units::pascals_per_megapascal, "MPa"}}};
 
     double
     solve_time(const Contact::SolveResult &result)
@@ -44,9 +47,9 @@ namespace FloorBlock::Output
   } // namespace
 
   json
-  face_joint_figures(const Contact::SolveResult &solve,
-                     const json                 &error_estimate,
-                     const unsigned int          n_blocks)
+  face_joint_figures(const Contact::SolveResult              &solve,
+                     const std::optional<FemErrorEstimate> &error_estimate,
+                     const unsigned int                     n_blocks)
   {
     const std::string           face  = "vertical " + std::to_string(n_blocks);
     const Contact::JointReport *joint = nullptr;
@@ -54,19 +57,19 @@ namespace FloorBlock::Output
       for (const auto &candidate : solve.increments.back().joints)
         if (candidate.name == face)
           joint = &candidate;
-    const bool estimated = error_estimate.is_object() &&
-                           error_estimate.value("status", "") == "available";
+    const bool estimated = error_estimate && error_estimate->available;
     json result = json::array();
     if (joint == nullptr)
       return result;
     for (const Figure &figure : figures)
       {
         json error = nullptr;
-        if (estimated)
+        if (estimated && error_estimate->joints.count(face) > 0)
           {
-            const json &joints = error_estimate["joints"];
-            if (joints.contains(face) && joints[face].contains(figure.key))
-              error = joints[face][figure.key]["relative_error"];
+            const auto &relative =
+              (error_estimate->joints.at(face).*figure.error).relative_error;
+            if (relative)
+              error = *relative;
           }
         result.push_back(
           {{"quantity", figure.name},
@@ -77,7 +80,7 @@ namespace FloorBlock::Output
            // A null error always comes with a status that says why.
            {"status", error.is_number() ? "estimated" : "error not estimated"},
            {"error_method",
-            estimated ? error_estimate["method"] :
+            estimated ? json(error_estimate->method) :
                         json("none: no error estimate was made or it failed")},
            {"wall_time_s", solve_time(solve)}});
       }

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <contact/results.h>
+#include <output/fem_error_estimate.h>
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 
 namespace FloorBlock::Output
@@ -15,8 +17,8 @@ namespace FloorBlock::Output
    *
    * @param[in] solve The solve: its last converged increment's joints and
    *   its wall time per section.
-   * @param[in] error_estimate summary.json's fem_error_estimate (may be
-   *   null or "unavailable": the errors are then null with that status).
+   * @param[in] error_estimate The error estimate (may be absent or not
+   *   available: the errors are then null with that status).
    * @param[in] n_blocks Face joint = "vertical n".
    * @return [{"quantity", "field", "value", "unit", "relative_error",
    *   "status" ("estimated" or "error not estimated"), "error_method",
@@ -24,9 +26,9 @@ namespace FloorBlock::Output
    *   same for every figure of one solve (they come out together).
    */
   nlohmann::json
-  face_joint_figures(const Contact::SolveResult &solve,
-                     const nlohmann::json       &error_estimate,
-                     const unsigned int          n_blocks);
+  face_joint_figures(const Contact::SolveResult              &solve,
+                     const std::optional<FemErrorEstimate> &error_estimate,
+                     const unsigned int                     n_blocks);
 
   /** @brief One line per figure, for the terminal. */
   std::string

@@ -83,32 +83,32 @@ namespace FloorBlock::Output
     }
 
     std::string
-    error_section(const json &summary)
+    relative_error(const FigureError &error)
     {
-      if (!summary.contains("fem_error_estimate"))
+      return error.relative_error ?
+               fmt::format("{:.1f} %", *error.relative_error * 100.) :
+               std::string("-");
+    }
+
+    std::string
+    error_section(const std::optional<FemErrorEstimate> &estimate)
+    {
+      if (!estimate)
         return "No error estimate was made (Solver/Error estimate = none, or "
                "the solve did not converge).\n";
-      const auto &estimate = summary["fem_error_estimate"];
-      if (estimate["status"] != "available")
-        return "No error estimate: " +
-               estimate["status_text"].get<std::string>() + "\n";
+      if (!estimate->available)
+        return "No error estimate: " + estimate->status_text + "\n";
       std::string text = fmt::format(
         "Method: {} ({} DoFs).\n\n| joint | Q rel. error | contact length "
         "rel. error | sigma_max averaged rel. error | sigma_max pointwise "
         "rel. error |\n|---|---|---|---|---|\n",
-        estimate["method"].get<std::string>(),
-        estimate["refined_n_dofs"].dump());
-      for (const auto &[name, quantities] : estimate["joints"].items())
-        text += fmt::format(
-          "| {} | {} | {} | {} | {} |\n", name,
-          number(quantities["normal_force_N_per_m"]["relative_error"], 100.,
-                 "{:.1f} %"),
-          number(quantities["contact_length_m"]["relative_error"], 100.,
-                 "{:.1f} %"),
-          number(quantities["sigma_max_averaged_Pa"]["relative_error"], 100.,
-                 "{:.1f} %"),
-          number(quantities["sigma_max_Pa"]["relative_error"], 100.,
-                 "{:.1f} %"));
+        estimate->method, estimate->refined_n_dofs);
+      for (const auto &[name, errors] : estimate->joints)
+        text += fmt::format("| {} | {} | {} | {} | {} |\n", name,
+                            relative_error(errors.normal_force),
+                            relative_error(errors.contact_length),
+                            relative_error(errors.sigma_max_averaged),
+                            relative_error(errors.sigma_max));
       return text;
     }
   } // namespace
@@ -117,6 +117,7 @@ namespace FloorBlock::Output
   report_markdown(const Parameters::ScenarioParameters &scene,
                   const Contact::SolveResult           &result,
                   const FemReport                      &report,
+                  const std::optional<FemErrorEstimate> &error_estimate,
                   const json                           &summary,
                   const std::vector<std::string>       &verdicts)
   {
@@ -159,7 +160,7 @@ namespace FloorBlock::Output
             "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
             "![Traction along the face joint](face_joint_traction.png)\n\n"
             "## Discretisation error\n\n" +
-            error_section(summary);
+            error_section(error_estimate);
     text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
     if (report.mesh)
       text += fmt::format("| mesh | {:.3f} |\n", report.mesh->wall_time);

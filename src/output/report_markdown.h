@@ -1,11 +1,13 @@
 #pragma once
 
 #include <contact/results.h>
+#include <output/fem_error_estimate.h>
 #include <output/fem_report.h>
 #include <parameters/scenario_parameters.h>
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,13 +18,14 @@ namespace FloorBlock::Output
    * form, contact area and stresses against 6.51-6.53), the plots, one
    * verdict per quantity, the error estimate and the cost.
    * @param[in] result, report The solve and its FEM report.
-   * @param[in] summary The summary.json content so far (comparison,
-   * fem_error_estimate).
+   * @param[in] error_estimate The error estimate, if one was made.
+   * @param[in] summary The summary.json content so far (comparison).
    */
   std::string
   report_markdown(const Parameters::ScenarioParameters &scene,
                   const Contact::SolveResult           &result,
                   const FemReport                      &report,
+                  const std::optional<FemErrorEstimate> &error_estimate,
                   const nlohmann::json                 &summary,
                   const std::vector<std::string>       &verdicts);
 } // namespace FloorBlock::Output

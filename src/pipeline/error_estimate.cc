@@ -2,13 +2,12 @@
 #include <pipeline/error_estimate.h>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
 namespace FloorBlock::Pipeline
 {
-  using nlohmann::json;
-
   Parameters::ScenarioParameters
   refined_scene(Parameters::ScenarioParameters scene)
   {
@@ -22,10 +21,11 @@ namespace FloorBlock::Pipeline
     return scene;
   }
 
-  json
+  Output::FemErrorEstimate
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
   {
-    const std::string method =
+    Output::FemErrorEstimate estimate;
+    estimate.method =
       coarse.report.model == "rigid blocks" ?
         "difference to one solve with twice the points per joint" :
         "difference to a solve on the next uniform refinement level "
@@ -33,11 +33,14 @@ namespace FloorBlock::Pipeline
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)
-      return {{"method", method},
-              {"status", "unavailable"},
-              {"status_text", "the refined solve did not converge: " +
-                                fine.report.status_text}};
-    json joints = json::object();
+      {
+        estimate.status_text =
+          "the refined solve did not converge: " + fine.report.status_text;
+        return estimate;
+      }
+    estimate.available      = true;
+    estimate.refined_n_dofs = fine.result.n_dofs;
+    estimate.refined_status = fine.report.status;
     const auto final_joints = [](const FemOutcome &outcome) {
       return outcome.result.increments.empty() ?
                std::vector<Contact::JointReport>() :
@@ -45,36 +48,32 @@ namespace FloorBlock::Pipeline
     };
     const auto coarse_joints = final_joints(coarse);
     const auto fine_joints   = final_joints(fine);
-    using Member = double Contact::JointReport::*;
-    const std::pair<const char *, Member> figures[] = {
-      {"normal_force_N_per_m", &Contact::JointReport::normal_force},
-      {"contact_length_m", &Contact::JointReport::closed_length},
-      {"sigma_max_Pa", &Contact::JointReport::peak_normal_stress},
-      {"sigma_max_averaged_Pa",
-       &Contact::JointReport::averaged_peak_normal_stress}};
+    using Figure = double Contact::JointReport::*;
+    using Error  = Output::FigureError Output::JointErrors::*;
+    const std::pair<Figure, Error> figures[] = {
+      {&Contact::JointReport::normal_force, &Output::JointErrors::normal_force},
+      {&Contact::JointReport::closed_length,
+       &Output::JointErrors::contact_length},
+      {&Contact::JointReport::peak_normal_stress,
+       &Output::JointErrors::sigma_max},
+      {&Contact::JointReport::averaged_peak_normal_stress,
+       &Output::JointErrors::sigma_max_averaged}};
     for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
          ++k)
       {
-        json quantities = json::object();
-        for (const auto &[key, member] : figures)
+        Output::JointErrors &errors = estimate.joints[coarse_joints[k].name];
+        for (const auto &[figure, error] : figures)
           {
-            const double coarse_value = coarse_joints[k].*member;
-            const double fine_value   = fine_joints[k].*member;
+            const double coarse_value = coarse_joints[k].*figure;
+            const double fine_value   = fine_joints[k].*figure;
             const double difference   = std::abs(coarse_value - fine_value);
-            quantities[key] = {
-              {"value", coarse_value},
-              {"refined_value", fine_value},
-              {"absolute_error", difference},
-              {"relative_error",
-               fine_value != 0. ? json(difference / std::abs(fine_value)) :
-                                  json(nullptr)}};
+            errors.*error = {coarse_value, fine_value, difference,
+                             fine_value != 0. ?
+                               std::optional<double>(difference /
+                                                     std::abs(fine_value)) :
+                               std::nullopt};
           }
-        joints[coarse_joints[k].name] = quantities;
       }
-    return {{"method", method},
-            {"status", "available"},
-            {"refined_n_dofs", fine.result.n_dofs},
-            {"refined_status", fine.report.status},
-            {"joints", joints}};
+    return estimate;
   }
 } // namespace FloorBlock::Pipeline

@@ -1,8 +1,7 @@
 #pragma once
 
+#include <output/fem_error_estimate.h>
 #include <pipeline/fem_pipeline.h>
-
-#include <nlohmann/json.hpp>
 
 namespace FloorBlock::Pipeline
 {
@@ -13,7 +12,7 @@ namespace FloorBlock::Pipeline
    * |coarse - fine| and its ratio to |fine| for the normal force, contact
    * length and the peak stresses.
    */
-  nlohmann::json
+  Output::FemErrorEstimate
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine);
 
   /**
