@@ -1,229 +1,17 @@
 #include <app/command_options.h>
 #include <common/input_error.h>
-#include <common/units.h>
 #include <output/result_folder.h>
-#include <scene/contact_inputs.h>
-#include <verification/hertz_verification.h>
-#include <verification/incline_verification.h>
-#include <verification/patch_verification.h>
-#include <verification/two_blocks_verification.h>
+#include <output/verification_report.h>
+#include <pipeline/verification_runs.h>
 
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <cmath>
 #include <iostream>
-#include <map>
 
 namespace FloorBlock::App
 {
-  using nlohmann::json;
-
-  namespace
-  {
-    /**
-     * A verification case starts from exact contact (rigid law; stiff
-     * springs if the user asks for the compliant law), then the user's
-     * --set overrides apply on top.
-     */
-    const std::vector<std::string> verification_base = {
-      "Joints/Law=rigid", "Joints/Normal stiffness=1e14",
-      "Joints/Shear stiffness=1e14"};
-
-    /** A quantity whose closed form may be 0: error relative to @p scale. */
-    json
-    scaled_quantity(const double computed, const double closed_form,
-                    const double scale, const double tolerance)
-    {
-      const double error = std::abs(computed - closed_form) / scale;
-      return {{"computed", computed},
-              {"closed_form", closed_form},
-              {"relative_error", error},
-              {"tolerance", tolerance},
-              {"passed", error <= tolerance}};
-    }
-
-    json
-    quantity(const double computed, const double closed_form,
-             const double tolerance)
-    {
-      return scaled_quantity(computed, closed_form, std::abs(closed_form),
-                             tolerance);
-    }
-
-    /** A yes/no outcome: 1 = slips, 0 = stuck; error 0 or 1. */
-    json
-    decision(const bool computed, const bool closed_form)
-    {
-      return scaled_quantity(computed ? 1. : 0., closed_form ? 1. : 0., 1., 0.);
-    }
-
-    json
-    verify_hertz(const Parameters::ScenarioParameters &scene)
-    {
-      Verification::HertzSettings settings;
-      settings.radius         = scene.verify.hertz_radius;
-      settings.line_load      = scene.verify.hertz_line_load;
-      settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
-      settings.poissons_ratio = scene.verify.hertz_poissons_ratio;
-      settings.mesh_level     = scene.verify.hertz_mesh_level;
-      settings.law                 = Scene::joint_law_kind(scene);
-      settings.compliant_stiffness = scene.joints.normal_stiffness;
-      settings.fe_degree           = scene.solver.fe_degree;
-
-      const Verification::HertzResult result =
-        Verification::run_hertz_verification(settings);
-      return {{"contact_half_width",
-               quantity(result.half_width_computed, result.half_width_exact,
-                        Verification::hertz_half_width_tolerance)},
-              {"peak_pressure",
-               quantity(result.peak_pressure_computed,
-                        result.peak_pressure_exact,
-                        Verification::hertz_peak_pressure_tolerance)},
-              {"n_dofs", result.n_dofs},
-              {"contact_cell_size_m", result.contact_cell_size}};
-    }
-
-    json
-    verify_patch(const Parameters::ScenarioParameters &scene)
-    {
-      Verification::PatchSettings settings;
-      settings.pressure  = scene.verify.patch_pressure;
-      settings.law       = Scene::joint_law_kind(scene);
-      settings.fe_degree = scene.solver.fe_degree;
-      const Verification::PatchResult result =
-        Verification::run_patch_verification(settings);
-      const Contact::JointReport &joint = result.increment.joints.at(0);
-      const double pressure = result.applied_pressure;
-      double       lowest = pressure, highest = pressure;
-      for (const auto &sample : joint.profile)
-        {
-          lowest  = std::min(lowest, sample.normal_traction);
-          highest = std::max(highest, sample.normal_traction);
-        }
-      const double force = pressure * result.joint_length;
-      constexpr double tolerance = Verification::patch_tolerance;
-      return {{"joint_normal_force",
-               quantity(joint.normal_force, force, tolerance)},
-              {"lowest_normal_traction", quantity(lowest, pressure, tolerance)},
-              {"highest_normal_traction",
-               quantity(highest, pressure, tolerance)},
-              {"joint_shear_force_over_normal",
-               scaled_quantity(joint.shear_force, 0., force, tolerance)},
-              {"n_open_pairs", joint.counts.n_open}};
-    }
-
-    json
-    verify_incline(const Parameters::ScenarioParameters &scene)
-    {
-      Verification::InclineSettings settings;
-      settings.friction_angle   = scene.joints.bedding_friction_angle;
-      // The case tilts the block to (1 -+ margin) tan(phi): with phi = 0
-      // both inclines are 0 and the closed-form shear W sin(0) = 0 leaves
-      // no relative error to state.
-      if (!(settings.friction_angle > 0.))
-        throw InputError("Joints/Bedding friction angle",
-                         fmt::format("{} deg", Units::radians_to_degrees(
-                                                 settings.friction_angle)),
-                         "> 0 deg for verify incline");
-      settings.normal_stiffness = scene.joints.normal_stiffness;
-      settings.shear_stiffness  = scene.joints.shear_stiffness;
-      settings.law              = Scene::joint_law_kind(scene);
-      const double friction = std::tan(settings.friction_angle);
-      const double margin   = scene.verify.incline_margin;
-      settings.incline = std::atan((1. - margin) * friction);
-      const Verification::InclineResult below =
-        Verification::run_incline_verification(settings);
-      const double incline_below = settings.incline;
-      settings.incline = std::atan((1. + margin) * friction);
-      const Verification::InclineResult above =
-        Verification::run_incline_verification(settings);
-      json quantities = {
-        {"slips_below_threshold",
-         decision(Verification::slips(below), false)},
-        {"slips_above_threshold", decision(Verification::slips(above), true)},
-        {"incline_below_deg", Units::radians_to_degrees(incline_below)},
-        {"incline_above_deg", Units::radians_to_degrees(settings.incline)}};
-      if (below.stuck)
-        {
-          const Contact::JointReport &joint = below.stuck->joints.at(0);
-          quantities["joint_shear_force"] = quantity(
-            std::abs(joint.shear_force), below.weight * std::sin(incline_below),
-            Verification::incline_tolerance);
-          quantities["joint_normal_force"] = quantity(
-            joint.normal_force, below.weight * std::cos(incline_below),
-            Verification::incline_tolerance);
-        }
-      return quantities;
-    }
-
-    json
-    verify_two_blocks(const Parameters::ScenarioParameters &scene)
-    {
-      Verification::TwoBlocksSettings settings;
-      settings.cells_per_metre  = scene.verify.two_blocks_cells_per_metre;
-      settings.law              = Scene::joint_law_kind(scene);
-      settings.joint_stiffness  = scene.joints.normal_stiffness;
-      settings.lateral_pressure = scene.verify.two_blocks_lateral_pressure;
-      const Verification::TwoBlocksResult result =
-        Verification::run_two_blocks_verification(settings);
-      return {{"joint_normal_force",
-               quantity(result.joint_normal_force, result.applied_lateral_force,
-                        Verification::two_blocks_tolerance)},
-              {"closed_length_m", result.closed_length},
-              {"relative_imbalance", result.relative_imbalance}};
-    }
-
-    using CaseFunction = json (*)(const Parameters::ScenarioParameters &);
-
-    /** A case: the parameters it starts from, and what it computes. */
-    struct VerificationCase
-    {
-      std::vector<std::string> base_overrides;
-      CaseFunction             run;
-    };
-
-    /**
-     * Hertz and the patch test start from exact contact (see
-     * verification_base); the incline and the two blocks from the
-     * chapter's compliant joints (Table 6.1), as their unit tests do.
-     */
-    const std::map<std::string, VerificationCase> &
-    verification_cases()
-    {
-      static const std::map<std::string, VerificationCase> cases = {
-        {"hertz", {verification_base, verify_hertz}},
-        {"patch", {verification_base, verify_patch}},
-        {"incline", {{}, verify_incline}},
-        {"two-blocks", {{}, verify_two_blocks}}};
-      return cases;
-    }
-
-    /** Prints every checked quantity; true if all are within tolerance. */
-    bool
-    report_quantities(const json &quantities)
-    {
-      bool passed = true;
-      for (const auto &[name, q] : quantities.items())
-        {
-          if (!q.is_object())
-            continue;
-          passed = passed && q["passed"].get<bool>();
-          std::cout << fmt::format(
-            "{:<30} computed {:.6e}  closed form {:.6e}  error {:.2e} "
-            "(tolerance {:.0e}) {}\n",
-            name, q["computed"].get<double>(), q["closed_form"].get<double>(),
-            q["relative_error"].get<double>(), q["tolerance"].get<double>(),
-            q["passed"].get<bool>() ? "ok" : "FAILED");
-        }
-      return passed;
-    }
-  } // namespace
-
   int
   verify_command(const CommandOptions &options)
   {
-    const auto &cases = verification_cases();
+    const auto &cases = Pipeline::verification_cases();
     const auto  found = cases.find(options.verification_case);
     if (found == cases.end())
       throw InputError("verify: unknown case '" + options.verification_case +
@@ -234,14 +22,13 @@ namespace FloorBlock::App
     const auto scene = Parameters::read_defaults(
       "verify_" + options.verification_case, overrides);
 
-    const json quantities = found->second.run(scene);
-    const bool passed     = report_quantities(quantities);
+    const Output::VerificationResult result = found->second.run(scene);
+    std::cout << Output::verification_lines(result);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
-    folder.write_json("verify.json", {{"case", options.verification_case},
-                                      {"passed", passed},
-                                      {"quantities", quantities}});
+    folder.write_json("verify.json", Output::verification_json(
+                                       options.verification_case, result));
     std::cout << "wrote " << folder.path_of("verify.json") << std::endl;
-    return passed ? exit_code::success : exit_code::failure;
+    return result.passed() ? exit_code::success : exit_code::failure;
   }
 } // namespace FloorBlock::App
