@@ -67,6 +67,109 @@ namespace
         return exit_code::failure;
       }
   }
+
+  /** Every subcommand: its description and the function that runs it. */
+  const std::map<std::string, std::pair<std::string, Command>> &
+  command_table()
+  {
+    static const std::map<std::string, std::pair<std::string, Command>>
+      commands = {
+        {"print-parameters",
+         {"Print every parameter with default, range, unit and meaning",
+          App::print_parameters_command}},
+        {"analytic",
+         {"Evaluate every closed-form case of the chapter for a scene",
+          App::analytic_command}},
+        {"sweep",
+         {"Evaluate the chapter's figure grids (6.5-6.7, 6.10/6.11)",
+          App::sweep_command}},
+        {"mesh", {"Mesh the block assembly with Gmsh", App::mesh_command}},
+        {"solve",
+         {"Mesh and solve the scene with the frictional contact FEM",
+          App::solve_command}},
+        {"verify",
+         {"Run a verification case against its closed form "
+          "(hertz, patch, incline, two-blocks)",
+          App::verify_command}},
+        {"run", {"The main job: mesh, solve, compare", App::run_command}},
+        {"converge",
+         {"Refinement study: error against cost, uniform and adaptive meshes",
+          App::converge_command}}};
+    return commands;
+  }
+
+  /** The options of verify, mesh and sweep beyond the shared ones. */
+  void
+  add_case_options(CLI::App &cli, App::CommandOptions &options)
+  {
+    // verify takes a case name where the others take a scene file.
+    CLI::App *verify = cli.get_subcommand("verify");
+    verify->remove_option(verify->get_option("scene"));
+    verify->add_option("case", options.verification_case,
+                       "Verification case: hertz, patch, incline, two-blocks")
+      ->required();
+    cli.get_subcommand("mesh")->add_flag(
+      "--ids", options.print_ids, "Print the material/boundary id scheme");
+    CLI::App *sweep = cli.get_subcommand("sweep");
+    sweep->add_flag("--fem", options.with_fem,
+                    "Also run the FEM for every case");
+    sweep->add_option("--figure", options.figure,
+                      "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
+    sweep->add_option("--limit", options.case_limit,
+                      "With --fem: run at most this many cases (0 = all)");
+  }
+
+  /** The options of converge beyond the shared ones. */
+  void
+  add_converge_options(CLI::App &cli, App::CommandOptions &options)
+  {
+    CLI::App *converge = cli.get_subcommand("converge");
+    converge->add_option("--levels", options.n_levels,
+                         "Number of refinement levels (2-10, default 5)");
+    converge->add_option("--mode", options.refinement_mode,
+                         "uniform, adaptive (deal.II hanging nodes), remesh "
+                         "(Gmsh size field), both (uniform and adaptive, "
+                         "default) or all three")
+      ->check(CLI::IsMember({"uniform", "adaptive", "remesh", "both", "all"}));
+    converge->add_option("--coarsen-fraction", options.coarsen_fraction,
+                         "Adaptive: fraction of cells with the smallest Kelly "
+                         "indicator flagged for coarsening per level "
+                         "(default 0.03, 0 = never coarsen)");
+    converge->add_option("--bulk-fraction", options.bulk_fraction,
+                         "Adaptive: fraction of cells with the largest Kelly "
+                         "indicator refined per level (default 0.1)");
+    converge->add_option("--jump-fraction", options.jump_fraction,
+                         "Adaptive: joint segments whose normal-traction jump "
+                         "exceeds this fraction of the largest are refined "
+                         "(default 0.25)");
+    converge->add_option("--target-error", options.target_error,
+                         "Relative error at which uniform and adaptive costs "
+                         "are compared (default 0.01)");
+  }
+
+  /** Runs the parsed subcommand, starting MPI first if it needs it. */
+  int
+  run_parsed(const std::map<CLI::App *, Command> &dispatch,
+             const App::CommandOptions           &options,
+             int                                  &argc,
+             char                               **&argv)
+  {
+    // MPI start-up costs most of a second here; closed-form commands skip it.
+    std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+    for (const auto &[sub, command] : dispatch)
+      if (sub->parsed())
+        {
+          if (needs_mpi.count(sub->get_name()) > 0)
+            {
+              mpi.emplace(argc, argv, 1);
+              // Again after MPI start-up, in case the MPI library installed
+              // handlers of its own.
+              install_interrupt_handlers();
+            }
+          return run_guarded(command, options);
+        }
+    return exit_code::bad_input;
+  }
 } // namespace
 
 int
@@ -78,70 +181,11 @@ main(int argc, char **argv)
                "model of longwall floor failure"};
   cli.require_subcommand(1);
   App::CommandOptions options;
-
-  const std::map<std::string, std::pair<std::string, Command>> commands = {
-    {"print-parameters",
-     {"Print every parameter with default, range, unit and meaning",
-      App::print_parameters_command}},
-    {"analytic",
-     {"Evaluate every closed-form case of the chapter for a scene",
-      App::analytic_command}},
-    {"sweep",
-     {"Evaluate the chapter's figure grids (6.5-6.7, 6.10/6.11)",
-      App::sweep_command}},
-    {"mesh", {"Mesh the block assembly with Gmsh", App::mesh_command}},
-    {"solve",
-     {"Mesh and solve the scene with the frictional contact FEM",
-      App::solve_command}},
-    {"verify",
-     {"Run a verification case against its closed form "
-      "(hertz, patch, incline, two-blocks)",
-      App::verify_command}},
-    {"run", {"The main job: mesh, solve, compare", App::run_command}},
-    {"converge",
-     {"Refinement study: error against cost, uniform and adaptive meshes",
-      App::converge_command}}};
-
   std::map<CLI::App *, Command> dispatch;
-  for (const auto &[name, entry] : commands)
+  for (const auto &[name, entry] : command_table())
     dispatch[add_subcommand(cli, name, entry.first, options)] = entry.second;
-  // verify takes a case name where the others take a scene file.
-  CLI::App *verify = cli.get_subcommand("verify");
-  verify->remove_option(verify->get_option("scene"));
-  verify->add_option("case", options.verification_case,
-                     "Verification case: hertz, patch, incline, two-blocks")
-    ->required();
-  cli.get_subcommand("mesh")->add_flag("--ids", options.print_ids,
-                                       "Print the material/boundary id scheme");
-  CLI::App *sweep = cli.get_subcommand("sweep");
-  sweep->add_flag("--fem", options.with_fem, "Also run the FEM for every case");
-  sweep->add_option("--figure", options.figure,
-                    "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
-  sweep->add_option("--limit", options.case_limit,
-                    "With --fem: run at most this many cases (0 = all)");
-
-  CLI::App *converge = cli.get_subcommand("converge");
-  converge->add_option("--levels", options.n_levels,
-                       "Number of refinement levels (2-10, default 5)");
-  converge->add_option("--mode", options.refinement_mode,
-                       "uniform, adaptive (deal.II hanging nodes), remesh "
-                       "(Gmsh size field), both (uniform and adaptive, "
-                       "default) or all three")
-    ->check(CLI::IsMember({"uniform", "adaptive", "remesh", "both", "all"}));
-  converge->add_option("--coarsen-fraction", options.coarsen_fraction,
-                       "Adaptive: fraction of cells with the smallest Kelly "
-                       "indicator flagged for coarsening per level "
-                       "(default 0.03, 0 = never coarsen)");
-  converge->add_option("--bulk-fraction", options.bulk_fraction,
-                       "Adaptive: fraction of cells with the largest Kelly "
-                       "indicator refined per level (default 0.1)");
-  converge->add_option("--jump-fraction", options.jump_fraction,
-                       "Adaptive: joint segments whose normal-traction jump "
-                       "exceeds this fraction of the largest are refined "
-                       "(default 0.25)");
-  converge->add_option("--target-error", options.target_error,
-                       "Relative error at which uniform and adaptive costs "
-                       "are compared (default 0.01)");
+  add_case_options(cli, options);
+  add_converge_options(cli, options);
 
   try
     {
@@ -152,20 +196,5 @@ main(int argc, char **argv)
       const int code = cli.exit(error);
       return code == 0 ? exit_code::success : exit_code::bad_input;
     }
-
-  // MPI start-up costs most of a second here; closed-form commands skip it.
-  std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-  for (const auto &[sub, command] : dispatch)
-    if (sub->parsed())
-      {
-        if (needs_mpi.count(sub->get_name()) > 0)
-          {
-            mpi.emplace(argc, argv, 1);
-            // Again after MPI start-up, in case the MPI library installed
-            // handlers of its own.
-            install_interrupt_handlers();
-          }
-        return run_guarded(command, options);
-      }
-  return exit_code::bad_input;
+  return run_parsed(dispatch, options, argc, argv);
 }

@@ -279,4 +279,76 @@ namespace FloorBlock::Output
                       "unset logscale\nplot [0:1][0:1] NaN notitle\n";
     return script + plot + "\n";
   }
+
+  std::string
+  TargetVerdict::status() const
+  {
+    if (!evaluated)
+      return "not evaluated";
+    return met ? "met" : "not met";
+  }
+
+  json
+  target_verdict_json(const TargetVerdict &verdict)
+  {
+    if (!verdict.evaluated)
+      return {{"status", verdict.status()}, {"text", verdict.text}};
+    return {{"status", verdict.status()},
+            {"text", verdict.text},
+            {"dofs_ratio_limit", verdict.dofs_ratio_limit},
+            {"cost_ratio_limit", verdict.cost_ratio_limit}};
+  }
+
+  json
+  convergence_study_json(
+    const std::vector<Convergence::Ladder>               &ladders,
+    const std::vector<Convergence::Quantity>             &quantities,
+    const std::vector<Convergence::EqualErrorComparison> &comparisons,
+    const TargetVerdict                                  &adaptive_target,
+    const std::optional<TargetVerdict>                   &remesh_target)
+  {
+    json report = convergence_json(ladders, quantities, comparisons);
+    report["adaptive_target"] = target_verdict_json(adaptive_target);
+    if (remesh_target)
+      report["remesh_target"] = target_verdict_json(*remesh_target);
+    return report;
+  }
+
+  json
+  convergence_summary_json(const std::string   &scene_name,
+                           const bool           all_converged,
+                           const TargetVerdict &adaptive_target,
+                           const double         wall_time)
+  {
+    return {{"scene", scene_name},
+            {"status",
+             all_converged ? "converged" : "not every level converged"},
+            {"adaptive_target", target_verdict_json(adaptive_target)},
+            {"wall_time_s", wall_time}};
+  }
+
+  std::string
+  ladder_text(const Convergence::Ladder                &ladder,
+              const std::vector<Convergence::Quantity> &quantities)
+  {
+    std::string text = fmt::format("{} refinement:\n", ladder.mode);
+    for (std::size_t q = 0; q < quantities.size(); ++q)
+      {
+        const auto &errors = ladder.errors[q];
+        // The order used by the extrapolation; all orders are in the JSON.
+        std::string order = "-";
+        if (errors.method == Convergence::ErrorMethod::richardson)
+          for (const auto &observed : errors.observed_orders)
+            if (observed)
+              order = fmt::format("{:.2f}", *observed);
+        text += fmt::format(
+          "  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
+          quantities[q].name, Convergence::method_name(errors.method),
+          order,
+          errors.reference ? fmt::format("{:.6e}", *errors.reference) :
+                             std::string("-"),
+          errors.reason);
+      }
+    return text;
+  }
 } // namespace FloorBlock::Output

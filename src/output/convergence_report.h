@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,58 @@ namespace FloorBlock::Output
                    const std::vector<Convergence::Quantity> &quantities,
                    const std::vector<Convergence::EqualErrorComparison>
                      &comparisons);
+
+  /** Whether a refinement mode meets the target against uniform. */
+  struct TargetVerdict
+  {
+    /** False when the comparison lacks the uniform or the mode's ladder. */
+    bool        evaluated = false;
+    bool        met       = false;
+    std::string text; ///< per quantity: levels, DoF and time ratios
+    /** Target: at most this fraction of the uniform DoFs ... */
+    double      dofs_ratio_limit = 0.;
+    /** ... and at most this fraction of its wall time (exclusive). */
+    double      cost_ratio_limit = 0.;
+
+    /** @brief "met", "not met" or "not evaluated". */
+    std::string
+    status() const;
+  };
+
+  /**
+   * @brief {"status", "text"} of a verdict, with the two limits when it
+   * was evaluated.
+   */
+  nlohmann::json
+  target_verdict_json(const TargetVerdict &verdict);
+
+  /**
+   * @brief The final convergence.json: convergence_json() with the verdict
+   * on the adaptive target ("adaptive_target") and, with --mode all, on the
+   * remesh target ("remesh_target").
+   */
+  nlohmann::json
+  convergence_study_json(
+    const std::vector<Convergence::Ladder>               &ladders,
+    const std::vector<Convergence::Quantity>             &quantities,
+    const std::vector<Convergence::EqualErrorComparison> &comparisons,
+    const TargetVerdict                                  &adaptive_target,
+    const std::optional<TargetVerdict>                   &remesh_target);
+
+  /** @brief converge's summary.json, written last. */
+  nlohmann::json
+  convergence_summary_json(const std::string   &scene_name,
+                           const bool           all_converged,
+                           const TargetVerdict &adaptive_target,
+                           const double         wall_time);
+
+  /**
+   * @brief Terminal lines of one ladder: per quantity the error method,
+   * the order used by the extrapolation, the reference value and why.
+   */
+  std::string
+  ladder_text(const Convergence::Ladder                &ladder,
+              const std::vector<Convergence::Quantity> &quantities);
 
   /**
    * @brief gnuplot script: relative error estimate against the cost wall
