@@ -103,6 +103,23 @@ namespace FloorBlock::App
                                            outcome.report, estimate, summary,
                                            lines));
     }
+
+    /// The closing line: what was written, and in how long.
+    void
+    print_written(const Pipeline::FemOutcome &outcome,
+                  const Output::ResultFolder &folder,
+                  const double                seconds)
+    {
+      if (outcome.result.increments.empty())
+        std::cout << "no load increment converged: no comparison and no "
+                     "report.md; wrote "
+                  << folder.path_of("summary.json") << " in " << seconds
+                  << " s" << std::endl;
+      else
+        std::cout << "wrote " << folder.path_of("report.md") << " and "
+                  << folder.path_of("summary.json") << " in " << seconds
+                  << " s" << std::endl;
+    }
   } // namespace
 
   int
@@ -123,15 +140,9 @@ namespace FloorBlock::App
                     {"inputs", scene.expanded_text},
                     {"analytic", analytic},
                     {"fem", Output::fem_json(outcome.result, outcome.report)}};
-    std::optional<Output::FemErrorEstimate> estimate;
-    if (scene.solver.estimate_error_by_refined_solve && outcome.converged)
-      {
-        estimate = Pipeline::refined_solve_error(
-          outcome,
-          Pipeline::solve_scene(Pipeline::refined_scene(scene),
-                                Output::ResultFolder(folder.path_of("refined"))));
-        summary["fem_error_estimate"] = Output::fem_error_estimate_json(*estimate);
-      }
+    const auto estimate = Pipeline::estimate_error(scene, outcome, folder);
+    if (estimate)
+      summary["fem_error_estimate"] = Output::fem_error_estimate_json(*estimate);
     if (!outcome.result.increments.empty())
       {
         summary["face_joint_figures"] = Output::face_joint_figures(
@@ -148,15 +159,7 @@ namespace FloorBlock::App
     summary["status_text"] = outcome.report.status_text;
     summary["wall_time_s"] = timer.wall_time();
     folder.write_summary(summary);
-    if (outcome.result.increments.empty())
-      std::cout << "no load increment converged: no comparison and no "
-                   "report.md; wrote "
-                << folder.path_of("summary.json") << " in "
-                << timer.wall_time() << " s" << std::endl;
-    else
-      std::cout << "wrote " << folder.path_of("report.md") << " and "
-                << folder.path_of("summary.json") << " in "
-                << timer.wall_time() << " s" << std::endl;
+    print_written(outcome, folder, timer.wall_time());
     return outcome.converged ? exit_code::success : exit_code::failure;
   }
 } // namespace FloorBlock::App

@@ -76,4 +76,16 @@ namespace FloorBlock::Pipeline
       }
     return estimate;
   }
+
+  std::optional<Output::FemErrorEstimate>
+  estimate_error(const Parameters::ScenarioParameters &scene,
+                 const FemOutcome                     &coarse,
+                 const Output::ResultFolder           &folder)
+  {
+    if (!scene.solver.estimate_error_by_refined_solve || !coarse.converged)
+      return std::nullopt;
+    return refined_solve_error(
+      coarse, solve_scene(refined_scene(scene),
+                          Output::ResultFolder(folder.path_of("refined"))));
+  }
 } // namespace FloorBlock::Pipeline
