@@ -1,14 +1,14 @@
 #include <app/command_options.h>
-#include <pipeline/error_estimate.h>
-#include <pipeline/fem_pipeline.h>
-#include <compare/joint_comparison.h>
 #include <output/analytic_report.h>
 #include <output/comparison_report.h>
-#include <output/fem_report.h>
 #include <output/figure_summary.h>
 #include <output/gnuplot.h>
 #include <output/report_markdown.h>
 #include <output/result_folder.h>
+#include <output/run_summary.h>
+#include <pipeline/closed_form_comparison.h>
+#include <pipeline/error_estimate.h>
+#include <pipeline/fem_pipeline.h>
 #include <scene/closed_forms.h>
 
 #include <deal.II/base/timer.h>
@@ -18,46 +18,18 @@
 
 namespace FloorBlock::App
 {
-  using nlohmann::json;
-
   namespace
   {
-    Compare::ContactConstants
-    contact_constants(const Parameters::ScenarioParameters &scene)
-    {
-      return {scene.material.youngs_modulus(), scene.geometry.support_width,
-              scene.geometry.block_width, scene.geometry.block_height};
-    }
-
-    /// Face-joint comparison at every converged uplift increment.
-    json
-    lift_history(const Pipeline::FemOutcome &          outcome,
-                 const Scene::ClosedForms &            closed_forms,
-                 const Parameters::ScenarioParameters &scene)
-    {
-      json history = json::array();
-      for (const auto &increment : outcome.result.increments)
-        if (increment.stage == Contact::LoadStage::uplift)
-          {
-            const auto joints = Compare::compare_vertical_joints(
-              increment, closed_forms, contact_constants(scene));
-            history.push_back(Output::lift_history_entry(
-              joints.back(), contact_constants(scene),
-              increment.stage_factor * scene.loading.floor_lift));
-          }
-      return history;
-    }
-
     void
-    write_plots(const Output::ResultFolder &                 folder,
-                const std::vector<Compare::JointComparison> &final_joints,
-                const json &                                 history,
-                const Contact::IncrementResult &             last)
+    write_plots(const Output::ResultFolder     &folder,
+                const Output::RunComparison    &comparison,
+                const Contact::IncrementResult &last)
     {
+      const auto &final_joints = comparison.final_joints;
       Output::render_png(Output::force_per_joint_plot(final_joints),
                          folder.path_of("q_per_joint.png"));
-      if (!history.empty())
-        Output::render_png(Output::lift_history_plot(history),
+      if (!comparison.lift_history.empty())
+        Output::render_png(Output::lift_history_plot(comparison.lift_history),
                            folder.path_of("face_joint_vs_lift.png"), 1400, 550);
       for (const auto &joint : last.joints)
         if (joint.name == "vertical " + std::to_string(final_joints.size()))
@@ -65,43 +37,34 @@ namespace FloorBlock::App
                              folder.path_of("face_joint_traction.png"), 700,
                              700);
     }
-  
-    json
+
+    void
     write_closed_forms(const Output::ResultFolder &folder,
-                       const Scene::ClosedForms &  closed_forms)
+                       const Scene::ClosedForms   &closed_forms)
     {
-      const json analytic = Output::analytic_json(closed_forms);
-      folder.write_json("analytic.json", analytic);
+      folder.write_json("analytic.json", Output::analytic_json(closed_forms));
       folder.write("analytic.csv", Output::analytic_csv(closed_forms));
-      return analytic;
     }
 
     /// Compares, plots and reports the last converged increment.
-    void
-    compare_and_report(const Pipeline::FemOutcome &          outcome,
-                       const Scene::ClosedForms &            closed_forms,
-                       const Parameters::ScenarioParameters &scene,
-                       const Output::ResultFolder &          folder,
-                       const std::optional<Output::FemErrorEstimate> &estimate,
-                       json &                                summary)
+    Output::RunComparison
+    compare_and_report(const Pipeline::FemOutcome              &outcome,
+                       const Scene::ClosedForms                &closed_forms,
+                       const Parameters::ScenarioParameters    &scene,
+                       const Output::ResultFolder              &folder,
+                       const std::optional<Output::FemErrorEstimate> &estimate)
     {
-      const auto &last         = outcome.result.increments.back();
-      const auto  final_joints = Compare::compare_vertical_joints(
-        last, closed_forms, contact_constants(scene));
-      const json history = lift_history(outcome, closed_forms, scene);
-      summary["comparison"] = {
-        {"final", Output::comparison_json(final_joints,
-                                          contact_constants(scene),
-                                          scene.geometry.n_blocks)},
-        {"lift_history", history}};
-      write_plots(folder, final_joints, history, last);
-      const auto lines = Output::verdicts(final_joints.back());
+      const Output::RunComparison comparison =
+        Pipeline::compare_with_closed_forms(outcome, closed_forms, scene);
+      write_plots(folder, comparison, outcome.result.increments.back());
+      const auto lines = Output::verdicts(comparison.final_joints.back());
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
       folder.write("report.md",
                    Output::report_markdown(scene, outcome.result,
-                                           outcome.report, estimate, summary,
-                                           lines));
+                                           outcome.report, estimate,
+                                           comparison, lines));
+      return comparison;
     }
 
     /// The closing line: what was written, and in how long.
@@ -132,33 +95,25 @@ namespace FloorBlock::App
     folder.write_inputs(scene);
 
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
-    const json analytic     = write_closed_forms(folder, closed_forms);
+    write_closed_forms(folder, closed_forms);
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
     std::cout << Pipeline::fem_summary_text(outcome);
-    json summary = {{"scene", scene.scene_name},
-                    {"model", outcome.report.model},
-                    {"inputs", scene.expanded_text},
-                    {"analytic", analytic},
-                    {"fem", Output::fem_json(outcome.result, outcome.report)}};
     const auto estimate = Pipeline::estimate_error(scene, outcome, folder);
-    if (estimate)
-      summary["fem_error_estimate"] = Output::fem_error_estimate_json(*estimate);
+    std::optional<Output::RunComparison> comparison;
     if (!outcome.result.increments.empty())
       {
-        summary["face_joint_figures"] = Output::face_joint_figures(
-          outcome.result, estimate, scene.geometry.n_blocks);
         std::cout << "face joint: each figure with its estimated error and "
                      "the time of the solve that gave it\n"
-                  << Output::figure_lines(summary["face_joint_figures"]);
-        compare_and_report(outcome, closed_forms, scene, folder, estimate,
-                           summary);
+                  << Output::figure_lines(outcome.result, estimate,
+                                          scene.geometry.n_blocks);
+        comparison =
+          compare_and_report(outcome, closed_forms, scene, folder, estimate);
       }
 
     // Written last: its presence marks a finished run.
-    summary["status"]      = outcome.report.status;
-    summary["status_text"] = outcome.report.status_text;
-    summary["wall_time_s"] = timer.wall_time();
-    folder.write_summary(summary);
+    folder.write_summary(Output::run_summary_json(
+      scene, closed_forms, outcome.result, outcome.report, estimate,
+      comparison, timer.wall_time()));
     print_written(outcome, folder, timer.wall_time());
     return outcome.converged ? exit_code::success : exit_code::failure;
   }

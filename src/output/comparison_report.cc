@@ -278,22 +278,36 @@ namespace FloorBlock::Output
            plot + "\n";
   }
 
+  json
+  run_comparison_json(const RunComparison &comparison,
+                      const unsigned int   n_blocks)
+  {
+    json history = json::array();
+    for (const auto &point : comparison.lift_history)
+      history.push_back(lift_history_entry(
+        point.face_joint, comparison.constants, point.base_lift));
+    return {{"final", comparison_json(comparison.final_joints,
+                                      comparison.constants, n_blocks)},
+            {"lift_history", history}};
+  }
+
   std::string
-  lift_history_plot(const json &lift_history)
+  lift_history_plot(const std::vector<LiftHistoryPoint> &lift_history)
   {
     std::string data = "$h << EOD\n";
-    for (const auto &entry : lift_history)
+    for (const auto &point : lift_history)
       {
-        const auto &contact = entry["contact"];
-        const auto  cell    = [](const json &value, const double scale) {
-          return value.is_number() ? fmt::format("{}", value.get<double>() * scale) :
-                                     std::string("NaN");
+        const auto &contact = point.face_joint.contact;
+        const auto &formula = contact.closed_form;
+        const bool  defined = has_closed_form(formula);
+        const auto  cell    = [defined](const double value, const double scale) {
+          return defined ? fmt::format("{}", value * scale) :
+                           std::string("NaN");
         };
-        data += fmt::format(
-          "{} {} {} {} {}\n", entry["base_lift_m"].get<double>() * 1e3,
-          cell(contact["A_fem_m2"], 1.), cell(contact["A_6_51_m2"], 1.),
-          cell(contact["sigma_max_averaged_fem_Pa"], 1. / MPa),
-          cell(contact["sigma_max_6_53_Pa"], 1. / MPa));
+        data += fmt::format("{} {} {} {} {}\n", point.base_lift * 1e3,
+                            contact.fem_area, cell(formula.contact_area, 1.),
+                            contact.fem_averaged_peak_stress * (1. / MPa),
+                            cell(formula.max_stress, 1. / MPa));
       }
     data += "EOD\n";
     return data +

@@ -9,6 +9,28 @@
 
 namespace FloorBlock::Output
 {
+  /** The face joint against Eqs. 6.51-6.53 at one uplift increment. */
+  struct LiftHistoryPoint
+  {
+    double                   base_lift = 0.; ///< m, the increment's lift
+    Compare::JointComparison face_joint;
+  };
+
+  /** `run`'s comparison of the FEM with the closed forms. */
+  struct RunComparison
+  {
+    /** Every vertical joint at the last converged increment. */
+    std::vector<Compare::JointComparison> final_joints;
+    /** The face joint at every converged uplift increment. */
+    std::vector<LiftHistoryPoint> lift_history;
+    Compare::ContactConstants     constants;
+  };
+
+  /** @brief summary.json's "comparison": {"final", "lift_history"}. */
+  nlohmann::json
+  run_comparison_json(const RunComparison &comparison,
+                      const unsigned int   n_blocks);
+
   /** One record per vertical joint (the "comparison.final" list). */
   nlohmann::json
   comparison_json(const std::vector<Compare::JointComparison> &joints,
@@ -34,7 +56,7 @@ namespace FloorBlock::Output
 
   /** gnuplot: contact area and sigma_max at the face joint vs base lift. */
   std::string
-  lift_history_plot(const nlohmann::json &lift_history);
+  lift_history_plot(const std::vector<LiftHistoryPoint> &lift_history);
 
   /** gnuplot: normal traction along the face joint at the final lift. */
   std::string

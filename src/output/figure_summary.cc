@@ -105,4 +105,12 @@ namespace FloorBlock::Output
             entry["wall_time_s"].get<double>());
     return text;
   }
+
+  std::string
+  figure_lines(const Contact::SolveResult              &solve,
+               const std::optional<FemErrorEstimate> &error_estimate,
+               const unsigned int                     n_blocks)
+  {
+    return figure_lines(face_joint_figures(solve, error_estimate, n_blocks));
+  }
 } // namespace FloorBlock::Output

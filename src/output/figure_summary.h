@@ -33,4 +33,10 @@ namespace FloorBlock::Output
   /** @brief One line per figure, for the terminal. */
   std::string
   figure_lines(const nlohmann::json &figures);
+
+  /** @brief figure_lines() of face_joint_figures(). */
+  std::string
+  figure_lines(const Contact::SolveResult              &solve,
+               const std::optional<FemErrorEstimate> &error_estimate,
+               const unsigned int                     n_blocks);
 } // namespace FloorBlock::Output

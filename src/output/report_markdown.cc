@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <output/comparison_report.h>
 #include <output/fem_report.h>
 #include <output/numbering_note.h>
 #include <output/report_markdown.h>
@@ -118,10 +119,11 @@ namespace FloorBlock::Output
                   const Contact::SolveResult           &result,
                   const FemReport                      &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
-                  const json                           &summary,
+                  const RunComparison                  &comparison,
                   const std::vector<std::string>       &verdicts)
   {
-    const auto &final = summary["comparison"]["final"];
+    const json final = comparison_json(
+      comparison.final_joints, comparison.constants, scene.geometry.n_blocks);
     std::string text  = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
       "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "

@@ -1,11 +1,10 @@
 #pragma once
 
 #include <contact/results.h>
+#include <output/comparison_report.h>
 #include <output/fem_error_estimate.h>
 #include <output/fem_report.h>
 #include <parameters/scenario_parameters.h>
-
-#include <nlohmann/json.hpp>
 
 #include <optional>
 #include <string>
@@ -19,13 +18,13 @@ namespace FloorBlock::Output
    * verdict per quantity, the error estimate and the cost.
    * @param[in] result, report The solve and its FEM report.
    * @param[in] error_estimate The error estimate, if one was made.
-   * @param[in] summary The summary.json content so far (comparison).
+   * @param[in] comparison The FEM against the closed forms.
    */
   std::string
   report_markdown(const Parameters::ScenarioParameters &scene,
                   const Contact::SolveResult           &result,
                   const FemReport                      &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
-                  const nlohmann::json                 &summary,
+                  const RunComparison                  &comparison,
                   const std::vector<std::string>       &verdicts);
 } // namespace FloorBlock::Output

@@ -1,0 +1,36 @@
+#include <output/analytic_report.h>
+#include <output/figure_summary.h>
+#include <output/run_summary.h>
+
+namespace FloorBlock::Output
+{
+  using nlohmann::json;
+
+  json
+  run_summary_json(const Parameters::ScenarioParameters  &scene,
+                   const Scene::ClosedForms              &closed_forms,
+                   const Contact::SolveResult            &result,
+                   const FemReport                       &report,
+                   const std::optional<FemErrorEstimate> &estimate,
+                   const std::optional<RunComparison>    &comparison,
+                   const double                           wall_time)
+  {
+    json summary = {{"scene", scene.scene_name},
+                    {"model", report.model},
+                    {"inputs", scene.expanded_text},
+                    {"analytic", analytic_json(closed_forms)},
+                    {"fem", fem_json(result, report)},
+                    {"status", report.status},
+                    {"status_text", report.status_text},
+                    {"wall_time_s", wall_time}};
+    if (estimate)
+      summary["fem_error_estimate"] = fem_error_estimate_json(*estimate);
+    if (!result.increments.empty())
+      summary["face_joint_figures"] =
+        face_joint_figures(result, estimate, scene.geometry.n_blocks);
+    if (comparison)
+      summary["comparison"] =
+        run_comparison_json(*comparison, scene.geometry.n_blocks);
+    return summary;
+  }
+} // namespace FloorBlock::Output
