@@ -1,5 +1,6 @@
 #include <common/units.h>
 #include <output/fem_sweep_report.h>
+#include <output/gnuplot.h>
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
@@ -200,5 +201,27 @@ namespace FloorBlock::Output
         script += plot + "\n";
       }
     return script + "unset multiplot\n";
+  }
+
+  std::size_t
+  write_fem_sweep(const CaseStore                &store,
+                  const std::vector<std::string> &case_ids,
+                  const ResultFolder             &folder)
+  {
+    std::vector<json> records;
+    for (const std::string &id : case_ids)
+      if (store.has(id))
+        records.push_back(store.load(id));
+    std::set<std::string> figures;
+    for (const auto &record : records)
+      figures.insert(record["figure"].get<std::string>());
+    for (const std::string &figure : figures)
+      {
+        folder.write("sweep_fem_" + figure + ".csv",
+                     fem_sweep_csv(records, figure));
+        render_png(fem_sweep_plot(records, figure),
+                   folder.path_of("sweep_fem_" + figure + ".png"), 1600, 500);
+      }
+    return records.size();
   }
 } // namespace FloorBlock::Output

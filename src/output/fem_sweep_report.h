@@ -1,6 +1,8 @@
 #pragma once
 
+#include <output/case_store.h>
 #include <output/fem_report.h>
+#include <output/result_folder.h>
 #include <scene/chapter_figures.h>
 
 #include <nlohmann/json.hpp>
@@ -34,4 +36,15 @@ namespace FloorBlock::Output
   std::string
   fem_sweep_plot(const std::vector<nlohmann::json> &records,
                  const std::string &                figure);
+
+  /**
+   * @brief Reads the finished cases among @p case_ids from @p store and
+   * writes, per figure they belong to, sweep_fem_<figure>.csv and .png
+   * into @p folder.
+   * @return The number of finished cases.
+   */
+  std::size_t
+  write_fem_sweep(const CaseStore                &store,
+                  const std::vector<std::string> &case_ids,
+                  const ResultFolder             &folder);
 } // namespace FloorBlock::Output

@@ -36,7 +36,7 @@ namespace FloorBlock::Pipeline
             ++result.n_skipped;
             continue;
           }
-        store.store(sweep_case->id, sweep_case->compute());
+        sweep_case->compute_and_store(store);
         ++result.n_computed;
 
         const double elapsed = timer.wall_time();

@@ -3,7 +3,6 @@
 #include <output/case_store.h>
 
 #include <mpi.h>
-#include <nlohmann/json.hpp>
 
 #include <functional>
 #include <iosfwd>
@@ -15,8 +14,9 @@ namespace FloorBlock::Pipeline
   /** One case of a sweep: a stable id (its file name) and how to compute it. */
   struct SweepCase
   {
-    std::string                     id;
-    std::function<nlohmann::json()> compute;
+    std::string id;
+    /** Computes the case and stores its record in the store under id. */
+    std::function<void(const Output::CaseStore &)> compute_and_store;
   };
 
   /** What one rank did. */

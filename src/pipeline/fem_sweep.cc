@@ -3,21 +3,17 @@
 #include <pipeline/fem_sweep.h>
 #include <common/units.h>
 #include <output/fem_sweep_report.h>
-#include <output/gnuplot.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
 #include <iostream>
-#include <set>
 
 #include <unistd.h>
 
 namespace FloorBlock::Pipeline
 {
-  using nlohmann::json;
-
   namespace
   {
     /// Removes the scratch folder of a case however its solve ends.
@@ -40,8 +36,8 @@ namespace FloorBlock::Pipeline
                                                      point.id();
     }
 
-    json
-    fem_case(const Scene::FigurePoint &point)
+    void
+    fem_case(const Scene::FigurePoint &point, const Output::CaseStore &store)
     {
       const ScratchFolder scratch{std::filesystem::temp_directory_path() /
                                   ("floorblock_case_" +
@@ -50,7 +46,9 @@ namespace FloorBlock::Pipeline
       const FemOutcome outcome =
         solve_scene(point.scene, Output::ResultFolder(scratch.path.string()),
                     false);
-      return Output::fem_case_record(point, outcome.result, outcome.report);
+      store.store(case_id(point),
+                  Output::fem_case_record(point, outcome.result,
+                                          outcome.report));
     }
   } // namespace
 
@@ -63,28 +61,18 @@ namespace FloorBlock::Pipeline
     std::vector<SweepCase>  cases;
     for (const auto &point : points)
       if (limit == 0 || cases.size() < limit)
-        cases.push_back({case_id(point), [&point] { return fem_case(point); }});
+        cases.push_back({case_id(point), [&point](const auto &case_store) {
+                           fem_case(point, case_store);
+                         }});
 
     run_cases(cases, store, MPI_COMM_WORLD, std::cout);
     MPI_Barrier(MPI_COMM_WORLD);
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return 0;
 
-    std::vector<json> records;
+    std::vector<std::string> case_ids;
     for (const auto &point : points)
-      if (store.has(case_id(point)))
-        records.push_back(store.load(case_id(point)));
-    std::set<std::string> figures;
-    for (const auto &record : records)
-      figures.insert(record["figure"].get<std::string>());
-    for (const std::string &figure : figures)
-      {
-        folder.write("sweep_fem_" + figure + ".csv",
-                     Output::fem_sweep_csv(records, figure));
-        Output::render_png(Output::fem_sweep_plot(records, figure),
-                           folder.path_of("sweep_fem_" + figure + ".png"),
-                           1600, 500);
-      }
-    return points.size() - records.size();
+      case_ids.push_back(case_id(point));
+    return points.size() - Output::write_fem_sweep(store, case_ids, folder);
   }
 } // namespace FloorBlock::Pipeline
