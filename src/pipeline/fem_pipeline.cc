@@ -141,12 +141,17 @@ namespace FloorBlock::Pipeline
     outcome.report.failure       = failure_record;
     outcome.report.joint_overlap = overlap_check(outcome.result, scene);
     outcome.report.mesh          = outcome.mesh;
+    write_fem_files(outcome, folder);
+    return outcome;
+  }
+
+  void
+  write_fem_files(const FemOutcome &outcome, const Output::ResultFolder &folder)
+  {
     folder.write_json("fem.json",
                       Output::fem_json(outcome.result, outcome.report));
-    folder.write("joints.csv",
-                 Output::joints_csv(outcome.result,
-                                    scene.geometry.support_width));
-    return outcome;
+    folder.write("joints.csv", Output::joints_csv(
+                                 outcome.result, outcome.report.support_width));
   }
 
   std::string

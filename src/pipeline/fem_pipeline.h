@@ -80,6 +80,10 @@ namespace FloorBlock::Pipeline
                      const bool                            write_vtu,
                      const SolveExtras                    &extras);
 
+  /** @brief fem.json and joints.csv of a solve, into @p folder. */
+  void
+  write_fem_files(const FemOutcome &outcome, const Output::ResultFolder &folder);
+
   /** @brief Terminal summary: one line per joint, the state, and times. */
   std::string
   fem_summary_text(const FemOutcome &outcome);

@@ -42,11 +42,7 @@ namespace FloorBlock::Pipeline
       RigidBlocks::to_string(rigid.status),
       scene.model.rigid_points_per_joint,
       scene.geometry.corner_rounding_radius};
-    folder.write_json("fem.json",
-                      Output::fem_json(outcome.result, outcome.report));
-    folder.write("joints.csv",
-                 Output::joints_csv(outcome.result,
-                                    scene.geometry.support_width));
+    write_fem_files(outcome, folder);
     return outcome;
   }
 } // namespace FloorBlock::Pipeline
