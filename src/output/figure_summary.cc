@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <vector>
 
 namespace FloorBlock::Output
 {
@@ -44,6 +45,40 @@ namespace FloorBlock::Output
         total += seconds;
       return total;
     }
+
+    /** One face-joint figure with its estimated relative error. */
+    struct FaceFigure
+    {
+      const Figure         *figure;
+      double                value; ///< SI, figure->unit
+      std::optional<double> relative_error;
+    };
+
+    /** The face joint's figures; none when no increment has the joint. */
+    std::vector<FaceFigure>
+    face_figures(const Contact::SolveResult              &solve,
+                 const std::optional<FemErrorEstimate> &error_estimate,
+                 const unsigned int                     n_blocks)
+    {
+      const std::string face = "vertical " + std::to_string(n_blocks);
+      const Contact::JointReport *joint = nullptr;
+      if (!solve.increments.empty())
+        for (const auto &candidate : solve.increments.back().joints)
+          if (candidate.name == face)
+            joint = &candidate;
+      std::vector<FaceFigure> result;
+      if (joint == nullptr)
+        return result;
+      const bool estimated = error_estimate && error_estimate->available &&
+                             error_estimate->joints.count(face) > 0;
+      for (const Figure &figure : figures)
+        result.push_back(
+          {&figure, joint->*figure.member,
+           estimated ?
+             (error_estimate->joints.at(face).*figure.error).relative_error :
+             std::nullopt});
+      return result;
+    }
   } // namespace
 
   json
@@ -51,59 +86,26 @@ namespace FloorBlock::Output
                      const std::optional<FemErrorEstimate> &error_estimate,
                      const unsigned int                     n_blocks)
   {
-    const std::string           face  = "vertical " + std::to_string(n_blocks);
-    const Contact::JointReport *joint = nullptr;
-    if (!solve.increments.empty())
-      for (const auto &candidate : solve.increments.back().joints)
-        if (candidate.name == face)
-          joint = &candidate;
     const bool estimated = error_estimate && error_estimate->available;
-    json result = json::array();
-    if (joint == nullptr)
-      return result;
-    for (const Figure &figure : figures)
-      {
-        json error = nullptr;
-        if (estimated && error_estimate->joints.count(face) > 0)
-          {
-            const auto &relative =
-              (error_estimate->joints.at(face).*figure.error).relative_error;
-            if (relative)
-              error = *relative;
-          }
-        result.push_back(
-          {{"quantity", figure.name},
-           {"field", figure.key},
-           {"value", joint->*figure.member},
-           {"unit", figure.unit},
-           {"relative_error", error},
-           // A null error always comes with a status that says why.
-           {"status", error.is_number() ? "estimated" : "error not estimated"},
-           {"error_method",
-            estimated ? json(error_estimate->method) :
-                        json("none: no error estimate was made or it failed")},
-           {"wall_time_s", solve_time(solve)}});
-      }
+    json       result    = json::array();
+    for (const FaceFigure &entry :
+         face_figures(solve, error_estimate, n_blocks))
+      result.push_back(
+        {{"quantity", entry.figure->name},
+         {"field", entry.figure->key},
+         {"value", entry.value},
+         {"unit", entry.figure->unit},
+         {"relative_error", entry.relative_error ?
+                              json(*entry.relative_error) :
+                              json(nullptr)},
+         // A null error always comes with a status that says why.
+         {"status",
+          entry.relative_error ? "estimated" : "error not estimated"},
+         {"error_method",
+          estimated ? error_estimate->method :
+                      "none: no error estimate was made or it failed"},
+         {"wall_time_s", solve_time(solve)}});
     return result;
-  }
-
-  std::string
-  figure_lines(const json &figures)
-  {
-    std::string text;
-    for (const auto &entry : figures)
-      for (const Figure &figure : Output::figures)
-        if (entry["field"] == figure.key)
-          text += fmt::format(
-            "  {} = {:.4g} {} {} in {:.1f} s\n",
-            figure.name, entry["value"].get<double>() * figure.scale,
-            figure.shown_unit,
-            entry["relative_error"].is_number() ?
-              fmt::format("+- {:.2g} %",
-                          100. * entry["relative_error"].get<double>()) :
-              std::string("(error not estimated)"),
-            entry["wall_time_s"].get<double>());
-    return text;
   }
 
   std::string
@@ -111,6 +113,16 @@ namespace FloorBlock::Output
                const std::optional<FemErrorEstimate> &error_estimate,
                const unsigned int                     n_blocks)
   {
-    return figure_lines(face_joint_figures(solve, error_estimate, n_blocks));
+    std::string text;
+    for (const FaceFigure &entry :
+         face_figures(solve, error_estimate, n_blocks))
+      text += fmt::format(
+        "  {} = {:.4g} {} {} in {:.1f} s\n", entry.figure->name,
+        entry.value * entry.figure->scale, entry.figure->shown_unit,
+        entry.relative_error ?
+          fmt::format("+- {:.2g} %", 100. * *entry.relative_error) :
+          std::string("(error not estimated)"),
+        solve_time(solve));
+    return text;
   }
 } // namespace FloorBlock::Output

@@ -30,11 +30,7 @@ namespace FloorBlock::Output
                      const std::optional<FemErrorEstimate> &error_estimate,
                      const unsigned int                     n_blocks);
 
-  /** @brief One line per figure, for the terminal. */
-  std::string
-  figure_lines(const nlohmann::json &figures);
-
-  /** @brief figure_lines() of face_joint_figures(). */
+  /** @brief One terminal line per figure of face_joint_figures(). */
   std::string
   figure_lines(const Contact::SolveResult              &solve,
                const std::optional<FemErrorEstimate> &error_estimate,
