@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <utility>
 
 namespace FloorBlock::Output
@@ -191,6 +192,80 @@ namespace FloorBlock::Output
     return {{"base_lift_m", base_lift},
             {"Q_fem_N_per_m", face_joint.fem_force},
             {"contact", contact_json(face_joint, constants)}};
+  }
+
+  std::string
+  force_table_markdown(const std::vector<Compare::JointComparison> &joints,
+                       const unsigned int n_blocks)
+  {
+    // Mechanisms in name order, as in summary.json's Q_closed_form.
+    const auto by_name = [](const Compare::JointComparison &joint) {
+      std::map<std::string, const Compare::ForceComparison *> forces;
+      for (const auto &force : joint.forces)
+        forces[force.mechanism] = &force;
+      return forces;
+    };
+    std::string text = "| joint | blocks | FEM Q (kN/m) |";
+    std::string rule = "|---|---|---|";
+    for (const auto &[mechanism, force] : by_name(joints.front()))
+      {
+        text += " " + mechanism + " (kN/m, FEM vs it) |";
+        rule += "---|";
+      }
+    text += "\n" + rule + "\n";
+    for (const auto &joint : joints)
+      {
+        text += fmt::format(
+          "| {} | {} | {:.1f} |", joint.joint,
+          joint_bodies("vertical", joint.joint, n_blocks).dump(),
+          joint.fem_force / kN);
+        for (const auto &[mechanism, force] : by_name(joint))
+          text += fmt::format(
+            " {} ({}) |",
+            force->has_value ?
+              fmt::format("{:.1f}", force->closed_form * (1 / kN)) :
+              std::string("-"),
+            force->difference_status == Compare::DifferenceStatus::defined ?
+              fmt::format("{:+.0f} %", 100. * force->relative_difference) :
+              std::string("-"));
+        text += "\n";
+      }
+    return text;
+  }
+
+  std::string
+  contact_table_markdown(const std::vector<Compare::JointComparison> &joints)
+  {
+    std::string text =
+      "| joint | y (mm) | A FEM (m^2) | A 6.51 (m^2) | sigma_mean FEM "
+      "(MPa) | sigma_avg 6.52 (MPa) | sigma_max FEM averaged / pointwise "
+      "(MPa) | sigma_max 6.53 (MPa) | status |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto &joint : joints)
+      {
+        const auto &contact = joint.contact;
+        const auto &formula = contact.closed_form;
+        const bool  defined = has_closed_form(formula);
+        const auto  closed  = [defined](const double value, const double scale) {
+          return defined ? fmt::format("{:.4f}", value * scale) :
+                           std::string("-");
+        };
+        const auto closed_stress = [defined](const double value) {
+          return defined ? fmt::format("{:.2f}", value * (1 / MPa)) :
+                           std::string("-");
+        };
+        text += fmt::format(
+          "| {} | {:.3f} | {:.4f} | {} | {:.2f} | {} | {:.2f} / {:.2f} | {} "
+          "| {} |\n",
+          joint.joint, contact.floor_lift * 1e3, contact.fem_area * 1.,
+          closed(formula.contact_area, 1.),
+          contact.fem_mean_stress * (1 / MPa),
+          closed_stress(formula.average_stress),
+          contact.fem_averaged_peak_stress * (1 / MPa),
+          contact.fem_peak_stress * (1 / MPa),
+          closed_stress(formula.max_stress), contact_status(joint).first);
+      }
+    return text;
   }
 
   std::vector<std::string>

@@ -44,6 +44,22 @@ namespace FloorBlock::Output
                      const double                     base_lift);
 
   /**
+   * @brief report.md's table of Q per vertical joint: the FEM's and each
+   * closed form's (kN/m) with their relative difference, "-" where the
+   * closed form has no value or the difference is undefined.
+   */
+  std::string
+  force_table_markdown(const std::vector<Compare::JointComparison> &joints,
+                       const unsigned int n_blocks);
+
+  /**
+   * @brief report.md's corner-contact table per vertical joint: y, the
+   * contact area and stresses of the FEM against Eqs. 6.51-6.53, status.
+   */
+  std::string
+  contact_table_markdown(const std::vector<Compare::JointComparison> &joints);
+
+  /**
    * @brief One sentence per quantity at the face joint, e.g. "Eq. 6.51
    * underestimates the contact area by 23 % at the face joint".
    */

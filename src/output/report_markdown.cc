@@ -8,81 +8,8 @@
 
 namespace FloorBlock::Output
 {
-  using nlohmann::json;
-
   namespace
   {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
-
-    std::string
-    number(const json &value, const double scale, const char *format)
-    {
-      return value.is_number() ?
-               fmt::format(fmt::runtime(format), value.get<double>() * scale) :
-               std::string("-");
-    }
-
-    std::string
-    percent(const json &value)
-    {
-      return value.is_number() ?
-               fmt::format("{:+.0f} %", 100. * value.get<double>()) :
-               std::string("-");
-    }
-
-    std::string
-    force_table(const json &final_records)
-    {
-      std::string text = "| joint | blocks | FEM Q (kN/m) |";
-      std::string rule = "|---|---|---|";
-      const auto &first = final_records.front()["Q_closed_form"];
-      for (const auto &[mechanism, value] : first.items())
-        {
-          text += " " + mechanism + " (kN/m, FEM vs it) |";
-          rule += "---|";
-        }
-      text += "\n" + rule + "\n";
-      for (const auto &record : final_records)
-        {
-          text += fmt::format("| {} | {} | {:.1f} |", record["joint"].dump(),
-                              record["blocks"].dump(),
-                              record["Q_fem_N_per_m"].get<double>() / kN);
-          for (const auto &[mechanism, value] : record["Q_closed_form"].items())
-            text += fmt::format(" {} ({}) |",
-                                number(value["Q_N_per_m"], 1 / kN, "{:.1f}"),
-                                percent(value["relative_difference"]));
-          text += "\n";
-        }
-      return text;
-    }
-
-    std::string
-    contact_table(const json &final_records)
-    {
-      std::string text =
-        "| joint | y (mm) | A FEM (m^2) | A 6.51 (m^2) | sigma_mean FEM "
-        "(MPa) | sigma_avg 6.52 (MPa) | sigma_max FEM averaged / pointwise "
-        "(MPa) | sigma_max 6.53 (MPa) | status |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
-      for (const auto &record : final_records)
-        {
-          const auto &c = record["contact"];
-          text += fmt::format(
-            "| {} | {} | {} | {} | {} | {} | {} / {} | {} | {} |\n",
-            record["joint"].dump(), number(c["y_m"], 1e3, "{:.3f}"),
-            number(c["A_fem_m2"], 1., "{:.4f}"),
-            number(c["A_6_51_m2"], 1., "{:.4f}"),
-            number(c["sigma_mean_fem_Pa"], 1 / MPa, "{:.2f}"),
-            number(c["sigma_avg_6_52_Pa"], 1 / MPa, "{:.2f}"),
-            number(c["sigma_max_averaged_fem_Pa"], 1 / MPa, "{:.2f}"),
-            number(c["sigma_max_fem_Pa"], 1 / MPa, "{:.2f}"),
-            number(c["sigma_max_6_53_Pa"], 1 / MPa, "{:.2f}"),
-            c["status"].get<std::string>());
-        }
-      return text;
-    }
-
     std::string
     relative_error(const FigureError &error)
     {
@@ -122,8 +49,6 @@ namespace FloorBlock::Output
                   const RunComparison                  &comparison,
                   const std::vector<std::string>       &verdicts)
   {
-    const json final = comparison_json(
-      comparison.final_joints, comparison.constants, scene.geometry.n_blocks);
     std::string text  = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
       "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "
@@ -154,11 +79,11 @@ namespace FloorBlock::Output
     text += "## Verdicts (face joint, final lift)\n\n";
     for (const auto &line : verdicts)
       text += "- " + line + "\n";
-    text += "\n## Lateral force per vertical joint\n\n" + force_table(final) +
+    text += "\n## Lateral force per vertical joint\n\n" + force_table_markdown(comparison.final_joints, scene.geometry.n_blocks) +
             "\n![Q per joint](q_per_joint.png)\n\n"
             "## Corner contact: FEM against Eqs. 6.51-6.53 (FEM's own Q and "
             "y)\n\n" +
-            contact_table(final) +
+            contact_table_markdown(comparison.final_joints) +
             "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
             "![Traction along the face joint](face_joint_traction.png)\n\n"
             "## Discretisation error\n\n" +
