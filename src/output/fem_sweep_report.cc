@@ -31,10 +31,29 @@ namespace FloorBlock::Output
     }
 
     std::string
-    cell(const json &value, const double scale = 1.)
+    cell(const std::optional<double> &value, const double scale = 1.)
     {
-      return value.is_number() ? fmt::format("{:.9e}", value.get<double>() * scale) :
-                                 std::string();
+      return value ? fmt::format("{:.9e}", *value * scale) : std::string();
+    }
+
+    /// A number as JSON writes it (400.0, 12.5), as the CSV always had.
+    std::string
+    as_json(const double value)
+    {
+      return json(value).dump();
+    }
+
+    json
+    optional_json(const std::optional<double> &value)
+    {
+      return value ? json(*value) : json(nullptr);
+    }
+
+    std::optional<double>
+    optional_value(const json &value)
+    {
+      return value.is_null() ? std::nullopt :
+                               std::optional<double>(value.get<double>());
     }
 
     /// Degrees and tonnes as the user wrote them (30, not 29.999999999999996).
@@ -52,55 +71,115 @@ namespace FloorBlock::Output
     }
   } // namespace
 
-  json
+  FemCaseRecord
   fem_case_record(const Scene::FigurePoint   &point,
                   const Contact::SolveResult &result,
                   const FemReport            &report)
   {
-    const Contact::JointReport *face =
-      face_joint(result, point.closed_forms.chain.n_blocks());
-    const auto of_face = [face](const double Contact::JointReport::*member) {
-      return face ? json(face->*member) : json(nullptr);
-    };
-    json closed = json::object();
+    FemCaseRecord record;
+    record.id        = point.id();
+    record.figure    = point.figure;
+    record.curvature = point.curvature;
+    record.bedding_friction_deg =
+      as_written(Units::radians_to_degrees(point.bedding_friction));
+    record.vertical_friction_deg =
+      as_written(Units::radians_to_degrees(point.vertical_friction));
+    record.support_load_t =
+      as_written(point.support_load / Units::tonnes_force_to_newtons(1.));
+    record.status      = report.status;
+    record.status_text = report.status_text;
+    record.model       = report.model;
+    if (const Contact::JointReport *face =
+          face_joint(result, point.closed_forms.chain.n_blocks()))
+      {
+        record.face_force              = face->normal_force;
+        record.face_contact_length     = face->closed_length;
+        record.face_sigma_max          = face->peak_normal_stress;
+        record.face_sigma_max_averaged = face->averaged_peak_normal_stress;
+      }
+    record.n_dofs     = result.n_dofs;
+    record.wall_times = result.wall_times;
     for (const auto &entry : point.closed_forms.mechanisms)
       {
         const bool has_q = !entry.forces.lateral_force.empty();
         const bool has_stress =
           has_q && entry.contact.status == Analytic::Status::ok;
-        closed[Scene::to_string(entry.mechanism)] = {
-          {"status", Analytic::to_string(entry.forces.status)},
-          {"Q_face_N_per_m",
-           has_q ? json(entry.forces.lateral_force.back()) : json(nullptr)},
-          {"sigma_max_6_53_Pa",
-           has_stress ? json(entry.contact.max_stress) : json(nullptr)},
-          {"contact_status", Analytic::to_string(entry.contact.status)}};
+        record.closed_forms[Scene::to_string(entry.mechanism)] = {
+          Analytic::to_string(entry.forces.status),
+          has_q ? std::optional<double>(entry.forces.lateral_force.back()) :
+                  std::nullopt,
+          has_stress ? std::optional<double>(entry.contact.max_stress) :
+                       std::nullopt,
+          Analytic::to_string(entry.contact.status)};
       }
+    return record;
+  }
+
+  json
+  fem_case_json(const FemCaseRecord &record)
+  {
+    json closed = json::object();
+    for (const auto &[mechanism, entry] : record.closed_forms)
+      closed[mechanism] = {{"status", entry.status},
+                           {"Q_face_N_per_m", optional_json(entry.face_force)},
+                           {"sigma_max_6_53_Pa",
+                            optional_json(entry.max_stress)},
+                           {"contact_status", entry.contact_status}};
     return {
-      {"id", point.id()},
-      {"figure", point.figure},
-      {"k_m", point.curvature},
-      {"phi_h_deg", as_written(Units::radians_to_degrees(point.bedding_friction))},
-      {"phi_v_deg",
-       as_written(Units::radians_to_degrees(point.vertical_friction))},
-      {"support_load_t",
-       as_written(point.support_load / Units::tonnes_force_to_newtons(1.))},
+      {"id", record.id},
+      {"figure", record.figure},
+      {"k_m", record.curvature},
+      {"phi_h_deg", record.bedding_friction_deg},
+      {"phi_v_deg", record.vertical_friction_deg},
+      {"support_load_t", record.support_load_t},
       {"fem",
-       {{"status", report.status},
-        {"status_text", report.status_text},
-        {"model", report.model},
-        {"Q_face_N_per_m", of_face(&Contact::JointReport::normal_force)},
-        {"contact_length_m", of_face(&Contact::JointReport::closed_length)},
-        {"sigma_max_Pa", of_face(&Contact::JointReport::peak_normal_stress)},
+       {{"status", record.status},
+        {"status_text", record.status_text},
+        {"model", record.model},
+        {"Q_face_N_per_m", optional_json(record.face_force)},
+        {"contact_length_m", optional_json(record.face_contact_length)},
+        {"sigma_max_Pa", optional_json(record.face_sigma_max)},
         {"sigma_max_averaged_Pa",
-         of_face(&Contact::JointReport::averaged_peak_normal_stress)},
-        {"n_dofs", result.n_dofs},
-        {"wall_time_s", result.wall_times}}},
+         optional_json(record.face_sigma_max_averaged)},
+        {"n_dofs", record.n_dofs},
+        {"wall_time_s", record.wall_times}}},
       {"closed_forms", closed}};
   }
 
+  FemCaseRecord
+  fem_case_from_json(const json &case_json)
+  {
+    FemCaseRecord record;
+    record.id                    = case_json.at("id").get<std::string>();
+    record.figure                = case_json.at("figure").get<std::string>();
+    record.curvature             = case_json.at("k_m").get<double>();
+    record.bedding_friction_deg  = case_json.at("phi_h_deg").get<double>();
+    record.vertical_friction_deg = case_json.at("phi_v_deg").get<double>();
+    record.support_load_t        = case_json.at("support_load_t").get<double>();
+    const json &fem              = case_json.at("fem");
+    record.status                = fem.at("status").get<std::string>();
+    record.status_text           = fem.at("status_text").get<std::string>();
+    record.model                 = fem.value("model", "elastic FEM");
+    record.face_force            = optional_value(fem.at("Q_face_N_per_m"));
+    record.face_contact_length = optional_value(fem.at("contact_length_m"));
+    record.face_sigma_max      = optional_value(fem.at("sigma_max_Pa"));
+    record.face_sigma_max_averaged =
+      optional_value(fem.at("sigma_max_averaged_Pa"));
+    record.n_dofs = fem.at("n_dofs").get<unsigned int>();
+    record.wall_times =
+      fem.at("wall_time_s").get<std::map<std::string, double>>();
+    for (const auto &[mechanism, entry] : case_json.at("closed_forms").items())
+      record.closed_forms[mechanism] = {
+        entry.at("status").get<std::string>(),
+        optional_value(entry.at("Q_face_N_per_m")),
+        optional_value(entry.at("sigma_max_6_53_Pa")),
+        entry.at("contact_status").get<std::string>()};
+    return record;
+  }
+
   std::string
-  fem_sweep_csv(const std::vector<json> &records, const std::string &figure)
+  fem_sweep_csv(const std::vector<FemCaseRecord> &records,
+                const std::string                &figure)
   {
     std::string csv = fmt::format(
       "# {}\n# Face joint (Q_n). FEM values are empty where the FEM did not "
@@ -111,8 +190,8 @@ namespace FloorBlock::Output
       numbering_note);
     std::set<std::string> models;
     for (const auto &record : records)
-      if (record["figure"] == figure)
-        models.insert(record["fem"].value("model", "elastic FEM"));
+      if (record.figure == figure)
+        models.insert(record.model);
     csv.insert(csv.find("\nk_m,") + 1,
                fmt::format("# fem_* columns computed by: {}.\n",
                            fmt::join(models, ", ")));
@@ -124,25 +203,24 @@ namespace FloorBlock::Output
     csv += "\n";
     for (const auto &record : records)
       {
-        if (record["figure"] != figure)
+        if (record.figure != figure)
           continue;
-        const auto &fem = record["fem"];
-        const bool  ok  = fem["status"] == "converged";
-        csv += fmt::format("{},{},{},{},{},{},{},{},{}", record["k_m"].dump(),
-                           record["phi_h_deg"].dump(),
-                           record["phi_v_deg"].dump(),
-                           record["support_load_t"].dump(),
-                           fem["status"].get<std::string>(),
-                           ok ? cell(fem["Q_face_N_per_m"]) : "",
-                           ok ? cell(fem["contact_length_m"]) : "",
-                           ok ? cell(fem["sigma_max_Pa"]) : "",
-                           ok ? cell(fem["sigma_max_averaged_Pa"]) : "");
+        const bool ok = record.status == "converged";
+        csv += fmt::format(
+          "{},{},{},{},{},{},{},{},{}", as_json(record.curvature),
+          as_json(record.bedding_friction_deg),
+          as_json(record.vertical_friction_deg),
+          as_json(record.support_load_t), record.status,
+          ok ? cell(record.face_force) : "",
+          ok ? cell(record.face_contact_length) : "",
+          ok ? cell(record.face_sigma_max) : "",
+          ok ? cell(record.face_sigma_max_averaged) : "");
         for (const auto &mechanism : mechanisms)
           {
-            const auto &closed = record["closed_forms"][mechanism];
-            csv += fmt::format(",{},{},{}", closed["status"].get<std::string>(),
-                               cell(closed["Q_face_N_per_m"]),
-                               cell(closed["sigma_max_6_53_Pa"]));
+            const auto &closed = record.closed_forms.at(mechanism);
+            csv += fmt::format(",{},{},{}", closed.status,
+                               cell(closed.face_force),
+                               cell(closed.max_stress));
           }
         csv += "\n";
       }
@@ -150,31 +228,34 @@ namespace FloorBlock::Output
   }
 
   std::string
-  fem_sweep_plot(const std::vector<json> &records, const std::string &figure)
+  fem_sweep_plot(const std::vector<FemCaseRecord> &records,
+                 const std::string                &figure)
   {
     const bool  stress   = is_stress_figure(figure);
     const char *panel_by = stress ? "k_m" : "phi_v_deg";
     const char *curve_by = stress ? "support_load_t" : "phi_v_deg";
-    const char *fem_key  = stress ? "sigma_max_averaged_Pa" : "Q_face_N_per_m";
-    const char *closed_key = stress ? "sigma_max_6_53_Pa" : "Q_face_N_per_m";
-    const double scale     = stress ? 1. / MPa : 1. / kN;
+    const double scale   = stress ? 1. / MPa : 1. / kN;
 
     // panel -> curve -> rows "phi_h fem closed"
     std::map<double, std::map<double, std::string>> panels;
     for (const auto &record : records)
-      if (record["figure"] == figure)
+      if (record.figure == figure)
         {
-          const auto &fem    = record["fem"];
-          const auto &closed = record["closed_forms"]["no_rotation"];
-          const auto  value  = [&](const json &v) {
-            return v.is_number() ? fmt::format("{}", v.get<double>() * scale) :
-                                   std::string("NaN");
+          const auto &closed = record.closed_forms.at("no_rotation");
+          const auto  value  = [&](const std::optional<double> &v) {
+            return v ? fmt::format("{}", *v * scale) : std::string("NaN");
           };
-          panels[record[panel_by].get<double>()]
-                [record[curve_by].get<double>()] += fmt::format(
-                  "{} {} {}\n", record["phi_h_deg"].get<double>(),
-                  fem["status"] == "converged" ? value(fem[fem_key]) : "NaN",
-                  value(closed[closed_key]));
+          const double panel =
+            stress ? record.curvature : record.vertical_friction_deg;
+          const double curve =
+            stress ? record.support_load_t : record.vertical_friction_deg;
+          panels[panel][curve] += fmt::format(
+            "{} {} {}\n", record.bedding_friction_deg,
+            record.status == "converged" ?
+              value(stress ? record.face_sigma_max_averaged :
+                             record.face_force) :
+              "NaN",
+            value(stress ? closed.max_stress : closed.face_force));
         }
 
     std::string script = fmt::format(
@@ -208,13 +289,13 @@ namespace FloorBlock::Output
                   const std::vector<std::string> &case_ids,
                   const ResultFolder             &folder)
   {
-    std::vector<json> records;
+    std::vector<FemCaseRecord> records;
     for (const std::string &id : case_ids)
       if (store.has(id))
-        records.push_back(store.load(id));
+        records.push_back(fem_case_from_json(store.load(id)));
     std::set<std::string> figures;
     for (const auto &record : records)
-      figures.insert(record["figure"].get<std::string>());
+      figures.insert(record.figure);
     for (const std::string &figure : figures)
       {
         folder.write("sweep_fem_" + figure + ".csv",

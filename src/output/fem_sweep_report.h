@@ -7,25 +7,70 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace FloorBlock::Output
 {
+  /** A closed form's answer at the face joint of one sweep case. */
+  struct FemCaseClosedForm
+  {
+    std::string           status;         ///< of the chain equations
+    std::optional<double> face_force;     ///< Q_n (N/m); none: no finite Q
+    std::optional<double> max_stress;     ///< Eq. 6.53 (Pa); none: no answer
+    std::string           contact_status; ///< of Eqs. 6.51-6.53
+  };
+
   /**
-   * @brief The stored record of one FEM sweep case: its inputs, the FEM's
-   * face joint (Q_n, contact length, peak stresses, status) and each closed
-   * form's Q_n and sigma_max (Eq. 6.53, geometric y) for the same inputs.
+   * The record of one FEM sweep case: its inputs, the FEM's face joint and
+   * each closed form's Q_n and sigma_max (Eq. 6.53, geometric y) for the
+   * same inputs. Stored as cases/<id>.json (fem_case_json()).
    */
-  nlohmann::json
+  struct FemCaseRecord
+  {
+    std::string id;
+    std::string figure;
+    double      curvature             = 0.; ///< k (m); 0 for a planar bed
+    double      bedding_friction_deg  = 0.; ///< phi_h (deg), as written
+    double      vertical_friction_deg = 0.; ///< phi_v (deg), as written
+    double      support_load_t        = 0.; ///< support load (t), as written
+    std::string status;      ///< the FEM's: "converged" or "not converged"
+    std::string status_text; ///< why, in words
+    std::string model;       ///< "elastic FEM" or "rigid blocks"
+    /** The face joint's figures; none without a converged increment. */
+    std::optional<double> face_force;              ///< Q_n (N/m)
+    std::optional<double> face_contact_length;     ///< m
+    std::optional<double> face_sigma_max;          ///< Pa, pointwise
+    std::optional<double> face_sigma_max_averaged; ///< Pa
+    unsigned int                  n_dofs = 0;
+    std::map<std::string, double> wall_times; ///< s, per solver section
+    /** By mechanism name (Scene::to_string). */
+    std::map<std::string, FemCaseClosedForm> closed_forms;
+  };
+
+  /** @brief The record of one solved sweep case. */
+  FemCaseRecord
   fem_case_record(const Scene::FigurePoint   &point,
                   const Contact::SolveResult &result,
                   const FemReport            &report);
 
+  /** @brief The case file's JSON: units in the keys, null where absent. */
+  nlohmann::json
+  fem_case_json(const FemCaseRecord &record);
+
+  /**
+   * @brief A case file read back by the resume store (fem_case_json()'s
+   * inverse; a missing "model" means the elastic FEM).
+   */
+  FemCaseRecord
+  fem_case_from_json(const nlohmann::json &case_json);
+
   /** @brief One CSV row per case of @p figure; units in the column names. */
   std::string
-  fem_sweep_csv(const std::vector<nlohmann::json> &records,
-                const std::string &                figure);
+  fem_sweep_csv(const std::vector<FemCaseRecord> &records,
+                const std::string                &figure);
 
   /**
    * @brief gnuplot script shaped like the chapter's figure: Q at the face
@@ -34,8 +79,8 @@ namespace FloorBlock::Output
    * friction; FEM as points, closed forms as lines.
    */
   std::string
-  fem_sweep_plot(const std::vector<nlohmann::json> &records,
-                 const std::string &                figure);
+  fem_sweep_plot(const std::vector<FemCaseRecord> &records,
+                 const std::string                &figure);
 
   /**
    * @brief Reads the finished cases among @p case_ids from @p store and

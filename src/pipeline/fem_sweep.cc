@@ -47,8 +47,8 @@ namespace FloorBlock::Pipeline
         solve_scene(point.scene, Output::ResultFolder(scratch.path.string()),
                     false);
       store.store(case_id(point),
-                  Output::fem_case_record(point, outcome.result,
-                                          outcome.report));
+                  Output::fem_case_json(Output::fem_case_record(
+                    point, outcome.result, outcome.report)));
     }
   } // namespace
 
