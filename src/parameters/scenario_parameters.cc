@@ -1,10 +1,10 @@
 #include <common/input_error.h>
 #include <parameters/parameter_error_text.h>
 #include <parameters/scenario_parameters.h>
+#include <parameters/scene_file_checks.h>
 
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace FloorBlock::Parameters
@@ -94,29 +94,6 @@ namespace FloorBlock::Parameters
       return text.str();
     }
 
-    /**
-     * deal.II's .prm statement "include <file>" opens any path: the scene
-     * itself (unbounded recursion, a stack-overflow crash), /dev/zero (one
-     * endless line, a hang), a directory (silently nothing). Scenes are
-     * self-contained, so the statement is refused. Lines ending in a
-     * backslash are joined first, as deal.II joins them.
-     */
-    void
-    reject_include_statements(const std::string &path, const std::string &text)
-    {
-      const std::string joined =
-        std::regex_replace(text, std::regex(R"(\\[ \t]*\r?\n)"), "");
-      std::istringstream lines(joined);
-      for (std::string line; std::getline(lines, line);)
-        {
-          line = dealii::Utilities::trim(line.substr(0, line.find('#')));
-          if (line.rfind("include", 0) == 0 || line.rfind("INCLUDE", 0) == 0)
-            throw InputError(path + ": 'include' statements are not "
-                                    "supported; a scene file must be "
-                                    "self-contained");
-        }
-    }
-
     /// Splits "Joints/Bedding friction angle=20" into path and value and sets it.
     void
     apply_override(ParameterHandler &prm, const std::string &assignment)
@@ -158,8 +135,7 @@ namespace FloorBlock::Parameters
     ScenarioParameters scenario;
     scenario.original_text = read_text(path);
     scenario.scene_name    = std::filesystem::path(path).stem().string();
-    if (std::filesystem::path(path).extension() == ".prm")
-      reject_include_statements(path, scenario.original_text);
+    check_scene_file_text(path, scenario.original_text);
 
     try
       {

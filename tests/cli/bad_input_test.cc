@@ -85,6 +85,12 @@ namespace
     {"unbalanced_subsection_in_file", "subsection Geometry\n", ".prm", "",
      "subsection"},
     {"malformed_json", "{\"Geometry\": {", ".json", "", ".json"},
+    // The reduced fuzz input that tripped a Boost assertion in deal.II's
+    // JSON reader (an array: nodes without a name).
+    {"json_array", "[[]]", ".json", "", "without a name"},
+    {"json_member_without_name",
+     "{\"Geometry\": {\"\": {\"value\": \"3\"}}}", ".json", "",
+     "'Geometry'"},
     {"missing_scene_file", "", "", "", "does not exist"},
     {"unknown_command_line_option", "", "", "--frobnicate", "frobnicate"},
   };

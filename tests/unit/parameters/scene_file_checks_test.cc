@@ -1,0 +1,83 @@
+// Checks on the raw scene text, made before deal.II's reader sees it.
+
+#include <common/input_error.h>
+#include <parameters/scene_file_checks.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using FloorBlock::InputError;
+using FloorBlock::Parameters::check_scene_file_text;
+
+namespace
+{
+  /** The InputError text for @p text read as @p path, or "" if accepted. */
+  std::string
+  refusal(const std::string &path, const std::string &text)
+  {
+    try
+      {
+        check_scene_file_text(path, text);
+      }
+    catch (const InputError &error)
+      {
+        return error.what();
+      }
+    return "";
+  }
+
+  const std::string named_json =
+    R"({"Geometry": {"Number of blocks": {"value": "3"}}})";
+} // namespace
+
+// The tool shall refuse JSON scenes with unnamed nodes (arrays, members named
+// ""), which reach a Boost precondition inside deal.II's reader: the reduced
+// input of the fuzz abort is "[[]]".
+TEST(SceneFileChecks, JsonArraysAndEmptyNamesAreRefused)
+{
+  for (const std::string text : {"[[]]", "[1]", R"({"": 1})",
+                                 R"({"Geometry": [1, 2]})",
+                                 R"({"Geometry": [{"value": "3"}]})"})
+    EXPECT_NE(refusal("scene.json", text).find("without a name"),
+              std::string::npos)
+      << text;
+  // The message says where the unnamed node sits.
+  EXPECT_NE(refusal("scene.json", R"({"Geometry": {"": {"value": "3"}}})")
+              .find("'Geometry'"),
+            std::string::npos);
+  EXPECT_NE(refusal("scene.json", "[[]]").find("top level"),
+            std::string::npos);
+  EXPECT_EQ(refusal("scene.json", "[[]]").rfind("scene.json", 0), 0u)
+    << "the message starts with the file";
+}
+
+// The tool shall pass well-formed named scenes, and leave syntax errors to
+// deal.II's reader, which names them.
+TEST(SceneFileChecks, NamedScenesAndSyntaxErrorsPass)
+{
+  EXPECT_EQ(refusal("scene.json", named_json), "");
+  EXPECT_EQ(refusal("scene.json", "{}"), "");
+  EXPECT_EQ(refusal("scene.json", R"({"Geometry": {)"), "");
+  EXPECT_EQ(refusal("scene.xml",
+                    "<?xml version=\"1.0\"?><ParameterHandler><Geometry>"
+                    "<Number_20of_20blocks><value>3</value>"
+                    "</Number_20of_20blocks></Geometry></ParameterHandler>"),
+            "");
+  EXPECT_EQ(refusal("scene.xml", "<ParameterHandler><unclosed>"), "");
+  // The JSON check does not apply to .prm text, nor the include check to JSON.
+  EXPECT_EQ(refusal("scene.prm", "[[]]"), "");
+  EXPECT_EQ(refusal("scene.json", "include /dev/zero"), "");
+}
+
+// The tool shall refuse include statements in .prm scenes, also when a
+// backslash continuation splits the keyword.
+TEST(SceneFileChecks, PrmIncludeStatementsAreRefused)
+{
+  for (const std::string text :
+       {"include other.prm\n", "  INCLUDE /dev/zero # x\n",
+        "incl\\\nude /dev/zero\n"})
+    EXPECT_NE(refusal("scene.prm", text).find("'include'"), std::string::npos)
+      << text;
+  EXPECT_EQ(refusal("scene.prm", "# include in a comment\nset a = 1\n"), "");
+}
