@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
+#include <iostream>
 #include <map>
 #include <fstream>
 #include <limits>
@@ -58,12 +60,17 @@ namespace
     const std::filesystem::path path;
   };
 
-  /** Saves a failing input where a developer can rerun it; returns the path. */
+  std::filesystem::path
+  reproducer_folder()
+  {
+    return std::filesystem::temp_directory_path() / "floorblock_fuzz_failures";
+  }
+
+  /** Saves an input where a developer can rerun it; returns the scene path. */
   std::string
   save_reproducer(const SceneInput &input, const std::string &name)
   {
-    const auto folder =
-      std::filesystem::temp_directory_path() / "floorblock_fuzz_failures";
+    const auto folder = reproducer_folder();
     std::filesystem::create_directories(folder);
     const auto scene = folder / (name + input.extension);
     std::ofstream(scene, std::ios::binary) << input.text;
@@ -72,6 +79,47 @@ namespace
       overrides << assignment << '\n';
     return scene.string();
   }
+
+  /**
+   * Keeps the input that is running on disk until it returns: an input that
+   * aborts the process (a failed assertion in a library, a sanitizer
+   * report) leaves no other trace of itself, and the message printed at
+   * the start says where to find it.
+   */
+  class InputInProgress
+  {
+  public:
+    explicit InputInProgress(const std::uint64_t seed)
+      : name("running_seed" + std::to_string(seed) + "_pid" +
+             std::to_string(::getpid()))
+    {
+      std::cout << "[fuzz] each input is saved as " << reproducer_folder() / name
+                << ".* while it runs; after a crash that file reproduces it"
+                << std::endl; // flushed: an abort discards buffered output
+    }
+    ~InputInProgress()
+    {
+      remove_files();
+    }
+    void
+    save(const SceneInput &input) const
+    {
+      remove_files(); // the previous input may have had another extension
+      save_reproducer(input, name);
+    }
+
+  private:
+    void
+    remove_files() const
+    {
+      std::error_code ignored;
+      for (const char *extension : {".prm", ".json", ".xml", ".overrides"})
+        std::filesystem::remove(reproducer_folder() / (name + extension),
+                                ignored);
+    }
+
+    const std::string name;
+  };
 
   /**
    * An error message without the scene path, up to the first digit (values
@@ -191,10 +239,12 @@ TEST(SceneFuzz, RandomScenesGiveInputErrorOrFiniteOutput)
   std::array<std::uint64_t, n_input_kinds> n_accepted{}, n_rejected{};
   std::uint64_t                            n_failures = 0;
   std::map<std::string, std::uint64_t>     n_by_reason;
+  const InputInProgress                    in_progress(settings.seed);
   for (std::uint64_t index = 0; index < settings.n_inputs; ++index)
     {
-      const SceneInput input    = generator.next(engine);
-      bool             accepted = false;
+      const SceneInput input = generator.next(engine);
+      in_progress.save(input);
+      bool accepted = false;
       const std::string problem = failure_of(input, work, accepted, n_by_reason);
       const auto        kind    = static_cast<unsigned int>(input.kind);
       ++(accepted ? n_accepted : n_rejected)[kind];
