@@ -10,6 +10,7 @@
 # default the clock) for the same time. Either way it prints how many
 # inputs were tried and exits non-zero on the first crash or defect;
 # libFuzzer saves the crashing input under build-fuzz/artifacts/.
+# FUZZ_SANITIZE=1 (gtest mode) runs the rounds in the sanitized build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repository=$(pwd)
@@ -67,9 +68,21 @@ run_libfuzzer() {
 }
 
 run_gtest() {
-  # FUZZ_GTEST_BUILD=build reuses the CI's Release build instead of a new one.
-  local build=${FUZZ_GTEST_BUILD:-build-fuzz-gtest}
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # FUZZ_GTEST_BUILD=build reuses the CI's Release build instead of a new
+  # one; FUZZ_SANITIZE=1 runs .ci/sanitize.sh's build (build-sanitize/)
+  # under its sanitizer options instead, and fails on any report.
+  local build=${FUZZ_GTEST_BUILD:-build-fuzz-gtest} reports=""
+  if [ "${FUZZ_SANITIZE:-0}" = 1 ]; then
+    . .ci/sanitizer_env.sh
+    build=build-sanitize
+    configure_sanitized_build "$build" Debug
+    reports="$repository/$build/fuzz-sanitizer-reports"
+    rm -rf "$reports"
+    mkdir -p "$reports"
+    export_sanitizer_options "$reports" fast # fuzz_tests starts no MPI
+  else
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  fi
   cmake --build "$build" -j"$jobs" --target fuzz_tests -- --no-print-directory
   local executable="$build/tests/fuzz/fuzz_tests"
   local inputs_per_round=${FUZZ_INPUTS_PER_ROUND:-2000}
@@ -89,8 +102,15 @@ run_gtest() {
     rounds=$((rounds + 1))
     seed=$((seed + 1))
   done
-  echo "fuzz: randomized gtest, $rounds rounds in ${seconds} s: $scene_inputs scene" \
-    "inputs and $analytic_inputs analytic inputs tried, no failure"
+  local n_reports=0
+  if [ -n "$reports" ]; then
+    print_sanitizer_reports "$reports"
+    n_reports=$(find "$reports" -type f | wc -l)
+  fi
+  echo "fuzz: randomized gtest${reports:+ (sanitized)}, $rounds rounds in" \
+    "${seconds} s: $scene_inputs scene inputs and $analytic_inputs analytic" \
+    "inputs tried, no failure, $n_reports sanitizer reports"
+  [ "$n_reports" -eq 0 ]
 }
 
 echo "fuzz: mode $mode, ${seconds} s"
