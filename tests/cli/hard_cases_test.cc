@@ -620,6 +620,46 @@ TEST(HardCases, RigidJointLaw)
   EXPECT_NEAR(q_rigid, q_compliant, 0.05 * q_compliant);
 }
 
+// The default scene (six blocks, 650 t on blocks 4-6 from the face) with
+// the rigid law at low and high friction, sharp corners, a coarse mesh: the
+// scenes of the exact-contact issue, run by CI under the sanitizers too.
+namespace
+{
+  SceneNumbers
+  default_scene_at_friction(const double friction_angle_deg)
+  {
+    SceneNumbers scene;
+    scene.n_blocks         = 6;
+    scene.loaded_from_face = {4, 5, 6};
+    scene.phi_h_deg        = friction_angle_deg;
+    scene.phi_v_deg        = friction_angle_deg;
+    return scene;
+  }
+} // namespace
+
+// The tool shall solve the default scene with rigid joints at 10 deg.
+TEST(HardCases, RigidLawDefaultSceneAtTenDegrees)
+{
+  solve_converging_case("rigid_friction_10", default_scene_at_friction(10.));
+}
+
+// The tool shall solve the default scene with rigid joints at 45 deg.
+TEST(HardCases, RigidLawDefaultSceneAtFortyFiveDegrees)
+{
+  const ConvergedCase outcome =
+    solve_converging_case("rigid_friction_45", default_scene_at_friction(45.));
+  // Measured: 1 - tan^2(45 deg) = 0, so the all-slip chain bound is
+  // infinite; the blocks lift off the bed and hang on block 1 (bedding 1
+  // slips, the others open), and every vertical joint carries block 1's
+  // bedding force: Q_i = N_bed,1 for every i.
+  auto joints = joints_by_name(outcome.fem);
+  const double bedding_1 = normal_force(joints["bedding 1"]);
+  for (unsigned int joint = 1; joint <= 6; ++joint)
+    EXPECT_NEAR(normal_force(joints["vertical " + std::to_string(joint)]),
+                bedding_1, balance_tolerance * bedding_1)
+      << "vertical " << joint;
+}
+
 // The tool shall report an open joint as zero force, not as NaN.
 TEST(HardCases, JointThatLosesContactEntirely)
 {
