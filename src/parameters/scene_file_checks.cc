@@ -7,14 +7,18 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
-#include <filesystem>
+#include <algorithm>
+#include <cctype>
 #include <regex>
 #include <sstream>
+#include <vector>
 
 namespace FloorBlock::Parameters
 {
   namespace
   {
+    using PropertyTree = boost::property_tree::ptree;
+
     void
     reject_include_statements(const std::string &path, const std::string &text)
     {
@@ -32,39 +36,83 @@ namespace FloorBlock::Parameters
         }
     }
 
-    /** Throws at the first node with an empty key, depth first. */
+    /** What deal.II's demangle can read: each '_' starts "_xx", x in 0-9a-f. */
+    bool
+    has_only_valid_escapes(const std::string &name)
+    {
+      const auto is_hex_digit = [](const char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) ||
+               (c >= 'a' && c <= 'f');
+      };
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_')
+          {
+            if (i + 2 >= name.size() || !is_hex_digit(name[i + 1]) ||
+                !is_hex_digit(name[i + 2]))
+              return false;
+            i += 2;
+          }
+      return true;
+    }
+
+    std::string
+    location_text(const std::vector<std::string> &subsections)
+    {
+      if (subsections.empty())
+        return "the top level";
+      std::string text;
+      for (const std::string &name : subsections)
+        text += (text.empty() ? "" : "/") + name;
+      return "'" + text + "'";
+    }
+
+    /**
+     * Checks every name deal.II's read_xml_recursively passes to demangle,
+     * walking the levels it walks; @p subsections is the way down, for the
+     * message (built only when it throws: the nesting can be deep).
+     */
     void
-    reject_unnamed_nodes(const std::string &                 path,
-                         const boost::property_tree::ptree &node,
-                         const std::string &                 location)
+    check_names(const std::string &        path,
+                const PropertyTree &       node,
+                std::vector<std::string> &subsections)
     {
       for (const auto &[name, child] : node)
         {
           if (name.empty())
             throw InputError(
               path + ": a node without a name in " +
-              (location.empty() ? std::string("the top level") :
-                                  "'" + location + "'") +
-              " (a JSON array, or a member named \"\"): a scene file "
-              "nests named subsections and entries only, e.g. "
-              "{\"Geometry\": {\"Number of blocks\": {\"value\": \"6\"}}}");
-          reject_unnamed_nodes(path,
-                               child,
-                               location.empty() ? name :
-                                                  location + "/" + name);
+              location_text(subsections) +
+              " (a JSON array, or a member named \"\"): a scene file nests "
+              "named subsections and entries only, e.g. "
+              "{\"Geometry\": {\"Number of blocks\": \"6\"}}");
+          if (!has_only_valid_escapes(name))
+            throw InputError(
+              path + ": the name '" + name + "' in " +
+              location_text(subsections) +
+              " has an '_' that is not deal.II's escape '_' + two lowercase "
+              "hex digits (e.g. \"Number_20of_20blocks\"); write other "
+              "characters as such an escape");
+          const bool is_entry = child.get_child_optional("value") ||
+                                child.get_child_optional("alias");
+          if (!is_entry)
+            {
+              subsections.push_back(name);
+              check_names(path, child, subsections);
+              subsections.pop_back();
+            }
         }
     }
 
     void
-    reject_unnamed_nodes(const std::string &path,
-                         const std::string &text,
-                         const std::string &extension)
+    check_tree_names(const std::string &path,
+                     const std::string &text,
+                     const std::string &type)
     {
-      boost::property_tree::ptree tree;
-      std::istringstream          in(text);
+      PropertyTree       tree;
+      std::istringstream in(text);
       try
         {
-          if (extension == ".json")
+          if (type == "json")
             boost::property_tree::read_json(in, tree);
           else
             boost::property_tree::read_xml(in, tree);
@@ -73,17 +121,29 @@ namespace FloorBlock::Parameters
         {
           return; // a syntax error: deal.II's reader names it
         }
-      reject_unnamed_nodes(path, tree, "");
+      std::vector<std::string> subsections;
+      check_names(path, tree, subsections);
+    }
+
+    /** The file type as ParameterHandler::parse_input picks it. */
+    std::string
+    file_type(const std::string &path)
+    {
+      std::string type = path.substr(path.find_last_of('.') + 1);
+      std::transform(type.begin(), type.end(), type.begin(), [](const char c) {
+        return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      });
+      return type;
     }
   } // namespace
 
   void
   check_scene_file_text(const std::string &path, const std::string &text)
   {
-    const std::string extension = std::filesystem::path(path).extension();
-    if (extension == ".prm")
+    const std::string type = file_type(path);
+    if (type == "prm")
       reject_include_statements(path, text);
-    else if (extension == ".json" || extension == ".xml")
-      reject_unnamed_nodes(path, text, extension);
+    else if (type == "json" || type == "xml")
+      check_tree_names(path, text, type);
   }
 } // namespace FloorBlock::Parameters

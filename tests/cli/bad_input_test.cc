@@ -91,6 +91,9 @@ namespace
     {"json_member_without_name",
      "{\"Geometry\": {\"\": {\"value\": \"3\"}}}", ".json", "",
      "'Geometry'"},
+    // deal.II's demangle aborts (debug) or reads past the name (release).
+    {"json_name_with_invalid_escape", "{\"a_\": \"1\"}", ".json", "",
+     "escape"},
     {"missing_scene_file", "", "", "", "does not exist"},
     {"unknown_command_line_option", "", "", "--frobnicate", "frobnicate"},
   };

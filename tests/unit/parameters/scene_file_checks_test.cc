@@ -46,10 +46,50 @@ TEST(SceneFileChecks, JsonArraysAndEmptyNamesAreRefused)
   EXPECT_NE(refusal("scene.json", R"({"Geometry": {"": {"value": "3"}}})")
               .find("'Geometry'"),
             std::string::npos);
-  EXPECT_NE(refusal("scene.json", "[[]]").find("top level"),
+  EXPECT_NE(refusal("scene.json", "[[]]").find("the top level"),
             std::string::npos);
   EXPECT_EQ(refusal("scene.json", "[[]]").rfind("scene.json", 0), 0u)
     << "the message starts with the file";
+}
+
+// The tool shall refuse names with an '_' that is not deal.II's escape
+// ('_' + two lowercase hex digits): deal.II's demangle aborts on them in its
+// debug library and reads past the name in its release library.
+TEST(SceneFileChecks, NamesWithInvalidEscapesAreRefused)
+{
+  for (const std::string text :
+       {R"({"a_": "1"})", R"({"_": {"x": "1"}})", R"({"Geometry": {"x_zz": "1"}})",
+        R"({"Geometry": {"x_4": "1"}})", R"({"Geometry": {"x_2F": "1"}})"})
+    EXPECT_NE(refusal("scene.json", text).find("escape"), std::string::npos)
+      << text;
+  EXPECT_NE(refusal("scene.xml",
+                    "<ParameterHandler><Geometry><x_zz>1</x_zz></Geometry>"
+                    "</ParameterHandler>")
+              .find("'ParameterHandler/Geometry'"),
+            std::string::npos);
+}
+
+// The tool shall check only the names deal.II reads: not those below an
+// entry (its own JSON output has "default_value" there), and escapes as
+// deal.II writes them pass.
+TEST(SceneFileChecks, NamesBelowEntriesAndValidEscapesPass)
+{
+  EXPECT_EQ(refusal("scene.json",
+                    R"({"Joints": {"Law": {"value": "rigid",)"
+                    R"( "default_value": "compliant", "n": [1]}}})"),
+            "");
+  EXPECT_EQ(refusal("scene.json", R"({"Geometry": {"Number_20of_20blocks": "3"}})"),
+            "");
+}
+
+// The tool shall choose the file type as deal.II does (the text after the
+// last '.', in any case), so that no spelling of the extension skips a check.
+TEST(SceneFileChecks, FileTypeIsChosenAsDealIiChoosesIt)
+{
+  EXPECT_NE(refusal("scene.JSON", "[[]]"), "");
+  EXPECT_NE(refusal("/a.b/.json", "[[]]"), "");
+  EXPECT_NE(refusal("scene.Prm", "include x.prm\n"), "");
+  EXPECT_EQ(refusal("scene.json.txt", "[[]]"), "") << "not a JSON file for deal.II";
 }
 
 // The tool shall pass well-formed named scenes, and leave syntax errors to
