@@ -93,8 +93,10 @@ run_gtest() {
     if ! output=$(FLOORBLOCK_FUZZ_SEED=$seed FLOORBLOCK_FUZZ_INPUTS=$inputs_per_round \
       "$executable" --gtest_filter='*Fuzz.Random*:*Fuzz.Hostile*' 2>&1); then
       echo "$output" | tail -n 40
+      [ -z "$reports" ] || print_sanitizer_reports "$reports"
       echo "fuzz: FAILED at seed $seed (rerun: FLOORBLOCK_FUZZ_SEED=$seed" \
-        "FLOORBLOCK_FUZZ_INPUTS=$inputs_per_round $executable)"
+        "FLOORBLOCK_FUZZ_INPUTS=$inputs_per_round $executable; an input that" \
+        "aborted is kept in ${TMPDIR:-/tmp}/floorblock_fuzz_failures)"
       return 1
     fi
     scene_inputs=$((scene_inputs + $(echo "$output" | grep -o '[0-9]* scene inputs tried' | grep -o '^[0-9]*')))
@@ -109,7 +111,7 @@ run_gtest() {
   fi
   echo "fuzz: randomized gtest${reports:+ (sanitized)}, $rounds rounds in" \
     "${seconds} s: $scene_inputs scene inputs and $analytic_inputs analytic" \
-    "inputs tried, no failure, $n_reports sanitizer reports"
+    "inputs tried, no failing test, $n_reports sanitizer reports"
   [ "$n_reports" -eq 0 ]
 }
 

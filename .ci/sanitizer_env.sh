@@ -35,8 +35,8 @@ export_sanitizer_options() { # <reports folder> <fast|slow>
 # Prints every report under <reports folder>.
 print_sanitizer_reports() { # <reports folder>
   local report
-  for report in $(find "$1" -type f | sort); do
+  while IFS= read -r -d '' report; do
     echo "sanitizer report $report:"
     head -n 60 "$report"
-  done
+  done < <(find "$1" -type f -print0 | sort -z)
 }

@@ -93,7 +93,8 @@ namespace
       : name("running_seed" + std::to_string(seed) + "_pid" +
              std::to_string(::getpid()))
     {
-      std::cout << "[fuzz] each input is saved as " << reproducer_folder() / name
+      std::cout << "[fuzz] each input is saved as "
+                << (reproducer_folder() / name).string()
                 << ".* while it runs; after a crash that file reproduces it"
                 << std::endl; // flushed: an abort discards buffered output
     }
