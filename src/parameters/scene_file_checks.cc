@@ -103,11 +103,70 @@ namespace FloorBlock::Parameters
         }
     }
 
+    /**
+     * Deepest nesting of JSON arrays/objects or XML elements, read from the
+     * raw text (strings, comments and declarations skipped); XML attribute
+     * values holding '>' can make it inexact, which a limit far above any
+     * scene's depth absorbs.
+     */
+    unsigned int
+    nesting_depth(const std::string &text, const std::string &type)
+    {
+      unsigned int depth = 0, deepest = 0;
+      if (type == "json")
+        {
+          bool in_string = false;
+          for (std::size_t i = 0; i < text.size(); ++i)
+            {
+              const char c = text[i];
+              if (in_string)
+                {
+                  if (c == '\\')
+                    ++i;
+                  else if (c == '"')
+                    in_string = false;
+                }
+              else if (c == '"')
+                in_string = true;
+              else if (c == '[' || c == '{')
+                deepest = std::max(deepest, ++depth);
+              else if ((c == ']' || c == '}') && depth > 0)
+                --depth;
+            }
+          return deepest;
+        }
+      for (std::size_t start = text.find('<'); start != std::string::npos;
+           start = text.find('<', start + 1))
+        {
+          const std::size_t end = text.find('>', start);
+          if (end == std::string::npos || start + 1 >= text.size())
+            break;
+          const char next = text[start + 1];
+          if (next == '/')
+            depth = depth > 0 ? depth - 1 : 0;
+          else if (next != '?' && next != '!' && text[end - 1] != '/')
+            deepest = std::max(deepest, ++depth);
+        }
+      return deepest;
+    }
+
     void
     check_tree_names(const std::string &path,
                      const std::string &text,
                      const std::string &type)
     {
+      // A scene nests subsection, entry and value: a handful of levels.
+      // Boost's parsers recurse once per level and overflow the stack long
+      // before 1e5 levels (a crash, measured), so deeper text is refused
+      // before they read it.
+      constexpr unsigned int deepest_allowed = 100;
+      const unsigned int     depth           = nesting_depth(text, type);
+      if (depth > deepest_allowed)
+        throw InputError(path + ": nested " + std::to_string(depth) +
+                         " levels deep; a scene file nests at most " +
+                         std::to_string(deepest_allowed) +
+                         " (subsections, entries and values need a few)");
+
       PropertyTree       tree;
       std::istringstream in(text);
       try

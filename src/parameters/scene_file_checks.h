@@ -28,6 +28,10 @@ namespace FloorBlock::Parameters
    *   release library reads past the name's end). Both are an assertion in
    *   debug builds and undefined behaviour in release builds.
    *
+   *   Refused before any parsing: nesting deeper than 100 levels (Boost's
+   *   recursive parsers overflow the stack on very deep text; a scene needs
+   *   a few levels).
+   *
    * Text that does not parse as JSON or XML passes: deal.II's own reader
    * reports the syntax error.
    *

@@ -94,6 +94,9 @@ namespace
     // deal.II's demangle aborts (debug) or reads past the name (release).
     {"json_name_with_invalid_escape", "{\"a_\": \"1\"}", ".json", "",
      "escape"},
+    // Boost's recursive parsers overflow the stack on very deep nesting.
+    {"json_nested_too_deep", std::string(1000, '[') + std::string(1000, ']'),
+     ".json", "", "1000 levels deep"},
     {"missing_scene_file", "", "", "", "does not exist"},
     {"unknown_command_line_option", "", "", "--frobnicate", "frobnicate"},
   };

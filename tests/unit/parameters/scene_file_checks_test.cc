@@ -92,6 +92,33 @@ TEST(SceneFileChecks, FileTypeIsChosenAsDealIiChoosesIt)
   EXPECT_EQ(refusal("scene.json.txt", "[[]]"), "") << "not a JSON file for deal.II";
 }
 
+// The tool shall refuse very deep nesting before Boost's recursive parsers
+// read it: 200000 levels crashed the process with a stack overflow.
+TEST(SceneFileChecks, VeryDeepNestingIsRefused)
+{
+  constexpr std::size_t n_levels = 200000;
+  const std::string     json =
+    std::string(n_levels, '[') + std::string(n_levels, ']');
+  EXPECT_NE(refusal("scene.json", json).find("200000 levels deep"),
+            std::string::npos);
+  std::string xml = "<ParameterHandler>";
+  for (std::size_t level = 0; level < n_levels; ++level)
+    xml += "<a>";
+  for (std::size_t level = 0; level < n_levels; ++level)
+    xml += "</a>";
+  xml += "</ParameterHandler>";
+  EXPECT_NE(refusal("scene.xml", xml).find("levels deep"), std::string::npos);
+  // Brackets inside strings do not count; 100 levels are allowed.
+  EXPECT_EQ(refusal("scene.json",
+                    R"({"Geometry": {"Number of blocks": ")" +
+                      std::string(500, '[') + R"("}})"),
+            "");
+  EXPECT_EQ(refusal("scene.json", "{\"Geometry\": " + std::string(99, '[') +
+                                    std::string(99, ']') + "}")
+              .find("levels deep"),
+            std::string::npos);
+}
+
 // The tool shall pass well-formed named scenes, and leave syntax errors to
 // deal.II's reader, which names them.
 TEST(SceneFileChecks, NamedScenesAndSyntaxErrorsPass)
