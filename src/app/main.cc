@@ -1,6 +1,7 @@
 #include <app/command_options.h>
 #include <common/input_error.h>
 #include <common/interrupt.h>
+#include <common/mpi_session_directory.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -155,12 +156,15 @@ namespace
              char                               **&argv)
   {
     // MPI start-up costs most of a second here; closed-form commands skip it.
+    // The session directory is declared first so that it outlives MPI.
+    std::optional<PrivateMpiSessionDirectory>               session_directory;
     std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
     for (const auto &[sub, command] : dispatch)
       if (sub->parsed())
         {
           if (needs_mpi.count(sub->get_name()) > 0)
             {
+              session_directory.emplace();
               mpi.emplace(argc, argv, 1);
               // Again after MPI start-up, in case the MPI library installed
               // handlers of its own.

@@ -1,3 +1,5 @@
+#include <common/mpi_session_directory.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>
@@ -5,6 +7,9 @@
 int
 main(int argc, char **argv)
 {
+  // Test executables start side by side under ctest -j: a private Open MPI
+  // session directory each (see the class), declared first to outlive MPI.
+  const FloorBlock::PrivateMpiSessionDirectory session_directory;
   // One thread: tests must give the same answer on a loaded CI machine.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
