@@ -3,6 +3,8 @@
 // small change, and fail cleanly on a singular matrix.
 #include <solver/reused_factorization.h>
 
+#include "tridiagonal_pattern.h"
+
 #include <gtest/gtest.h>
 
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
@@ -55,11 +57,7 @@ namespace
     SetUp() override
     {
       const dealii::IndexSet all = dealii::complete_index_set(n);
-      pattern.reinit(all, all, MPI_COMM_SELF);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1); ++j)
-          pattern.add(i, j);
-      pattern.compress();
+      FloorBlockTest::make_tridiagonal_pattern(n, pattern);
       matrix.reinit(pattern);
       rhs.reinit(all, MPI_COMM_SELF);
       x.reinit(all, MPI_COMM_SELF);
