@@ -13,10 +13,11 @@
 #   too), converge and sweep, and every bad-input case;
 # - fuzz_tests: 2000 random scenes and the closed forms' hostile inputs;
 # - the unit tests of common, analytic, parameters and rigid.
-# Left out: the unit tests of geometry, contact, convergence and
-# verification, and the scenario label (Gmsh meshing and FEM solves, which
-# cli_tests already run end to end, at several times their Release cost
-# under ASan and deal.II's debug library). ctest lists tests of unbuilt
+# Left out: the other modules' unit tests (geometry, contact, convergence,
+# verification, fem, solver, pipeline, ...) and the scenario label: their
+# code (Gmsh meshing, FEM solves) runs here through cli_tests end to end,
+# and each executable would add its own Debug build and several times its
+# Release run time under ASan and deal.II's debug library. ctest lists tests of unbuilt
 # executables as "<target>_NOT_BUILT"; they are excluded by name.
 #
 # Environment: SANITIZE_BUILD_TYPE (default Debug), JOBS (default nproc),
