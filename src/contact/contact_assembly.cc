@@ -17,6 +17,8 @@ namespace FloorBlock
       std::vector<JointResponse<dim>> responses(nodes.size());
       for (unsigned int p = 0; p < nodes.size(); ++p)
         {
+          if (laws[p] == nullptr)
+            continue;
           const ContactNode<dim> &node = nodes[p];
           dealii::Tensor<1, dim>  jump = node.initial_gap * node.normal;
           for (unsigned int c = 0; c < dim; ++c)

@@ -17,7 +17,9 @@ namespace FloorBlock
      * @brief Evaluates the joint law of every pair at the displacement
      * @p solution.
      * @param[in] nodes Contact pairs.
-     * @param[in] laws One law per pair (the law of the pair's joint).
+     * @param[in] laws One law per pair (the law of the pair's joint); a
+     *   null law (an exact-law pair, see ExactContact) leaves the pair's
+     *   response at its default.
      * @param[in] histories One history per pair.
      * @param[in] solution Displacement (m).
      */

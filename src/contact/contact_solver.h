@@ -2,6 +2,7 @@
 
 #include <contact/active_set.h>
 #include <contact/contact_node.h>
+#include <contact/exact_contact.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
 #include <contact/scene.h>
@@ -19,6 +20,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,8 +100,12 @@ namespace FloorBlock
                        const double       prediction,
                        IncrementResult   &increment,
                        std::string       &failure_reason);
-      bool
-      update_multipliers(const std::vector<JointResponse<2>> &responses);
+      /** Builds the multipliers' system (rigid-law pairs only). */
+      void
+      setup_exact_system();
+      /** Every pair's law at the current iterate. */
+      std::vector<JointResponse<2>>
+      responses_at_iterate();
       Fem::ElasticModel<2>
       scaled_model(const LoadFactors &factors) const;
       dealii::AffineConstraints<double>
@@ -122,7 +128,19 @@ namespace FloorBlock
       std::vector<ContactNode<2>>   nodes;
       std::vector<std::unique_ptr<CoulombJoint<2>>> joint_laws;
       std::vector<const CoulombJoint<2> *>           pair_laws;
-      std::vector<bool>                              pair_is_rigid;
+      /** Per pair: the exact law, empty for a compliant pair. */
+      std::vector<std::optional<ExactPairLaw>>       exact_laws;
+      /** The exact law's equations; null when every pair is compliant. */
+      std::unique_ptr<ExactContact<2>>               exact;
+      /** Displacements and multipliers (exact law only). */
+      dealii::TrilinosWrappers::SparsityPattern      system_pattern;
+      /** K and B^T, the constant part of the Newton matrix (exact law). */
+      dealii::TrilinosWrappers::SparseMatrix         base_matrix;
+      dealii::TrilinosWrappers::MPI::Vector          system_residual;
+      dealii::TrilinosWrappers::MPI::Vector          system_update;
+      dealii::Vector<double>                         multiplier_update;
+      dealii::Vector<double>                         multiplier_base;
+      dealii::Vector<double>                         committed_multipliers;
       std::vector<JointHistory<2>>  committed_history;
       std::vector<JointHistory<2>>  working_history;
       std::vector<JointResponse<2>> committed_responses;

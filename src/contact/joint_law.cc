@@ -42,8 +42,9 @@ namespace FloorBlock
         dealii::unit_symmetric_tensor<dim>();
       const dealii::Tensor<2, dim> normal_projector =
         outer_product(normal, normal);
-      response.normal_traction = normal_trial;
-      response.tangent         = constants.normal_stiffness * normal_projector;
+      response.normal_traction   = normal_trial;
+      response.tangent           = constants.normal_stiffness * normal_projector;
+      response.closure_stiffness = constants.normal_stiffness;
 
       const double friction_coefficient = std::tan(constants.friction_angle);
       const double cohesion = history.intact ? constants.cohesion : 0.;

@@ -67,6 +67,12 @@ namespace FloorBlock
       dealii::Tensor<1, dim> force_density;
       /** Consistent tangent d(force_density)/d(jump) (Pa/m). */
       dealii::Tensor<2, dim> tangent;
+      /**
+       * Closed pair: the normal stiffness that scales its contact indicator
+       * (Pa/m), kn for the compliant law, the surface stiffness E / h for
+       * the exact law; 0 when open.
+       */
+      double closure_stiffness = 0.;
       /** Normal gap (m), negative = overlap. */
       double gap = 0.;
       /** Tangential relative displacement (m). */

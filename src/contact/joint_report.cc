@@ -130,12 +130,11 @@ namespace FloorBlock
     } // namespace
 
     double
-    contact_indicator(const JointResponse<2>     &response,
-                      const dealii::Tensor<1, 2> &normal)
+    contact_indicator(const JointResponse<2> &response)
     {
       if (response.state == JointState::open)
         return -response.gap;
-      const double normal_stiffness = normal * (response.tangent * normal);
+      const double normal_stiffness = response.closure_stiffness;
       if (!(normal_stiffness > 0.))
         return std::numeric_limits<double>::quiet_NaN();
       return response.normal_traction / normal_stiffness;
@@ -244,7 +243,7 @@ namespace FloorBlock
               report.profile.push_back(sample);
               weights.push_back(weight);
               indicators.push_back(
-                contact_indicator(response, nodes[p].normal));
+                contact_indicator(response));
               // The joint's forces are the components of the resultant
               // along the reference normal and tangent, so that the joint
               // tables balance each block also where fillet nodes turn

@@ -15,35 +15,28 @@ namespace FloorBlock
      * @brief Contact indicator of one pair: positive when closed, negative
      * when open, zero at the end of a closed zone.
      *
-     * \f$\phi = t_n^{trial}/k_n = \lambda_n/k_n - g\f$, the law's own
-     * closure test (closed iff \f$t_n^{trial} \ge 0\f$ without tensile
-     * strength) in units of length. Closed pair: \f$\phi = t_n/k_n\f$ with
-     * \f$k_n = n\cdot K n\f$ read from the pair's tangent K (the law puts
-     * \f$k_n n\otimes n\f$ there; its shear terms have no nn part). Open
-     * pair: \f$\phi = -g\f$, i.e. \f$\lambda_n = 0\f$, which holds for the
-     * compliant law and for the rigid law's converged multipliers.
+     * \f$\phi = \lambda_n/k - g\f$ in units of length, with \f$k\f$ the
+     * pair's JointResponse::closure_stiffness. Closed pair: \f$\phi =
+     * t_n/k\f$; open pair: \f$\phi = -g\f$ (\f$\lambda_n = 0\f$).
      *
-     * Compliant law (\f$t_n = -k_n g\f$): \f$\phi = -g\f$ on both sides,
-     * so the zero of its linear interpolation is the zero of the gap, which
-     * is linear along a degree-1 element edge. Rigid law (closed
-     * \f$g \approx 0\f$, open \f$t_n = 0\f$): \f$\phi\f$ is the pressure
-     * over the pair's penalty on the closed side and minus the gap on the
-     * open side, both zero at the end. Either way \f$\phi\f$ is a
-     * continuous function of the displacements, so the interpolated end
-     * moves continuously when a pair changes state. Where inside the cell
-     * it lies depends on \f$k_n\f$: the rigid law's penalty is of the
-     * order of the surface stiffness E / h, so pressure and gap weigh
-     * alike; a compliant joint with \f$k_n \gg E/h\f$ puts the end next to
-     * its last closed node.
+     * Compliant law (\f$t_n = -k_n g\f$, \f$k = k_n\f$): \f$\phi = -g\f$
+     * on both sides, so the zero of its linear interpolation is the zero of
+     * the gap, which is linear along a degree-1 element edge. Exact law
+     * (closed \f$g = 0\f$, open \f$\lambda_n = 0\f$): \f$\phi\f$ is the
+     * pressure over the surface stiffness E / h on the closed side and
+     * minus the gap on the open side, both zero at the end, so pressure and
+     * gap weigh alike; the scale is the mesh's, never the complementarity
+     * parameter, which must not change a result. Either way \f$\phi\f$ is
+     * a continuous function of the solution, so the interpolated end moves
+     * continuously when a pair changes state. A compliant joint with
+     * \f$k_n \gg E/h\f$ puts the end next to its last closed node.
      *
      * @param[in] response Law evaluation of the pair.
-     * @param[in] normal Unit normal of the pair.
-     * @return \f$\phi\f$ (m); NaN for a closed pair whose tangent has no
-     *   positive normal stiffness (nothing to scale with).
+     * @return \f$\phi\f$ (m); NaN for a closed pair without a positive
+     *   closure stiffness (nothing to scale with).
      */
     double
-    contact_indicator(const JointResponse<2>     &response,
-                      const dealii::Tensor<1, 2> &normal);
+    contact_indicator(const JointResponse<2> &response);
 
     /**
      * @brief Per-joint forces, closed length, peak and mean normal stress.

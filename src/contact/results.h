@@ -79,7 +79,6 @@ namespace FloorBlock
        * iterations count in SolveResult::n_failed_newton_iterations.
        */
       unsigned int n_newton_iterations = 0;
-      unsigned int n_multiplier_updates = 0;
       /** Failed attempts (cutbacks) before this increment converged. */
       unsigned int n_cutbacks        = 0;
       double       relative_residual = 0.;

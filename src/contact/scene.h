@@ -110,22 +110,12 @@ namespace FloorBlock
       /** Halvings of a failed increment before giving up. */
       unsigned int max_cutbacks = 6;
       /**
-       * Rigid law: augmentation stiffness = this factor times the largest
-       * Young's modulus over the smallest cell diameter (-). Larger values
-       * need fewer multiplier updates but make the friction Newton fragile:
-       * 100 diverged in the two-block test and 4 in the default scene; 1
-       * converges in both (~15-30 updates per increment), 0.25 needs more
-       * than 50 updates.
+       * Rigid law: complementarity parameter c_n = c_t of a pair = this
+       * factor times the largest Young's modulus over the pair's length
+       * (its weight, at least the smallest cell diameter) (-). It changes
+       * the Newton iterates, never the converged answer (ExactContact).
        */
       double rigid_penalty_factor = 1.;
-      /**
-       * Rigid law: the augmented Lagrangian stops when the largest overlap
-       * of a closed pair and slip of a stuck pair are below this fraction
-       * of the largest displacement (-).
-       */
-      double rigid_constraint_tolerance = 1e-6;
-      /** Rigid law: Uzawa updates allowed per increment. */
-      unsigned int max_multiplier_updates = 50;
       /**
        * Start each increment after the first of a stage from the linear
        * extrapolation of the last converged increment of the same stage,

@@ -175,7 +175,6 @@ namespace FloorBlock::Output
           {{"stage", stage_name(increment.stage)},
            {"stage_factor", increment.stage_factor},
            {"newton_iterations", increment.n_newton_iterations},
-           {"multiplier_updates", increment.n_multiplier_updates},
            {"cutbacks", increment.n_cutbacks},
            {"relative_residual", increment.relative_residual},
            {"stopped_at_round_off_floor", increment.round_off_limited},

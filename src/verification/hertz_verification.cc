@@ -133,10 +133,7 @@ namespace FloorBlock
         solved.increments.back().joints.at(0);
       result.n_dofs = solved.n_dofs;
       for (const Contact::IncrementResult &increment : solved.increments)
-        {
-          result.n_newton_iterations += increment.n_newton_iterations;
-          result.n_multiplier_updates += increment.n_multiplier_updates;
-        }
+        result.n_newton_iterations += increment.n_newton_iterations;
       result.contact_force = 2. * report.normal_force;
       double last_closed = 0., first_open = settings.radius;
       for (const auto &sample : report.profile)

@@ -50,9 +50,8 @@ namespace FloorBlock
       /** Contact element size at the contact point (m). */
       double contact_cell_size = 0.;
       unsigned int n_dofs = 0;
-      /** Newton iterations and Uzawa updates, summed over the increments. */
-      unsigned int n_newton_iterations  = 0;
-      unsigned int n_multiplier_updates = 0;
+      /** Newton iterations, summed over the increments. */
+      unsigned int n_newton_iterations = 0;
       double       half_width_error() const
       {
         return half_width_computed / half_width_exact - 1.;

@@ -26,7 +26,6 @@ namespace FloorBlock
       settings.linear.kind                = Solver::LinearSolverKind::direct;
       settings.newton.relative_tolerance  = 1e-12;
       settings.max_cutbacks               = 3;
-      settings.rigid_constraint_tolerance = 1e-8;
       return settings;
     }
 

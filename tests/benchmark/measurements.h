@@ -41,7 +41,6 @@ namespace FloorBlock::Benchmark
     unsigned int n_dofs               = 0;
     unsigned int n_increments         = 0;
     unsigned int n_newton_iterations  = 0;
-    unsigned int n_multiplier_updates = 0;
     unsigned int n_cutbacks           = 0;
     /** Closed length of the face joint at the end of the loading path (m). */
     double face_contact_length = 0.;
@@ -69,7 +68,6 @@ namespace FloorBlock::Benchmark
     unsigned int mesh_level = 0;
     unsigned int n_dofs     = 0;
     unsigned int n_newton_iterations  = 0;
-    unsigned int n_multiplier_updates = 0;
     StageTime    time;
     double       half_width_error    = 0.; ///< relative (-)
     double       peak_pressure_error = 0.; ///< relative (-)

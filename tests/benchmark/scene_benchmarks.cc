@@ -253,7 +253,6 @@ namespace FloorBlock::Benchmark
       for (const auto &increment : result.increments)
         {
           record.n_newton_iterations += increment.n_newton_iterations;
-          record.n_multiplier_updates += increment.n_multiplier_updates;
           record.n_cutbacks += increment.n_cutbacks;
         }
       record.sections = result.wall_times;
@@ -308,7 +307,6 @@ namespace FloorBlock::Benchmark
       state.counters["dofs"]       = level_data.n_dofs;
       state.counters["increments"] = record.n_increments;
       state.counters["newton"]     = record.n_newton_iterations;
-      state.counters["updates"]    = record.n_multiplier_updates;
       state.counters["face_contact_mm"] = 1e3 * record.face_contact_length;
     }
 
@@ -328,7 +326,6 @@ namespace FloorBlock::Benchmark
                 Verification::run_hertz_verification(settings);
               record.n_dofs               = result.n_dofs;
               record.n_newton_iterations  = result.n_newton_iterations;
-              record.n_multiplier_updates = result.n_multiplier_updates;
               record.half_width_error     = result.half_width_error();
               record.peak_pressure_error  = result.peak_pressure_error();
             }

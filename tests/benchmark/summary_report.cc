@@ -107,10 +107,10 @@ namespace FloorBlock::Benchmark
         "\n### Whole contact solve (ContactSolver construction + run(), no "
         "output files)\n\n"
         "| law | r | DoFs | status | wall (s) | CPU (s) | increments | Newton "
-        "iterations | multiplier updates | cutbacks | face contact (mm) | "
+        "iterations | cutbacks | face contact (mm) | "
         "solver's linear-solve section / Newton iterations (ms) | whole / one "
         "linear elastic solve (CPU) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const std::string &law : laws_of(all))
         for (const auto &[r, level] : all.levels)
           {
@@ -121,13 +121,12 @@ namespace FloorBlock::Benchmark
             const auto linear = level.stages.find("linear_solve");
             const auto section = solve.sections.find("Contact: linear solve");
             text += fmt::format(
-              "| {} | {} | {} | {} | {:.2f} | {:.2f} | {} | {} | {} | {} | "
+              "| {} | {} | {} | {} | {:.2f} | {:.2f} | {} | {} | {} | "
               "{:.1f} | {} | {} |\n",
               law, r, level.n_dofs,
               solve.converged ? "converged" : "failed: " + solve.failure,
               solve.time.wall, solve.time.cpu, solve.n_increments,
-              solve.n_newton_iterations, solve.n_multiplier_updates,
-              solve.n_cutbacks,
+              solve.n_newton_iterations, solve.n_cutbacks,
               millimetres_per_metre * solve.face_contact_length,
               section == solve.sections.end() ||
                   solve.n_newton_iterations == 0 ?
@@ -284,15 +283,15 @@ namespace FloorBlock::Benchmark
         return "";
       std::string text =
         "\n### Hertz verification (run_hertz_verification, rigid law)\n\n"
-        "| mesh level | DoFs | Newton iterations | multiplier updates | wall "
+        "| mesh level | DoFs | Newton iterations | wall "
         "(s) | CPU (s) | half-width error (%) | peak pressure error (%) |\n"
-        "|---|---|---|---|---|---|---|---|\n";
+        "|---|---|---|---|---|---|---|\n";
       for (const auto &[level, hertz] : all.hertz)
         text += hertz.failure.empty() ?
-                  fmt::format("| {} | {} | {} | {} | {:.2f} | {:.2f} | "
+                  fmt::format("| {} | {} | {} | {:.2f} | {:.2f} | "
                               "{:+.2f} | {:+.2f} |\n",
                               level, hertz.n_dofs, hertz.n_newton_iterations,
-                              hertz.n_multiplier_updates, hertz.time.wall,
+                              hertz.time.wall,
                               hertz.time.cpu, 100. * hertz.half_width_error,
                               100. * hertz.peak_pressure_error) :
                   fmt::format("| {} | failed: {} |\n", level, hertz.failure);

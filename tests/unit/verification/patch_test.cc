@@ -74,7 +74,9 @@ namespace
   {
     const PatchResult result = run_patch_test(JointLawKind::rigid, 1);
     expect_uniform_pressure(result);
-    EXPECT_GT(result.increment.n_multiplier_updates, 1u);
+    // Exact contact of two flat faces is linear once every pair is closed:
+    // the first iterate already has the right set.
+    EXPECT_LE(result.increment.n_newton_iterations, 2u);
     for (const auto &sample : result.increment.joints.at(0).profile)
       EXPECT_LT(std::abs(sample.gap), 1e-8 * 1e-3) << "rigid law leaves overlap";
   }
