@@ -24,8 +24,9 @@ namespace FloorBlock
           for (unsigned int c = 0; c < dim; ++c)
             {
               jump[c] -= solution(node.dofs_a[c]);
-              if (!node.against_rigid_obstacle())
-                jump[c] += solution(node.dofs_b[c]);
+              jump[c] += node.against_rigid_obstacle() ?
+                           node.obstacle_displacement[c] :
+                           solution(node.dofs_b[c]);
             }
           responses[p] = laws[p]->evaluate(jump, node.normal, histories[p]);
         }

@@ -31,6 +31,12 @@ namespace FloorBlock
       std::array<dealii::types::global_dof_index, dim> dofs_a;
       /** Side-B DoFs; all invalid_dof_index when side B is a rigid obstacle. */
       std::array<dealii::types::global_dof_index, dim> dofs_b;
+      /**
+       * Rigid obstacle only: its prescribed displacement at the load state
+       * being solved (m), e.g. a bedding moved parallel to itself; the
+       * solver sets it before every evaluation. Zero otherwise.
+       */
+      dealii::Tensor<1, dim> obstacle_displacement;
 
       /** @brief True when side B is a fixed rigid obstacle. */
       bool

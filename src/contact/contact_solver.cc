@@ -185,6 +185,7 @@ namespace FloorBlock
           if (joint.law == JointLawKind::compliant)
             {
               pair_laws.push_back(joint_laws[node.joint].get());
+              penalty_pair_laws.push_back(pair_laws.back());
               exact_laws.emplace_back();
               continue;
             }
@@ -205,6 +206,12 @@ namespace FloorBlock
             law.complementarity.normal_parameter;
           exact_laws.push_back(law);
           pair_laws.push_back(nullptr);
+          JointParameters springs  = joint.parameters;
+          springs.normal_stiffness = law.complementarity.normal_parameter;
+          springs.shear_stiffness  = law.complementarity.tangential_parameter;
+          springs.tensile_strength = 0.;
+          penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+          penalty_pair_laws.push_back(penalty_laws.back().get());
         }
       committed_history.assign(nodes.size(), JointHistory<2>());
       working_history = committed_history;
@@ -298,6 +305,15 @@ namespace FloorBlock
       return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
     }
 
+    void
+    ContactSolver::move_obstacles(const double uplift_factor)
+    {
+      for (auto &node : nodes)
+        if (scene.joints[node.joint].plane_moves_with_uplift)
+          node.obstacle_displacement =
+            uplift_displacement(scene.uplift, uplift_factor, node.position);
+    }
+
     double
     ContactSolver::load_norm(const LoadFactors &factors)
     {
@@ -311,7 +327,7 @@ namespace FloorBlock
     ContactSolver::solve_linear(std::string &message)
     {
       ++n_linear_solves;
-      if (exact)
+      if (exact_equations())
         {
           // Multipliers make the system a saddle point: direct solver only.
           dealii::TrilinosWrappers::MPI::Vector right_hand_side(system_residual);
@@ -357,18 +373,20 @@ namespace FloorBlock
         return constraints_at(factors.uplift);
       }();
       constraints.distribute(current_solution);
+      move_obstacles(factors.uplift);
       double reference_load = load_norm(factors);
 
       NewtonCallbacks callbacks;
       callbacks.assemble = [&]() {
         dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
         const std::vector<JointResponse<2>> responses = responses_at_iterate();
-        matrix.copy_from(exact ? base_matrix : bulk->condensed_stiffness());
+        matrix.copy_from(exact_equations() ? base_matrix :
+                                             bulk->condensed_stiffness());
         bulk->residual(
           current_solution, factors.gravity, factors.pressure, residual);
         assemble_contact(
           nodes, responses, homogeneous_constraints, &matrix, &residual);
-        if (exact)
+        if (exact_equations())
           {
             std::copy(residual.begin(), residual.end(), system_residual.begin());
             std::fill(system_residual.begin() + residual.size(),
@@ -379,7 +397,7 @@ namespace FloorBlock
         active_set.update(states_of(responses));
         NewtonIterate iterate;
         iterate.residual_norm =
-          exact ? system_residual.l2_norm() : residual.l2_norm();
+          exact_equations() ? system_residual.l2_norm() : residual.l2_norm();
         iterate.set_signature = active_set.signature();
         iterate.counts        = active_set.counts();
         last_iterate_counts   = iterate.counts;
@@ -394,14 +412,14 @@ namespace FloorBlock
           return false;
         homogeneous_constraints.distribute(update);
         newton_base = current_solution;
-        if (exact)
+        if (exact_equations())
           multiplier_base = exact->multipliers();
         return true;
       };
       callbacks.set_step = [&](const double step) {
         current_solution = newton_base;
         current_solution.add(step, update);
-        if (exact)
+        if (exact_equations())
           {
             exact->multipliers() = multiplier_base;
             exact->multipliers().add(step, multiplier_update);
@@ -411,7 +429,7 @@ namespace FloorBlock
         const double bulk_floor = bulk->round_off_floor(
           current_solution, factors.gravity, factors.pressure);
         const double contact_floor =
-          exact ? exact->round_off_floor(current_solution) : 0.;
+          exact_equations() ? exact->round_off_floor(current_solution) : 0.;
         return std::hypot(bulk_floor, contact_floor);
       };
 
@@ -443,7 +461,7 @@ namespace FloorBlock
       increment.relative_residual   = report.relative_residual;
       if (!report.converged)
         failure_reason = report.failure_reason;
-      else if (exact)
+      else if (exact_equations())
         exact->zero_open_multipliers();
       return report.converged;
     }
@@ -452,10 +470,49 @@ namespace FloorBlock
     ContactSolver::responses_at_iterate()
     {
       std::vector<JointResponse<2>> responses =
-        evaluate_contact(nodes, pair_laws, working_history, current_solution);
-      if (exact)
+        evaluate_contact(nodes,
+                         penalty_start ? penalty_pair_laws : pair_laws,
+                         working_history,
+                         current_solution);
+      if (exact_equations())
         exact->evaluate(current_solution, working_history, responses);
       return responses;
+    }
+
+    bool
+    ContactSolver::exact_equations() const
+    {
+      return exact && !penalty_start;
+    }
+
+    bool
+    ContactSolver::solve_from_penalty_start(const LoadFactors &factors,
+                                            IncrementResult   &increment,
+                                            std::string       &failure_reason)
+    {
+      // The exact law's first iterate ties every pair (stick at g = 0,
+      // lambda = 0); from there a block can reach an iterate held by
+      // slipping pairs alone, a singular Newton matrix (six-block scene,
+      // first increment: a block next to the face lifted off its bedding).
+      // Springs of the complementarity parameter's stiffness let the
+      // blocks settle; their state and tractions start the exact Newton.
+      penalty_start = true;
+      IncrementResult penalty_increment;
+      const bool      settled =
+        solve_load_state(factors, 0., penalty_increment, failure_reason);
+      if (settled)
+        exact->set_multipliers(responses_at_iterate());
+      penalty_start = false;
+      if (!settled)
+        {
+          failure_reason = "penalty start: " + failure_reason;
+          return false;
+        }
+      const bool solved =
+        solve_load_state(factors, 0., increment, failure_reason);
+      increment.n_newton_iterations += penalty_increment.n_newton_iterations;
+      increment.started_from_penalty = true;
+      return solved;
     }
 
     void
@@ -514,6 +571,16 @@ namespace FloorBlock
           balance.support_reaction[dof_component[dof]] += condensed(dof);
           reaction_magnitude += std::abs(condensed(dof));
         }
+      // A rigid obstacle is a support too: it receives +w f (the force
+      // density on side B) from each of its pairs.
+      for (unsigned int p = 0; p < nodes.size(); ++p)
+        if (nodes[p].against_rigid_obstacle())
+          {
+            const dealii::Tensor<1, 2> force =
+              nodes[p].weight * responses[p].force_density;
+            balance.support_reaction += force;
+            reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
+          }
       const double scale = balance.applied_load.norm() + reaction_magnitude;
       balance.relative_imbalance =
         scale > 0. ?
@@ -548,7 +615,9 @@ namespace FloorBlock
                 factors = {target, 0., 0.};
                 break;
               case LoadStage::support_pressure:
-                factors = {1., target, 0.};
+                factors = {scene.steps.gravity_with_pressure ? target : 1.,
+                           target,
+                           0.};
                 break;
               case LoadStage::uplift:
                 factors = {1., 1., target};
@@ -589,6 +658,12 @@ namespace FloorBlock
             }
           if (!solved)
             solved = solve_load_state(factors, 0., increment, reason);
+          if (!solved && exact)
+            {
+              record_failure(", exact law from the last state");
+              increment = IncrementResult();
+              solved    = solve_from_penalty_start(factors, increment, reason);
+            }
           if (solved)
             {
               dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
@@ -658,7 +733,8 @@ namespace FloorBlock
         }
       try
         {
-          run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
+          if (!scene.steps.gravity_with_pressure)
+            run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
           run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
           run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
         }

@@ -106,12 +106,27 @@ namespace FloorBlock
       /** Every pair's law at the current iterate. */
       std::vector<JointResponse<2>>
       responses_at_iterate();
+      /** The Newton equations include the exact law's multipliers. */
+      bool
+      exact_equations() const;
+      /**
+       * The increment solved with the rigid-law pairs as springs of the
+       * complementarity parameter's stiffness, then with the exact law
+       * from that state (a fallback of the exact law).
+       */
+      bool
+      solve_from_penalty_start(const LoadFactors &factors,
+                               IncrementResult   &increment,
+                               std::string       &failure_reason);
       Fem::ElasticModel<2>
       scaled_model(const LoadFactors &factors) const;
       dealii::AffineConstraints<double>
       constraints_at(const double uplift_factor);
       double
       load_norm(const LoadFactors &factors);
+      /** Sets the rigid obstacles' displacements for the uplift factor. */
+      void
+      move_obstacles(const double uplift_factor);
       bool
       solve_linear(std::string &message);
       void
@@ -130,6 +145,12 @@ namespace FloorBlock
       std::vector<const CoulombJoint<2> *>           pair_laws;
       /** Per pair: the exact law, empty for a compliant pair. */
       std::vector<std::optional<ExactPairLaw>>       exact_laws;
+      /** Rigid-law pairs as springs (kn = ks = c_n), for the penalty start. */
+      std::vector<std::unique_ptr<CoulombJoint<2>>> penalty_laws;
+      /** pair_laws with the penalty springs in place of the exact law. */
+      std::vector<const CoulombJoint<2> *>           penalty_pair_laws;
+      /** Solving the penalty start (solve_from_penalty_start). */
+      bool                                           penalty_start = false;
       /** The exact law's equations; null when every pair is compliant. */
       std::unique_ptr<ExactContact<2>>               exact;
       /** Displacements and multipliers (exact law only). */

@@ -213,7 +213,8 @@ namespace FloorBlock
         {
           const ExactPair        &pair = pairs[k];
           const ContactNode<dim> &node = nodes[pair.node];
-          dealii::Tensor<1, dim>  jump = node.initial_gap * node.normal;
+          dealii::Tensor<1, dim>  jump =
+            node.initial_gap * node.normal + node.obstacle_displacement;
           for (unsigned int c = 0; c < dim; ++c)
             for (const auto &[sign, dof] : side_dofs(node, c))
               jump[c] += sign * solution(dof);
@@ -249,6 +250,26 @@ namespace FloorBlock
           // The tangent stays zero: the multipliers' Jacobian is assembled
           // here, not through the pair's law.
           response.closure_stiffness = pair.surface_stiffness;
+        }
+    }
+
+    template <int dim>
+    void
+    ExactContact<dim>::set_multipliers(
+      const std::vector<JointResponse<dim>> &responses)
+    {
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const ExactPair          &pair     = pairs[k];
+          const JointResponse<dim> &response = responses[pair.node];
+          const double scale = pair.intact_law.parameters().normal_parameter;
+          values(dim * k) =
+            pair.free_direction[0] ? response.normal_traction / scale : 0.;
+          for (unsigned int j = 1; j < dim; ++j)
+            values(dim * k + j) =
+              pair.free_direction[j] ?
+                (response.tangential_traction * pair.tangents[j - 1]) / scale :
+                0.;
         }
     }
 
@@ -378,7 +399,8 @@ namespace FloorBlock
       for (const ExactPair &pair : pairs)
         {
           const ContactNode<dim> &node = nodes[pair.node];
-          double                  size = std::abs(node.initial_gap);
+          double                  size =
+            std::abs(node.initial_gap) + node.obstacle_displacement.norm();
           for (unsigned int c = 0; c < dim; ++c)
             for (const auto &[sign, dof] : side_dofs(node, c))
               size += std::abs(solution(dof));

@@ -148,6 +148,14 @@ namespace FloorBlock
       void
       zero_open_multipliers();
 
+      /**
+       * @brief Sets the multipliers from given tractions (a penalty
+       * solution): \f$\mu = \lambda / c_n\f$ of each exact pair's normal
+       * and tangential traction in @p responses.
+       */
+      void
+      set_multipliers(const std::vector<JointResponse<dim>> &responses);
+
       /** @brief The multipliers \f$\mu = \lambda/c_n\f$ (m), working values. */
       dealii::Vector<double> &
       multipliers();

@@ -55,6 +55,7 @@ namespace FloorBlock
     struct ForceBalance
     {
       dealii::Tensor<1, 2> applied_load;
+      /** Dirichlet reactions plus the forces on rigid obstacles (N/m). */
       dealii::Tensor<1, 2> support_reaction;
       /** |applied + reaction| / (|applied| + sum of |nodal reactions|) (-). */
       double relative_imbalance = 0.;
@@ -79,6 +80,12 @@ namespace FloorBlock
        * iterations count in SolveResult::n_failed_newton_iterations.
        */
       unsigned int n_newton_iterations = 0;
+      /**
+       * Rigid law: the increment was solved from a penalty start
+       * (ContactSolver::solve_from_penalty_start), whose iterations are
+       * included in n_newton_iterations.
+       */
+      bool started_from_penalty = false;
       /** Failed attempts (cutbacks) before this increment converged. */
       unsigned int n_cutbacks        = 0;
       double       relative_residual = 0.;

@@ -43,6 +43,12 @@ namespace FloorBlock
       dealii::Point<dim>     plane_point;
       /** Unit normal from the body into the obstacle. */
       dealii::Tensor<1, dim> plane_normal;
+      /**
+       * The plane is displaced by the uplift (UpliftSettings at its point,
+       * scaled by the stage-3 factor), e.g. a rigid bedding moved parallel
+       * to itself; false: fixed.
+       */
+      bool plane_moves_with_uplift = false;
     };
 
     /** @brief A boundary with prescribed displacement components. */
@@ -84,6 +90,12 @@ namespace FloorBlock
       unsigned int n_gravity  = 1;
       unsigned int n_pressure = 1;
       unsigned int n_uplift   = 1;
+      /**
+       * Gravity rises with the support load over the n_pressure increments
+       * of stage 2 (n_gravity is then not used): the path "gravity and load
+       * together" of the six-block benchmark scene.
+       */
+      bool gravity_with_pressure = false;
     };
 
     /**

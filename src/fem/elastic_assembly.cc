@@ -44,9 +44,7 @@ namespace FloorBlock
       {
         if (model.vertical_pressures.count(boundary_id) == 0)
           return -pressure * normal; // pushes against the outward normal
-        dealii::Tensor<1, dim> traction;
-        traction[dim - 1] = -pressure * std::abs(normal[dim - 1]);
-        return traction;
+        return pressure * std::abs(normal * model.down) * model.down;
       }
     } // namespace
 

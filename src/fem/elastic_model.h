@@ -2,6 +2,7 @@
 
 #include <material/elastic_law.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
@@ -29,13 +30,19 @@ namespace FloorBlock
       /** Pressure on a boundary id (Pa), positive pushing into the body. */
       std::map<dealii::types::boundary_id, double> pressures;
       /**
-       * Boundary ids whose pressure p acts straight down (-e_{dim-1}) as a
-       * load per unit of horizontal projection: traction -p |n_{dim-1}|
-       * e_{dim-1} on a face with unit normal n. On a level face this equals
-       * the normal pressure; on an inclined one it keeps the total vertical
-       * load and adds no component along the face's normal direction only.
+       * Boundary ids whose pressure p acts straight down (along @p down) as
+       * a load per unit of horizontal projection: traction p |n . d| d on a
+       * face with unit normal n. On a level face this equals the normal
+       * pressure; on an inclined one it keeps the total vertical load and
+       * adds no component along the face's normal direction only.
        */
       std::set<dealii::types::boundary_id> vertical_pressures;
+      /**
+       * Unit vector of the true vertical, downward, in the model's frame
+       * (-e_{dim-1} unless the frame is turned, Bedding/Frame dip).
+       */
+      dealii::Tensor<1, dim> down = -dealii::Tensor<1, dim>(
+        dealii::Point<dim>::unit_vector(dim - 1));
     };
   } // namespace Fem
 } // namespace FloorBlock

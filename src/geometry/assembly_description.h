@@ -52,6 +52,11 @@ namespace FloorBlock::Geometry
     double face_block_width = 1.0;
     /** Vertical thickness of the base (bedding layer) below the joint. Units: m. */
     double base_thickness = 0.5;
+    /**
+     * No base body: the blocks stand on a rigid half-plane below the
+     * bedding, which the contact solver models as an obstacle.
+     */
+    bool rigid_base = false;
 
     BeddingShape bedding_shape = BeddingShape::parabolic;
     /** Inclination alpha of a planar bedding, rising away from the face. Units: rad. */

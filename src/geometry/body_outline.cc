@@ -357,44 +357,49 @@ namespace FloorBlock::Geometry
         outline.bodies.push_back(body);
       }
 
-    // Base: bedding shifted down by its thickness, from the outer side of
-    // the face block to the free side of block 1; the top is split under
-    // every fillet tangent point so that the contact part of each bedding
-    // joint is a single segment on both sides.
-    const double thickness = description.base_thickness;
-    const double x_face    = frames.back().x_left;
-    const double x_free    = frames.front().x_right;
-    BodyOutline  base{Ids::base_material, {}};
-    base.segments.push_back(
-      curve_piece(profile, x_face, 0.0, -thickness, Ids::base_bottom));
-    base.segments.push_back(
-      curve_piece(profile, 0.0, x_free, -thickness, Ids::base_bottom));
-    base.segments.push_back({SegmentKind::line,
-                             point_on(profile, x_free, -thickness),
-                             point_on(profile, x_free, 0.0),
-                             {},
-                             Ids::base_end_free_side});
-    for (unsigned int index = 0; index < frames.size(); ++index)
+    // Base: bedding shifted down by its thickness (none on a rigid base,
+    // which the contact solver models as an obstacle, not a body)
+    if (!description.rigid_base)
       {
-        const BlockFrame  &frame = frames[index];
-        const BodyCorners &own   = corners[index];
-        const dealii::types::boundary_id id =
-          Ids::bedding_base_side(frame.bottom_id - Ids::bedding_block_side(0));
-        const std::array<double, 4> stations = {frame.x_right,
-                                                own.bottom_right.curve_point.x,
-                                                own.bottom_left.curve_point.x,
-                                                frame.x_left};
-        for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
-          if (stations[piece] != stations[piece + 1])
-            base.segments.push_back(curve_piece(
-              profile, stations[piece], stations[piece + 1], 0.0, id));
+        // From the outer side of the face block to the free side of block
+        // 1; the top is split under every fillet tangent point so that the
+        // contact part of each bedding joint is a single segment on both
+        // sides.
+        const double thickness = description.base_thickness;
+        const double x_face    = frames.back().x_left;
+        const double x_free    = frames.front().x_right;
+        BodyOutline  base{Ids::base_material, {}};
+        base.segments.push_back(
+          curve_piece(profile, x_face, 0.0, -thickness, Ids::base_bottom));
+        base.segments.push_back(
+          curve_piece(profile, 0.0, x_free, -thickness, Ids::base_bottom));
+        base.segments.push_back({SegmentKind::line,
+                                 point_on(profile, x_free, -thickness),
+                                 point_on(profile, x_free, 0.0),
+                                 {},
+                                 Ids::base_end_free_side});
+        for (unsigned int index = 0; index < frames.size(); ++index)
+          {
+            const BlockFrame  &frame = frames[index];
+            const BodyCorners &own   = corners[index];
+            const dealii::types::boundary_id id =
+              Ids::bedding_base_side(frame.bottom_id - Ids::bedding_block_side(0));
+            const std::array<double, 4> stations = {frame.x_right,
+                                                    own.bottom_right.curve_point.x,
+                                                    own.bottom_left.curve_point.x,
+                                                    frame.x_left};
+            for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
+              if (stations[piece] != stations[piece + 1])
+                base.segments.push_back(curve_piece(
+                  profile, stations[piece], stations[piece + 1], 0.0, id));
+          }
+        base.segments.push_back({SegmentKind::line,
+                                 point_on(profile, x_face, 0.0),
+                                 point_on(profile, x_face, -thickness),
+                                 {},
+                                 Ids::base_end_face_side});
+        outline.bodies.push_back(base);
       }
-    base.segments.push_back({SegmentKind::line,
-                             point_on(profile, x_face, 0.0),
-                             point_on(profile, x_face, -thickness),
-                             {},
-                             Ids::base_end_face_side});
-    outline.bodies.push_back(base);
 
     for (unsigned int first = 0; first < outline.bodies.size(); ++first)
       for (unsigned int second = first + 1; second < outline.bodies.size();

@@ -176,6 +176,7 @@ namespace FloorBlock::Output
            {"stage_factor", increment.stage_factor},
            {"newton_iterations", increment.n_newton_iterations},
            {"cutbacks", increment.n_cutbacks},
+           {"started_from_penalty", increment.started_from_penalty},
            {"relative_residual", increment.relative_residual},
            {"stopped_at_round_off_floor", increment.round_off_limited},
            {"n_stick", increment.counts.n_stick},

@@ -32,6 +32,20 @@ namespace FloorBlock::Parameters
                       "the closed forms assume) or lifted (the mesh starts "
                       "flat and the FEM lifts the bedding with the planar or "
                       "parabolic profile). Units: none.");
+    prm.declare_entry("Base", "elastic", Selection("elastic|rigid"),
+                      "What the blocks stand on: elastic (a base layer of "
+                      "Geometry/Base thickness, the rock of Material, its "
+                      "bottom moved by the uplift) or rigid (a rigid "
+                      "half-plane below a flat bedding, moved by the uplift; "
+                      "the face block stands on a fixed support of its own "
+                      "and does not touch it). Units: none.");
+    prm.declare_entry("Frame dip", "0", Double(0, 60),
+                      "Dip of the model's frame: x runs along the bedding "
+                      "away from the face and the frame is turned so that "
+                      "moving in +x goes down at this angle. Gravity and "
+                      "vertical support loads act along the true vertical, "
+                      "(sin, -cos) of this angle in the frame. 0: x "
+                      "horizontal. Units: degrees.");
     prm.leave_subsection();
   }
 
@@ -46,6 +60,8 @@ namespace FloorBlock::Parameters
                        FloorUpliftReading::inclined;
     inclination = Units::degrees_to_radians(prm.get_double("Inclination"));
     curvature   = prm.get_double("Curvature");
+    rigid_base  = prm.get("Base") == "rigid";
+    frame_dip   = Units::degrees_to_radians(prm.get_double("Frame dip"));
     prm.leave_subsection();
   }
 } // namespace FloorBlock::Parameters

@@ -23,6 +23,12 @@ namespace FloorBlock::Parameters
       if (joints.law == JointLaw::rigid)
         return "Joints/Law = rigid: rigid blocks stand on the joint "
                "springs kn, ks of the compliant law";
+      if (bedding.rigid_base)
+        return "Bedding/Base = rigid: the rigid model's blocks stand on the "
+               "elastic base's joint springs";
+      if (bedding.frame_dip != 0.)
+        return "Bedding/Frame dip > 0: the rigid model's gravity is "
+               "vertical in its frame";
       const bool level_top =
         bedding.uplift_reading == FloorUpliftReading::lifted ||
         (bedding.shape == BeddingShape::planar && bedding.inclination == 0.);

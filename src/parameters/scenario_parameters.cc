@@ -47,6 +47,16 @@ namespace FloorBlock::Parameters
                        "must be 0 while Geometry/Corner rounding radius > 0 "
                        "(rounded corners start with an open gap)");
 
+    // The rigid half-plane is the plane y = 0 of the mesh.
+    const bool flat_bedding =
+      bedding.uplift_reading == FloorUpliftReading::lifted ||
+      (bedding.shape == BeddingShape::planar && bedding.inclination == 0.);
+    if (bedding.rigid_base && !flat_bedding)
+      throw InputError("Bedding/Base", "rigid",
+                       "needs a flat bedding in the mesh: Bedding/Floor "
+                       "uplift reading = lifted, or Shape = planar with "
+                       "Inclination = 0");
+
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
         throw InputError("Loading/Loaded blocks",

@@ -51,6 +51,8 @@ namespace FloorBlock::Parameters
     FloorUpliftReading uplift_reading;
     double       inclination; ///< rad, planar; positive when rising away from the face
     double       curvature;   ///< k (m) in y = x^2/k, parabolic
+    bool         rigid_base;  ///< rigid half-plane instead of the elastic base
+    double       frame_dip;   ///< rad, dip of the frame's x axis below the horizontal
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -169,6 +171,7 @@ namespace FloorBlock::Parameters
   {
     unsigned int       fe_degree;
     unsigned int       n_gravity_steps;
+    bool               gravity_with_support_load;
     unsigned int       n_support_steps;
     unsigned int       n_uplift_steps;
     LinearSolverChoice linear_solver;

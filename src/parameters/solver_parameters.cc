@@ -16,6 +16,13 @@ namespace FloorBlock::Parameters
                       "Units: none.");
     prm.declare_entry("Gravity steps", "1", Integer(1, 1000),
                       "Load increments of stage 1 (gravity). Units: none.");
+    prm.declare_entry("Gravity with support load", "false",
+                      dealii::Patterns::Bool(),
+                      "true: gravity rises together with the support load "
+                      "over the Support load steps (stage 1 of the six-block "
+                      "benchmark, params/s6.prm) and Gravity steps is not "
+                      "used; false: gravity first, then the support load. "
+                      "Units: none.");
     prm.declare_entry("Support load steps", "2", Integer(1, 1000),
                       "Load increments of stage 2 (support pressure). "
                       "Units: none.");
@@ -81,6 +88,7 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Solver");
     fe_degree       = prm.get_integer("FE degree");
     n_gravity_steps = prm.get_integer("Gravity steps");
+    gravity_with_support_load = prm.get_bool("Gravity with support load");
     n_support_steps = prm.get_integer("Support load steps");
     n_uplift_steps  = prm.get_integer("Uplift steps");
     const std::string solver = prm.get("Linear solver");

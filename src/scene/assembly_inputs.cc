@@ -11,6 +11,7 @@ namespace FloorBlock::Scene
     description.block_height     = scene.geometry.block_height;
     description.face_block_width = scene.geometry.face_block_width;
     description.base_thickness   = scene.geometry.base_thickness;
+    description.rigid_base       = scene.bedding.rigid_base;
     description.bedding_shape =
       scene.bedding.shape == Parameters::BeddingShape::planar ?
         Geometry::BeddingShape::planar :

@@ -94,8 +94,17 @@ namespace FloorBlock::Scene
     // Dividing by L (as before) applied only (L - 2r)/L of P_i, 98 % on the
     // default scene. On an inclined top the vertical pressure's horizontal
     // projection is L - 2r up to O(r x slope).
-    const double loaded_length = scene.geometry.block_width -
-                                 2. * scene.geometry.corner_rounding_radius;
+    // In a turned frame (Bedding/Frame dip) a top that is level in the
+    // frame is L cos(dip) wide horizontally, and the vertical pressure is a
+    // load per unit horizontal width (Fem::ElasticModel::vertical_pressures),
+    // so the pressure is raised by 1/cos(dip) to apply the whole support
+    // load. A pressure normal to the top acts on the top's own length.
+    const bool vertical_load = scene.loading.support_load_direction ==
+                               Parameters::SupportLoadDirection::vertical;
+    const double loaded_length =
+      (scene.geometry.block_width -
+       2. * scene.geometry.corner_rounding_radius) *
+      (vertical_load ? std::cos(scene.bedding.frame_dip) : 1.);
     std::map<unsigned int, double> support_pressures;
     for (unsigned int block = 1; block <= chain.n_blocks(); ++block)
       if (chain.support_load[block - 1] > 0)
@@ -118,7 +127,11 @@ namespace FloorBlock::Scene
         Parameters::SupportLoadDirection::vertical,
       {},
       {}};
+    settings.frame_dip        = scene.bedding.frame_dip;
+    settings.rigid_base       = scene.bedding.rigid_base;
     settings.uplift           = uplift_settings(scene);
+    settings.steps.gravity_with_pressure =
+      scene.solver.gravity_with_support_load;
     settings.steps.n_gravity  = scene.solver.n_gravity_steps;
     settings.steps.n_pressure = scene.solver.n_support_steps;
     settings.steps.n_uplift   = scene.solver.n_uplift_steps;

@@ -2,6 +2,7 @@
 #include <geometry/ids.h>
 #include <scene/floor_scene.h>
 
+#include <cmath>
 #include <string>
 
 namespace FloorBlock
@@ -25,8 +26,11 @@ namespace FloorBlock
         }
       scene.model.laws.emplace(Ids::face_block_material, settings.rock);
       scene.model.densities[Ids::face_block_material] = settings.density;
-      scene.model.laws.emplace(Ids::base_material, settings.rock);
-      scene.model.gravity[1] = -settings.gravity;
+      if (!settings.rigid_base)
+        scene.model.laws.emplace(Ids::base_material, settings.rock);
+      scene.model.down[0] = std::sin(settings.frame_dip);
+      scene.model.down[1] = -std::cos(settings.frame_dip);
+      scene.model.gravity = settings.gravity * scene.model.down;
       for (const auto &[block, pressure] : settings.support_pressures)
         {
           if (block < 1 || block > settings.n_blocks)
@@ -56,10 +60,24 @@ namespace FloorBlock
                   Ids::vertical_joint_free_side(j),
                   settings.vertical_joints);
       for (unsigned int i = 1; i <= settings.n_blocks; ++i)
-        add_joint("bedding " + std::to_string(i),
-                  Ids::bedding_base_side(i),
-                  Ids::bedding_block_side(i),
-                  settings.bedding_joints);
+        if (settings.rigid_base)
+          {
+            // Side A is the block bottom; the plane lies below it.
+            add_joint("bedding " + std::to_string(i),
+                      Ids::bedding_block_side(i),
+                      Ids::bedding_block_side(i),
+                      settings.bedding_joints);
+            Contact::JointDefinition<2> &joint = scene.joints.back();
+            joint.against_rigid_plane          = true;
+            joint.plane_point                  = dealii::Point<2>();
+            joint.plane_normal                 = dealii::Tensor<1, 2>({0., -1.});
+            joint.plane_moves_with_uplift      = true;
+          }
+        else
+          add_joint("bedding " + std::to_string(i),
+                    Ids::bedding_base_side(i),
+                    Ids::bedding_block_side(i),
+                    settings.bedding_joints);
 
       Contact::SupportDefinition<2> face_outer;
       face_outer.boundary_id            = Ids::face_block_outer_side;
@@ -69,7 +87,9 @@ namespace FloorBlock
       Contact::SupportDefinition<2> base = face_outer;
       base.boundary_id                   = Ids::base_bottom;
       base.moves_with_uplift             = true;
-      scene.supports = {face_outer, face_bottom, base};
+      scene.supports = {face_outer, face_bottom};
+      if (!settings.rigid_base)
+        scene.supports.push_back(base);
       scene.uplift   = settings.uplift;
       scene.steps    = settings.steps;
       return scene;

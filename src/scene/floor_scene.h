@@ -37,6 +37,16 @@ namespace FloorBlock
       bool vertical_support_load = true;
       Contact::UpliftSettings uplift;
       Contact::LoadSteps      steps;
+      /**
+       * Dip of the frame's x axis below the horizontal (rad): gravity and
+       * vertical support loads act along (sin, -cos) of it.
+       */
+      double frame_dip = 0.;
+      /**
+       * The blocks stand on a rigid half-plane y <= 0 (moved by the
+       * uplift) instead of the elastic base; the mesh has no base.
+       */
+      bool rigid_base = false;
     };
 
     /**
@@ -45,7 +55,12 @@ namespace FloorBlock
      * Joints (side A -> side B, normal from A to B):
      *  - "vertical j", j = 1..n: 3000+j (block j+1 / face block) -> 2000+j
      *    (block j); its normal force is the FEM Q_j;
-     *  - "bedding i", i = 1..n: base top 5000+i -> block bottom 4000+i.
+     *  - "bedding i", i = 1..n: base top 5000+i -> block bottom 4000+i; on
+     *    a rigid base, block bottom 4000+i against the plane y = 0, which
+     *    the uplift moves.
+     * The vertical joints are listed first: at a sharp corner on the
+     * bedding the bedding keeps the crosspoint (Contact::
+     * remove_crosspoint_pairs).
      * Supports: the face block is held fixed on its outer side (7005) and its
      * bottom (4000), so no contact is modelled under it; the base bottom
      * (7001) follows the uplift (zero in stages 1 and 2).
