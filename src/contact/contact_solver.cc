@@ -185,7 +185,7 @@ namespace FloorBlock
               // neighbourhood, and the semi-smooth Newton cycled at low
               // friction.
               const double length = std::max(node.weight, smallest_cell);
-              JointParameters parameters   = joint.parameters;
+              JointConstants parameters   = joint.parameters;
               parameters.normal_stiffness  =
                 settings.rigid_penalty_factor * largest_modulus / length;
               parameters.shear_stiffness = parameters.normal_stiffness;

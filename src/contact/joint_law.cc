@@ -9,12 +9,12 @@ namespace FloorBlock
   namespace Contact
   {
     template <int dim>
-    CoulombJoint<dim>::CoulombJoint(const JointParameters &parameters)
+    CoulombJoint<dim>::CoulombJoint(const JointConstants &parameters)
       : constants(parameters)
     {}
 
     template <int dim>
-    const JointParameters &
+    const JointConstants &
     CoulombJoint<dim>::parameters() const
     {
       return constants;

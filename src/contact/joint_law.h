@@ -17,7 +17,7 @@ namespace FloorBlock
     };
 
     /** @brief Material constants of a joint (SI units). */
-    struct JointParameters
+    struct JointConstants
     {
       /** Normal stiffness kn (Pa/m); for the rigid law the augmentation. */
       double normal_stiffness = 0.;
@@ -93,7 +93,7 @@ namespace FloorBlock
     class CoulombJoint
     {
     public:
-      explicit CoulombJoint(const JointParameters &parameters);
+      explicit CoulombJoint(const JointConstants &parameters);
 
       /**
        * @param[in] jump Relative displacement B minus A plus initial gap
@@ -106,11 +106,11 @@ namespace FloorBlock
                const dealii::Tensor<1, dim> &normal,
                const JointHistory<dim>      &history) const;
 
-      const JointParameters &
+      const JointConstants &
       parameters() const;
 
     private:
-      const JointParameters constants;
+      const JointConstants constants;
     };
   } // namespace Contact
 } // namespace FloorBlock

@@ -37,7 +37,7 @@ namespace FloorBlock
       dealii::types::boundary_id side_b = 0;
       JointLawKind               law    = JointLawKind::compliant;
       /** kn and ks are used by the compliant law only. */
-      JointParameters parameters;
+      JointConstants parameters;
       /** If true, side_b is ignored and side_a meets the plane below. */
       bool                   against_rigid_plane = false;
       dealii::Point<dim>     plane_point;

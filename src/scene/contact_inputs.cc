@@ -8,11 +8,11 @@ namespace FloorBlock::Scene
 {
   namespace
   {
-    Contact::JointParameters
-    joint_parameters(const Parameters::JointParameters &joints,
+    Contact::JointConstants
+    joint_constants(const Parameters::JointParameters &joints,
                      const double                       friction_angle)
     {
-      Contact::JointParameters parameters;
+      Contact::JointConstants parameters;
       parameters.normal_stiffness = joints.normal_stiffness;
       parameters.shear_stiffness  = joints.shear_stiffness;
       parameters.friction_angle   = friction_angle;
@@ -111,8 +111,8 @@ namespace FloorBlock::Scene
       scene.material.density,
       scene.loading.gravity,
       joint_law_kind(scene),
-      joint_parameters(scene.joints, scene.joints.vertical_friction_angle),
-      joint_parameters(scene.joints, scene.joints.bedding_friction_angle),
+      joint_constants(scene.joints, scene.joints.vertical_friction_angle),
+      joint_constants(scene.joints, scene.joints.bedding_friction_angle),
       support_pressures,
       scene.loading.support_load_direction ==
         Parameters::SupportLoadDirection::vertical,

@@ -41,7 +41,7 @@ namespace FloorBlock
       const auto add_joint = [&](const std::string               &name,
                                  const dealii::types::boundary_id side_a,
                                  const dealii::types::boundary_id side_b,
-                                 const Contact::JointParameters  &parameters) {
+                                 const Contact::JointConstants  &parameters) {
         Contact::JointDefinition<2> joint;
         joint.name       = name;
         joint.side_a     = side_a;

@@ -25,9 +25,9 @@ namespace FloorBlock
       double gravity = 9.81;
       Contact::JointLawKind law = Contact::JointLawKind::compliant;
       /** Vertical fractures (Table 6.1: kn 9 GPa/m, ks 6.7 GPa/m). */
-      Contact::JointParameters vertical_joints;
+      Contact::JointConstants vertical_joints;
       /** Bedding joint under the blocks. */
-      Contact::JointParameters bedding_joints;
+      Contact::JointConstants bedding_joints;
       /** Support pressure on the top of block i (Pa), keyed by chapter index i. */
       std::map<unsigned int, double> support_pressures;
       /**

@@ -11,10 +11,10 @@ namespace FloorBlock::RigidBlocks::Testing
     return degrees * M_PI / 180.;
   }
 
-  Contact::JointParameters
+  Contact::JointConstants
   table_joint(const double friction_angle)
   {
-    Contact::JointParameters joint;
+    Contact::JointConstants joint;
     joint.normal_stiffness = table_normal_stiffness;
     joint.shear_stiffness  = table_shear_stiffness;
     joint.friction_angle   = friction_angle;
@@ -73,12 +73,12 @@ namespace FloorBlock::RigidBlocks::Testing
     return description;
   }
 
-  const JointReport &
+  const RigidJointReport &
   find_joint(const IncrementReport &increment,
              const JointKind        kind,
              const unsigned int     number)
   {
-    for (const JointReport &joint : increment.joints)
+    for (const RigidJointReport &joint : increment.joints)
       if (joint.kind == kind && joint.number == number)
         return joint;
     throw std::logic_error("no such joint in the increment");

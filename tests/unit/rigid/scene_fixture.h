@@ -18,7 +18,7 @@ namespace FloorBlock::RigidBlocks::Testing
   radians(const double degrees);
 
   /** @brief Table 6.1 joint (no cohesion, no tension) with friction angle phi (rad). */
-  Contact::JointParameters
+  Contact::JointConstants
   table_joint(const double friction_angle);
 
   /**
@@ -50,7 +50,7 @@ namespace FloorBlock::RigidBlocks::Testing
   lifted_parabola_scene(const unsigned int n_uplift);
 
   /** @brief The report of joint @p number of @p kind in @p increment. */
-  const JointReport &
+  const RigidJointReport &
   find_joint(const IncrementReport &increment,
              const JointKind        kind,
              const unsigned int     number);
