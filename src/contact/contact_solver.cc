@@ -76,9 +76,9 @@ namespace FloorBlock
     } // namespace
 
     ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
-                                 const SceneDefinition<2>       &scene,
+                                 const ContactProblem<2>       &problem,
                                  const ContactSolverSettings    &settings)
-      : scene(scene)
+      : problem(problem)
       , settings(settings)
       , fe_space(triangulation, settings.fe_degree)
       , console(std::cout, settings.verbose)
@@ -100,7 +100,7 @@ namespace FloorBlock
       setup_contact();
       dealii::IndexSet unused;
       std::vector<Fem::DirichletCondition<2>> zero_conditions;
-      for (const auto &support : scene.supports)
+      for (const auto &support : problem.supports)
         zero_conditions.push_back({support.boundary_id,
                                    support.constrained_components,
                                    [](const dealii::Point<2> &) {
@@ -114,7 +114,7 @@ namespace FloorBlock
                          pattern);
       matrix.reinit(pattern);
       bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
-        fe_space, scene.model, homogeneous_constraints, pattern);
+        fe_space, problem.model, homogeneous_constraints, pattern);
       if (Solver::uses_direct_solver(settings.linear,
                                      fe_space.dof_handler().n_dofs()))
         direct_solver =
@@ -145,13 +145,13 @@ namespace FloorBlock
     ContactSolver::setup_contact()
     {
       double largest_modulus = 0.;
-      for (const auto &entry : scene.model.laws)
+      for (const auto &entry : problem.model.laws)
         largest_modulus =
           std::max(largest_modulus, entry.second.youngs_modulus());
       const double smallest_cell = fe_space.minimal_cell_diameter();
-      for (unsigned int j = 0; j < scene.joints.size(); ++j)
+      for (unsigned int j = 0; j < problem.joints.size(); ++j)
         {
-          const JointDefinition<2> &joint = scene.joints[j];
+          const JointDefinition<2> &joint = problem.joints[j];
           if (joint.law == JointLawKind::compliant &&
               (!(joint.parameters.normal_stiffness > 0.) ||
                !(joint.parameters.shear_stiffness > 0.)))
@@ -202,7 +202,7 @@ namespace FloorBlock
       // tests/scenarios/HARD_CASES.md: kn h / E = 9 cycles, 0.9 converges);
       // a failure then names the remedy.
       double stiffest = 0.;
-      for (const auto &joint : scene.joints)
+      for (const auto &joint : problem.joints)
         if (joint.law == JointLawKind::compliant)
           stiffest = std::max({stiffest,
                                joint.parameters.normal_stiffness,
@@ -222,7 +222,7 @@ namespace FloorBlock
     Fem::ElasticModel<2>
     ContactSolver::scaled_model(const LoadFactors &factors) const
     {
-      Fem::ElasticModel<2> model = scene.model;
+      Fem::ElasticModel<2> model = problem.model;
       model.gravity *= factors.gravity;
       for (auto &entry : model.pressures)
         entry.second *= factors.pressure;
@@ -233,8 +233,8 @@ namespace FloorBlock
     ContactSolver::constraints_at(const double uplift_factor)
     {
       std::vector<Fem::DirichletCondition<2>> conditions;
-      const UpliftSettings uplift = scene.uplift;
-      for (const auto &support : scene.supports)
+      const UpliftSettings uplift = problem.uplift;
+      for (const auto &support : problem.supports)
         {
           const bool moves = support.moves_with_uplift;
           conditions.push_back(
@@ -549,7 +549,7 @@ namespace FloorBlock
               increment.counts       = count_states(states_of(responses));
               increment.balance = force_balance(scaled_model(factors), responses);
               std::vector<std::string> names;
-              for (const auto &joint : scene.joints)
+              for (const auto &joint : problem.joints)
                 names.push_back(joint.name);
               increment.joints = make_joint_reports(
                 nodes, responses, names, settings.averaging_length);
@@ -603,9 +603,9 @@ namespace FloorBlock
       committed_solution     = 0.;
       try
         {
-          run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
-          run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
-          run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
+          run_stage(LoadStage::gravity, problem.steps.n_gravity, result);
+          run_stage(LoadStage::support_pressure, problem.steps.n_pressure, result);
+          run_stage(LoadStage::uplift, problem.steps.n_uplift, result);
         }
       catch (ContactSolveFailure &failure)
         {
@@ -645,7 +645,7 @@ namespace FloorBlock
       for (const auto &node : nodes)
         state_dofs.push_back(node.dofs_a[0]);
       Fem::write_vtu_increment(fe_space,
-                               scene.model,
+                               problem.model,
                                current_solution,
                                state_dofs,
                                node_states,

@@ -4,7 +4,7 @@
 #include <contact/contact_node.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
@@ -42,13 +42,13 @@ namespace FloorBlock
       /**
        * @param[in] triangulation Mesh with the agreed material and boundary
        *   ids; must outlive the solver.
-       * @param[in] scene Physics and loading path.
+       * @param[in] problem Physics and loading path.
        * @param[in] settings Numerics.
        * Throws InputError if a joint's sides do not match or a material has
        * no law.
        */
       ContactSolver(const dealii::Triangulation<2> &triangulation,
-                    const SceneDefinition<2>       &scene,
+                    const ContactProblem<2>       &problem,
                     const ContactSolverSettings    &settings);
 
       /**
@@ -116,7 +116,7 @@ namespace FloorBlock
       void
       write_output(const std::vector<JointResponse<2>> &responses);
 
-      const SceneDefinition<2>      scene;
+      const ContactProblem<2>      problem;
       const ContactSolverSettings   settings;
       const Fem::FeSpace<2>         fe_space;
       std::vector<ContactNode<2>>   nodes;

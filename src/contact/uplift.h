@@ -1,6 +1,6 @@
 #pragma once
 
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>

@@ -8,7 +8,7 @@
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/grid/tria.h>
@@ -112,7 +112,7 @@ namespace FloorBlock::Pipeline
     outcome.mesh = mesh;
     Contact::ContactSolver solver(
       triangulation,
-      Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
+      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
       Scene::contact_solver_settings(scene,
                                      write_vtu ? folder.path_of("vtu") : ""));
     std::string status_text = "every loading increment converged";

@@ -2,7 +2,7 @@
 
 #include <contact/joint_law.h>
 #include <contact/newton_driver.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <geometry/assembly_description.h>
 
 #include <vector>

@@ -85,8 +85,8 @@ namespace FloorBlock::Scene
     }
   } // namespace
 
-  FloorSceneSettings
-  floor_scene_settings(const Parameters::ScenarioParameters &scene)
+  FloorProblemSettings
+  floor_problem_settings(const Parameters::ScenarioParameters &scene)
   {
     const Analytic::BlockChain     chain = block_chain(scene);
     // The pressure acts on the floor-surface id of a block, which is the
@@ -104,7 +104,7 @@ namespace FloorBlock::Scene
 
     // Aggregate initialisation in member order: the elastic law is an
     // immutable value (const members) and cannot be assigned afterwards.
-    FloorSceneSettings settings{
+    FloorProblemSettings settings{
       scene.geometry.n_blocks,
       Material::ElasticLaw<2>::from_bulk_shear(scene.material.bulk_modulus,
                                                scene.material.shear_modulus),

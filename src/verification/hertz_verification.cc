@@ -103,7 +103,7 @@ namespace FloorBlock
                             result.half_width_exact,
                             settings.mesh_level,
                             mesh);
-      Contact::SceneDefinition<2> scene;
+      Contact::ContactProblem<2> scene;
       scene.model.laws.emplace(cylinder, law);
       // Half model: P/2 spread over the cut of length R.
       scene.model.pressures[loaded_cut] =

@@ -23,10 +23,10 @@ namespace FloorBlock
       constexpr double block_width = 1., block_height = 0.5; // m
       constexpr double base_depth  = 0.5;                     // m
 
-      Contact::SceneDefinition<2>
+      Contact::ContactProblem<2>
       incline_scene(const InclineSettings &settings)
       {
-        Contact::SceneDefinition<2> scene;
+        Contact::ContactProblem<2> scene;
         scene.model.laws.emplace(block, table_rock());
         scene.model.laws.emplace(base, table_rock());
         scene.model.densities[block] = density;

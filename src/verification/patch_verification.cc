@@ -33,7 +33,7 @@ namespace FloorBlock
                            {0., joint_length, 1., 2., 4, 5, 2, upper_left,
                             upper_right, upper_bottom, upper_top}},
                           mesh);
-      Contact::SceneDefinition<2> scene;
+      Contact::ContactProblem<2> scene;
       scene.model.laws.emplace(1, table_rock());
       scene.model.laws.emplace(2, table_rock());
       scene.model.pressures[upper_top] = settings.pressure;

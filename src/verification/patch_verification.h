@@ -1,7 +1,7 @@
 #pragma once
 
 #include <contact/results.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <verification/verification_setup.h>
 
 namespace FloorBlock

@@ -60,7 +60,7 @@ namespace FloorBlock
               cell->set_refine_flag();
           mesh.execute_coarsening_and_refinement();
         }
-      Contact::SceneDefinition<2> scene;
+      Contact::ContactProblem<2> scene;
       for (const dealii::types::material_id body : {left_block, right_block, base})
         scene.model.laws.emplace(body, table_rock());
       scene.model.densities[right_block]       = density;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <verification/verification_setup.h>
 
 namespace FloorBlock

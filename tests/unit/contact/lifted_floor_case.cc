@@ -2,7 +2,7 @@
 
 #include "rounded_mesh.h"
 
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 
 #include <cmath>
 
@@ -36,7 +36,7 @@ namespace FloorBlock
       dealii::Triangulation<2> mesh;
       mesh_assembly(description, "lifted_floor", mesh);
 
-      Scene::FloorSceneSettings settings;
+      Scene::FloorProblemSettings settings;
       settings.n_blocks = floor_case.n_blocks;
       settings.law      = floor_case.law;
       const double degree      = M_PI / 180.;
@@ -56,7 +56,7 @@ namespace FloorBlock
       solver_settings.extrapolate_increments =
         floor_case.extrapolate_increments;
       Contact::ContactSolver solver(mesh,
-                                    Scene::make_floor_scene(settings),
+                                    Scene::make_floor_contact_problem(settings),
                                     solver_settings);
       const Contact::SolveResult result = solver.run();
       LiftedFloorOutcome         outcome;

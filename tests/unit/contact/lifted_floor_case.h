@@ -1,7 +1,7 @@
 #pragma once
 
 #include <contact/contact_solver.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 
 namespace FloorBlock
 {

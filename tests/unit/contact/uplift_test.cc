@@ -37,7 +37,7 @@ namespace
       {{0., 1., 0., 0.5, 4, 2, 1, block_sides, block_sides, block_bottom, block_top},
        {0., 1., -0.5, 0., 4, 2, 2, base_sides, base_sides, base_bottom, base_top}},
       mesh);
-    SceneDefinition<2> scene;
+    ContactProblem<2> scene;
     scene.model.laws.emplace(1, Testing::table_rock());
     scene.model.laws.emplace(2, Testing::table_rock());
     scene.model.densities[1] = density;

@@ -4,7 +4,7 @@
 // from the scene entries.
 #include <analytic/block_chain.h>
 #include <common/units.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <geometry/assembly_description.h>
 #include <parameters/scenario_parameters.h>
 #include <scene/analytic_inputs.h>

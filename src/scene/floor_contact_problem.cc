@@ -1,6 +1,6 @@
 #include <common/input_error.h>
 #include <geometry/ids.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 
 #include <string>
 
@@ -10,14 +10,14 @@ namespace FloorBlock
   {
     namespace Ids = Geometry::Ids;
 
-    Contact::SceneDefinition<2>
-    make_floor_scene(const FloorSceneSettings &settings)
+    Contact::ContactProblem<2>
+    make_floor_contact_problem(const FloorProblemSettings &settings)
     {
       if (settings.n_blocks < 1 || settings.n_blocks > Ids::max_n_blocks)
         throw InputError("Geometry/Number of blocks",
                          std::to_string(settings.n_blocks),
                          "1 .. " + std::to_string(Ids::max_n_blocks));
-      Contact::SceneDefinition<2> scene;
+      Contact::ContactProblem<2> scene;
       for (unsigned int i = 1; i <= settings.n_blocks; ++i)
         {
           scene.model.laws.emplace(Ids::block_material(i), settings.rock);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <material/elastic_law.h>
 
 #include <map>
@@ -13,7 +13,7 @@ namespace FloorBlock
      * @brief Plain description of the chapter's block-assembly physics on a
      * mesh that follows the id scheme of geometry/ids.h.
      */
-    struct FloorSceneSettings
+    struct FloorProblemSettings
     {
       unsigned int n_blocks = 6;
       /** Elastic law of blocks, face block and base (Table 6.1: K 9 GPa, G 6.7 GPa). */
@@ -50,7 +50,7 @@ namespace FloorBlock
      * bottom (4000), so no contact is modelled under it; the base bottom
      * (7001) follows the uplift (zero in stages 1 and 2).
      */
-    Contact::SceneDefinition<2>
-    make_floor_scene(const FloorSceneSettings &settings);
+    Contact::ContactProblem<2>
+    make_floor_contact_problem(const FloorProblemSettings &settings);
   } // namespace Scene
 } // namespace FloorBlock

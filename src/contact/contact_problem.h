@@ -91,7 +91,7 @@ namespace FloorBlock
      * pressures), joints, supports and the loading path.
      */
     template <int dim>
-    struct SceneDefinition
+    struct ContactProblem
     {
       Fem::ElasticModel<dim>              model;
       std::vector<JointDefinition<dim>>   joints;
