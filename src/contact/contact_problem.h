@@ -1,6 +1,7 @@
 #pragma once
 
 #include <contact/joint_law.h>
+#include <contact/joint_law_kind.h>
 #include <contact/newton_driver.h>
 #include <fem/elastic_model.h>
 #include <solver/linear_solver.h>
@@ -17,13 +18,6 @@ namespace FloorBlock
 {
   namespace Contact
   {
-    /** Interface law of a joint. */
-    enum class JointLawKind
-    {
-      compliant, ///< UDEC joint: kn, ks springs with Coulomb slip
-      rigid      ///< exact non-penetration and Coulomb friction (augmented Lagrangian)
-    };
-
     /**
      * @brief One joint: two boundary ids with matching nodes, or one boundary
      * id against a fixed rigid plane.
@@ -56,7 +50,7 @@ namespace FloorBlock
     };
 
     /** How the moved supports (the base) are displaced in stage 3. */
-    enum class UpliftMode
+    enum class UpliftMotion
     {
       vertical_translation, ///< u = (0, magnitude)
       dip_translation,      ///< u = magnitude (cos dip, sin dip); sign picks the way
@@ -68,7 +62,7 @@ namespace FloorBlock
     /** @brief The prescribed floor uplift at the end of stage 3. */
     struct UpliftSettings
     {
-      UpliftMode mode = UpliftMode::vertical_translation;
+      UpliftMotion mode = UpliftMotion::vertical_translation;
       /** m for translations, rad for tilt, the length k (m) for parabola, the gradient (-) for slope. */
       double magnitude = 0.;
       /** Direction of dip_translation, from +x towards +y (rad). */

@@ -16,30 +16,30 @@ namespace FloorBlock
       const double         dy = position[1] - settings.pivot_y;
       switch (settings.mode)
         {
-          case UpliftMode::vertical_translation:
+          case UpliftMotion::vertical_translation:
             displacement[1] = stage_factor * settings.magnitude;
             break;
-          case UpliftMode::dip_translation:
+          case UpliftMotion::dip_translation:
             displacement[0] =
               stage_factor * settings.magnitude * std::cos(settings.dip_angle);
             displacement[1] =
               stage_factor * settings.magnitude * std::sin(settings.dip_angle);
             break;
-          case UpliftMode::tilt:
+          case UpliftMotion::tilt:
             {
               const double angle = stage_factor * settings.magnitude;
               displacement[0] = std::cos(angle) * dx - std::sin(angle) * dy - dx;
               displacement[1] = std::sin(angle) * dx + std::cos(angle) * dy - dy;
               break;
             }
-          case UpliftMode::parabola:
+          case UpliftMotion::parabola:
             // Behind the vertex (under the face block) the parabola is
             // continued by its horizontal tangent, as the geometry module
             // does for the bedding profile.
             if (settings.magnitude != 0. && dx > 0.)
               displacement[1] = stage_factor * dx * dx / settings.magnitude;
             break;
-          case UpliftMode::slope:
+          case UpliftMotion::slope:
             // Continued horizontally behind the pivot, as the parabola.
             if (dx > 0.)
               displacement[1] = stage_factor * dx * settings.magnitude;

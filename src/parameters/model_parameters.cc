@@ -20,12 +20,13 @@ namespace FloorBlock::Parameters
                            const JointParameters &  joints,
                            const LoadingParameters &loading)
     {
-      if (joints.law == JointLaw::rigid)
+      if (joints.law == Contact::JointLawKind::rigid)
         return "Joints/Law = rigid: rigid blocks stand on the joint "
                "springs kn, ks of the compliant law";
       const bool level_top =
-        bedding.uplift_reading == FloorUpliftReading::lifted ||
-        (bedding.shape == BeddingShape::planar && bedding.inclination == 0.);
+        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
+        (bedding.shape == Geometry::BeddingShape::planar &&
+         bedding.inclination == 0.);
       if (loading.support_load_direction ==
             SupportLoadDirection::top_normal &&
           !level_top)

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <contact/joint_law_kind.h>
+#include <geometry/bedding_kinds.h>
+#include <solver/solver_kinds.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -31,24 +35,11 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  enum class BeddingShape
-  {
-    planar,
-    parabolic
-  };
-
-  /** The chapter's two readings of "floor uplift" (src/geometry/README.md). */
-  enum class FloorUpliftReading
-  {
-    inclined, ///< the bedding is already inclined; blocks stand on the profile
-    lifted    ///< a flat bedding is lifted with the profile by the FEM
-  };
-
   /** Subsection "Bedding": the failed bedding plane the blocks slide on. */
   struct BeddingParameters
   {
-    BeddingShape shape;
-    FloorUpliftReading uplift_reading;
+    Geometry::BeddingShape shape;
+    Geometry::FloorUplift floor_uplift;
     double       inclination; ///< rad, planar; positive when rising away from the face
     double       curvature;   ///< k (m) in y = x^2/k, parabolic
 
@@ -78,12 +69,6 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  enum class JointLaw
-  {
-    compliant,
-    rigid
-  };
-
   /** Subsection "Joints": vertical fractures and the bedding plane. */
   struct JointParameters
   {
@@ -93,7 +78,7 @@ namespace FloorBlock::Parameters
     double   tensile_strength;        ///< Pa
     double   normal_stiffness;        ///< kn (Pa/m)
     double   shear_stiffness;         ///< ks (Pa/m)
-    JointLaw law;
+    Contact::JointLawKind law;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -150,20 +135,6 @@ namespace FloorBlock::Parameters
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
-  enum class LinearSolverChoice
-  {
-    automatic,
-    direct,
-    iterative
-  };
-
-  enum class DirectSolverChoice
-  {
-    automatic,
-    klu,
-    umfpack
-  };
-
   /** Subsection "Solver": the contact FEM's numerics. */
   struct SolverParameters
   {
@@ -171,10 +142,10 @@ namespace FloorBlock::Parameters
     unsigned int       n_gravity_steps;
     unsigned int       n_support_steps;
     unsigned int       n_uplift_steps;
-    LinearSolverChoice linear_solver;
+    Solver::LinearSolverKind linear_solver;
     unsigned int       max_direct_dofs;
     unsigned int       max_reuse_iterations; ///< GMRES on stored LU factors
-    DirectSolverChoice direct_solver;
+    Solver::DirectSolverKind direct_solver;
     double             newton_tolerance; ///< relative to the load norm
     unsigned int       max_newton_iterations;
     unsigned int       max_cutbacks;

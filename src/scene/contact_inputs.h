@@ -26,10 +26,6 @@ namespace FloorBlock::Scene
   FloorProblemSettings
   floor_problem_settings(const Parameters::ScenarioParameters &scene);
 
-  /** @brief The contact law of Joints/Law. */
-  Contact::JointLawKind
-  joint_law_kind(const Parameters::ScenarioParameters &scene);
-
   /** @brief Numerical settings; VTU files go to @p vtu_folder if not empty. */
   Contact::ContactSolverSettings
   contact_solver_settings(const Parameters::ScenarioParameters &scene,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <solver/solver_kinds.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -10,22 +12,6 @@ namespace FloorBlock
 {
   namespace Solver
   {
-    /** How the linear system of a Newton step is solved. */
-    enum class LinearSolverKind
-    {
-      automatic, ///< direct up to LinearSolverSettings::max_direct_dofs
-      direct,    ///< Amesos (KLU or UMFPACK)
-      iterative  ///< GMRES preconditioned by ML algebraic multigrid
-    };
-
-    /** Which sparse LU the Newton solves of ReusedFactorization use. */
-    enum class DirectSolverKind
-    {
-      automatic, ///< UMFPACK from LinearSolverSettings::min_umfpack_dofs on
-      klu,       ///< Amesos KLU (left-looking, no BLAS)
-      umfpack    ///< SuiteSparse UMFPACK (multifrontal, BLAS 3)
-    };
-
     /** @brief Plain settings of the linear solver (no ParameterHandler). */
     struct LinearSolverSettings
     {

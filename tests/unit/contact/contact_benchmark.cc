@@ -50,8 +50,8 @@ main(int argc, char **argv)
   for (unsigned int block = 1; block <= 3; ++block)
     scene_settings.support_pressures[block] = support_force / 3.;
   scene_settings.uplift.mode      = lifted ?
-                                      Contact::UpliftMode::parabola :
-                                      Contact::UpliftMode::vertical_translation;
+                                      Contact::UpliftMotion::parabola :
+                                      Contact::UpliftMotion::vertical_translation;
   scene_settings.uplift.magnitude = lifted ? description.curvature : 0.01; // m
   scene_settings.steps            = {1, 2, 5};
 

@@ -47,7 +47,7 @@ namespace FloorBlock
       if (floor_case.support_load)
         for (unsigned int block = 1; block <= n_supported; ++block)
           settings.support_pressures[block] = support_force / n_supported;
-      settings.uplift.mode      = Contact::UpliftMode::parabola;
+      settings.uplift.mode      = Contact::UpliftMotion::parabola;
       settings.uplift.magnitude = lift_curvature;
       settings.steps            = {1, floor_case.support_load ? 2u : 0u, 5};
 

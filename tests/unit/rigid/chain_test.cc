@@ -47,7 +47,7 @@ namespace FloorBlock::RigidBlocks
                               Testing::radians(dip_degrees),
                               Testing::radians(bedding_degrees),
                               Testing::radians(vertical_degrees));
-      description.uplift.mode      = Contact::UpliftMode::dip_translation;
+      description.uplift.mode      = Contact::UpliftMotion::dip_translation;
       description.uplift.dip_angle = Testing::radians(dip_degrees);
       // Negative magnitude: down the dip, towards the face.
       description.uplift.magnitude = -base_travel;

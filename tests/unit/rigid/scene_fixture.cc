@@ -56,7 +56,7 @@ namespace FloorBlock::RigidBlocks::Testing
     for (unsigned int index = 0; index < n_loaded; ++index)
       description.support_line_loads[index] =
         support_tonnes * tonne * standard_gravity / (n_loaded * support_width);
-    description.uplift.mode      = Contact::UpliftMode::vertical_translation;
+    description.uplift.mode      = Contact::UpliftMotion::vertical_translation;
     description.uplift.magnitude = floor_lift;
     description.steps            = {1, 1, n_uplift};
     return description;
@@ -68,7 +68,7 @@ namespace FloorBlock::RigidBlocks::Testing
     ModelDescription description   = default_scene(n_uplift);
     description.assembly.floor_uplift =
       Geometry::FloorUplift::lifted_flat_bedding;
-    description.uplift.mode      = Contact::UpliftMode::parabola;
+    description.uplift.mode      = Contact::UpliftMotion::parabola;
     description.uplift.magnitude = description.assembly.curvature;
     return description;
   }

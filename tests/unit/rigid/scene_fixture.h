@@ -43,7 +43,7 @@ namespace FloorBlock::RigidBlocks::Testing
 
   /**
    * @brief The default scene read as a lifted flat bedding: the blocks stand
-   * on a flat base that is bent into y = x^2/400 (UpliftMode::parabola,
+   * on a flat base that is bent into y = x^2/400 (UpliftMotion::parabola,
    * vertex at the face) in @p n_uplift increments.
    */
   ModelDescription

@@ -151,11 +151,13 @@ namespace
 
   TEST(SceneInputs, ContactLawFollowsJointsLaw)
   {
-    EXPECT_EQ(Scene::joint_law_kind(
-                Parameters::read_defaults("scene_inputs_test", {"Joints/Law=rigid"})),
+    EXPECT_EQ(Scene::floor_problem_settings(
+                Parameters::read_defaults("scene_inputs_test", {"Joints/Law=rigid"}))
+                .law,
               Contact::JointLawKind::rigid);
-    EXPECT_EQ(Scene::joint_law_kind(Parameters::read_defaults(
-                "scene_inputs_test", {"Joints/Law=compliant"})),
+    EXPECT_EQ(Scene::floor_problem_settings(Parameters::read_defaults(
+                "scene_inputs_test", {"Joints/Law=compliant"}))
+                .law,
               Contact::JointLawKind::compliant);
   }
 } // namespace
