@@ -7,110 +7,107 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
-  {
-    /**
-     * @brief Contact indicator of one pair: positive when closed, negative
-     * when open, zero at the end of a closed zone.
-     *
-     * \f$\phi = t_n^{trial}/k_n = \lambda_n/k_n - g\f$, the law's own
-     * closure test (closed iff \f$t_n^{trial} \ge 0\f$ without tensile
-     * strength) in units of length. Closed pair: \f$\phi = t_n/k_n\f$ with
-     * \f$k_n = n\cdot K n\f$ read from the pair's tangent K (the law puts
-     * \f$k_n n\otimes n\f$ there; its shear terms have no nn part). Open
-     * pair: \f$\phi = -g\f$, i.e. \f$\lambda_n = 0\f$, which holds for the
-     * compliant law and for the rigid law's converged multipliers.
-     *
-     * Compliant law (\f$t_n = -k_n g\f$): \f$\phi = -g\f$ on both sides,
-     * so the zero of its linear interpolation is the zero of the gap, which
-     * is linear along a degree-1 element edge. Rigid law (closed
-     * \f$g \approx 0\f$, open \f$t_n = 0\f$): \f$\phi\f$ is the pressure
-     * over the pair's penalty on the closed side and minus the gap on the
-     * open side, both zero at the end. Either way \f$\phi\f$ is a
-     * continuous function of the displacements, so the interpolated end
-     * moves continuously when a pair changes state. Where inside the cell
-     * it lies depends on \f$k_n\f$: the rigid law's penalty is of the
-     * order of the surface stiffness E / h, so pressure and gap weigh
-     * alike; a compliant joint with \f$k_n \gg E/h\f$ puts the end next to
-     * its last closed node.
-     *
-     * @param[in] response Law evaluation of the pair.
-     * @param[in] normal Unit normal of the pair.
-     * @return \f$\phi\f$ (m); NaN for a closed pair whose tangent has no
-     *   positive normal stiffness (nothing to scale with).
-     */
-    double
-    contact_indicator(const JointResponse<2>     &response,
-                      const dealii::Tensor<1, 2> &normal);
+  /**
+   * @brief Contact indicator of one pair: positive when closed, negative
+   * when open, zero at the end of a closed zone.
+   *
+   * \f$\phi = t_n^{trial}/k_n = \lambda_n/k_n - g\f$, the law's own
+   * closure test (closed iff \f$t_n^{trial} \ge 0\f$ without tensile
+   * strength) in units of length. Closed pair: \f$\phi = t_n/k_n\f$ with
+   * \f$k_n = n\cdot K n\f$ read from the pair's tangent K (the law puts
+   * \f$k_n n\otimes n\f$ there; its shear terms have no nn part). Open
+   * pair: \f$\phi = -g\f$, i.e. \f$\lambda_n = 0\f$, which holds for the
+   * compliant law and for the rigid law's converged multipliers.
+   *
+   * Compliant law (\f$t_n = -k_n g\f$): \f$\phi = -g\f$ on both sides,
+   * so the zero of its linear interpolation is the zero of the gap, which
+   * is linear along a degree-1 element edge. Rigid law (closed
+   * \f$g \approx 0\f$, open \f$t_n = 0\f$): \f$\phi\f$ is the pressure
+   * over the pair's penalty on the closed side and minus the gap on the
+   * open side, both zero at the end. Either way \f$\phi\f$ is a
+   * continuous function of the displacements, so the interpolated end
+   * moves continuously when a pair changes state. Where inside the cell
+   * it lies depends on \f$k_n\f$: the rigid law's penalty is of the
+   * order of the surface stiffness E / h, so pressure and gap weigh
+   * alike; a compliant joint with \f$k_n \gg E/h\f$ puts the end next to
+   * its last closed node.
+   *
+   * @param[in] response Law evaluation of the pair.
+   * @param[in] normal Unit normal of the pair.
+   * @return \f$\phi\f$ (m); NaN for a closed pair whose tangent has no
+   *   positive normal stiffness (nothing to scale with).
+   */
+  double
+  contact_indicator(const JointResponse<2>     &response,
+                    const dealii::Tensor<1, 2> &normal);
 
-    /**
-     * @brief Per-joint forces, closed length, peak and mean normal stress.
-     *
-     * Nodal tractions are the pair tractions; the normal and shear forces
-     * are the components of their resultant (lumped weights) along the
-     * joint's reference normal and tangent: the normal shared by most of
-     * the joint's weight (its straight part), or the weighted mean normal
-     * on a curved joint. The averaged peak is the largest weighted mean of
-     * \f$t_n\f$ over a window of length @p averaging_length centred on a
-     * node: the pointwise peak at a sharp corner grows without bound under
-     * refinement, the averaged one converges.
-     *
-     * Closed length: the measure of the part of the joint where the linear
-     * interpolation of contact_indicator() between neighbouring nodes (in
-     * arc order) is >= 0, capped by the joint's end nodes. Each node's
-     * weight is split between its two neighbouring segments in proportion
-     * to their lengths (an end node gives all of it to its one segment), so
-     * a segment stands for the length of joint its two shares cover (its
-     * own length for straight joints of degree 1 or 2). A segment between
-     * two closed nodes counts whole, between two open ones not at all;
-     * between a closed node c and an open node o it counts the fraction
-     * \f$\phi_c / (\phi_c - \phi_o)\f$ from c. All nodes closed: the sum
-     * of the weights; all open: 0. Where the indicator does not change sign
-     * across such a segment (a closed pair held in tension by an intact
-     * tensile strength, \f$\phi_c < 0\f$) the segment keeps c's share, the
-     * node-count measure.
-     *
-     * @param[in] nodes All contact pairs.
-     * @param[in] responses Law evaluations of the converged state.
-     * @param[in] names One name per joint; pairs refer to it by index.
-     * @param[in] averaging_length Window length (m).
-     */
-    std::vector<JointReport>
-    make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
-                       const std::vector<JointResponse<2>> &responses,
-                       const std::vector<std::string>      &names,
-                       const double                         averaging_length);
+  /**
+   * @brief Per-joint forces, closed length, peak and mean normal stress.
+   *
+   * Nodal tractions are the pair tractions; the normal and shear forces
+   * are the components of their resultant (lumped weights) along the
+   * joint's reference normal and tangent: the normal shared by most of
+   * the joint's weight (its straight part), or the weighted mean normal
+   * on a curved joint. The averaged peak is the largest weighted mean of
+   * \f$t_n\f$ over a window of length @p averaging_length centred on a
+   * node: the pointwise peak at a sharp corner grows without bound under
+   * refinement, the averaged one converges.
+   *
+   * Closed length: the measure of the part of the joint where the linear
+   * interpolation of contact_indicator() between neighbouring nodes (in
+   * arc order) is >= 0, capped by the joint's end nodes. Each node's
+   * weight is split between its two neighbouring segments in proportion
+   * to their lengths (an end node gives all of it to its one segment), so
+   * a segment stands for the length of joint its two shares cover (its
+   * own length for straight joints of degree 1 or 2). A segment between
+   * two closed nodes counts whole, between two open ones not at all;
+   * between a closed node c and an open node o it counts the fraction
+   * \f$\phi_c / (\phi_c - \phi_o)\f$ from c. All nodes closed: the sum
+   * of the weights; all open: 0. Where the indicator does not change sign
+   * across such a segment (a closed pair held in tension by an intact
+   * tensile strength, \f$\phi_c < 0\f$) the segment keeps c's share, the
+   * node-count measure.
+   *
+   * @param[in] nodes All contact pairs.
+   * @param[in] responses Law evaluations of the converged state.
+   * @param[in] names One name per joint; pairs refer to it by index.
+   * @param[in] averaging_length Window length (m).
+   */
+  std::vector<JointReport>
+  make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
+                     const std::vector<JointResponse<2>> &responses,
+                     const std::vector<std::string>      &names,
+                     const double                         averaging_length);
 
-    /**
-     * @brief Pointwise peak (and where), and the largest mean of t_n over a
-     * window of length report.averaging_length, from report.profile.
-     *
-     * Each node's force w_i t_i is spread uniformly over an interval of
-     * its own length w_i, the intervals laid end to end in arc order (on a
-     * straight degree-1 joint: its tributary, midpoints to its
-     * neighbours), so a
-     * window integrates force whatever the node spacing and its mean never
-     * exceeds the pointwise peak; windows are centred on nodes' intervals
-     * and shifted to stay inside the joint (the whole joint if it is
-     * shorter than the window). Shared with the rigid-block model so both report the same
-     * averaged peak.
-     *
-     * @param[in,out] report Profile sorted by arc_position, peaks zero.
-     * @param[in] weights Length each profile node stands for (m).
-     */
-    void
-    add_peak_stresses(JointReport &report, const std::vector<double> &weights);
+  /**
+   * @brief Pointwise peak (and where), and the largest mean of t_n over a
+   * window of length report.averaging_length, from report.profile.
+   *
+   * Each node's force w_i t_i is spread uniformly over an interval of
+   * its own length w_i, the intervals laid end to end in arc order (on a
+   * straight degree-1 joint: its tributary, midpoints to its
+   * neighbours), so a
+   * window integrates force whatever the node spacing and its mean never
+   * exceeds the pointwise peak; windows are centred on nodes' intervals
+   * and shifted to stay inside the joint (the whole joint if it is
+   * shorter than the window). Shared with the rigid-block model so both report the same
+   * averaged peak.
+   *
+   * @param[in,out] report Profile sorted by arc_position, peaks zero.
+   * @param[in] weights Length each profile node stands for (m).
+   */
+  void
+  add_peak_stresses(JointReport &report, const std::vector<double> &weights);
 
-    /**
-     * @brief Largest overlap of the two sides of any joint (m, >= 0): minus
-     * the most negative gap of all profile nodes. The compliant law lets
-     * the sides overlap by t_n / k_n; the contact is small-strain and
-     * node-to-node, so an overlap that is not small against the blocks
-     * means that k_n is too soft for the loads.
-     */
-    double
-    largest_overlap(const std::vector<JointReport> &joints);
-  } // namespace Contact
-} // namespace FloorBlock
+  /**
+   * @brief Largest overlap of the two sides of any joint (m, >= 0): minus
+   * the most negative gap of all profile nodes. The compliant law lets
+   * the sides overlap by t_n / k_n; the contact is small-strain and
+   * node-to-node, so an overlap that is not small against the blocks
+   * means that k_n is too soft for the loads.
+   */
+  double
+  largest_overlap(const std::vector<JointReport> &joints);
+} // namespace FloorBlock::Contact
