@@ -3,57 +3,54 @@
 
 #include <cmath>
 
-namespace FloorBlock
+namespace FloorBlock::Analytic
 {
-  namespace Analytic
+  using Internal::is_positive;
+
+  CornerContact
+  corner_contact(const double lateral_force_over_width,
+                 const double floor_lift,
+                 const double youngs_modulus,
+                 const double support_width,
+                 const double block_width,
+                 const double block_height)
   {
-    using Internal::is_positive;
+    CornerContact contact;
+    const bool    inputs_ok =
+      std::isfinite(lateral_force_over_width) &&
+      lateral_force_over_width >= 0. && std::isfinite(floor_lift) &&
+      is_positive(youngs_modulus) && is_positive(support_width) &&
+      is_positive(block_width) && is_positive(block_height);
+    if (!inputs_ok)
+      {
+        contact.status = Status::invalid_input;
+        return contact;
+      }
+    if (floor_lift <= 0.)
+      {
+        contact.status = Status::zero_floor_lift;
+        return contact;
+      }
+    // Symbols of 6.51-6.53: Q force over b (N), y lift (m), E (Pa).
+    const double Q = lateral_force_over_width;
+    const double y = floor_lift;
+    const double E = youngs_modulus;
+    const double b = support_width;
+    const double L = block_width;
 
-    CornerContact
-    corner_contact(const double lateral_force_over_width,
-                   const double floor_lift,
-                   const double youngs_modulus,
-                   const double support_width,
-                   const double block_width,
-                   const double block_height)
-    {
-      CornerContact contact;
-      const bool    inputs_ok =
-        std::isfinite(lateral_force_over_width) &&
-        lateral_force_over_width >= 0. && std::isfinite(floor_lift) &&
-        is_positive(youngs_modulus) && is_positive(support_width) &&
-        is_positive(block_width) && is_positive(block_height);
-      if (!inputs_ok)
-        {
-          contact.status = Status::invalid_input;
-          return contact;
-        }
-      if (floor_lift <= 0.)
-        {
-          contact.status = Status::zero_floor_lift;
-          return contact;
-        }
-      // Symbols of 6.51-6.53: Q force over b (N), y lift (m), E (Pa).
-      const double Q = lateral_force_over_width;
-      const double y = floor_lift;
-      const double E = youngs_modulus;
-      const double b = support_width;
-      const double L = block_width;
-
-      contact.contact_length = L * std::sqrt(2. * Q / (y * E * b));
-      contact.contact_area   = b * contact.contact_length;
-      contact.average_stress = std::sqrt(y * E * Q / (2. * b * L * L));
-      contact.max_stress     = 2. * contact.average_stress;
-      // Finite inputs near the limits of double can still overflow the
-      // products above: report that instead of returning inf.
-      if (!std::isfinite(contact.contact_length) ||
-          !std::isfinite(contact.contact_area) ||
-          !std::isfinite(contact.average_stress) ||
-          !std::isfinite(contact.max_stress))
-        return CornerContact{Status::invalid_input, 0., 0., 0., 0.};
-      if (contact.contact_length > block_height)
-        contact.status = Status::contact_longer_than_block;
-      return contact;
-    }
-  } // namespace Analytic
-} // namespace FloorBlock
+    contact.contact_length = L * std::sqrt(2. * Q / (y * E * b));
+    contact.contact_area   = b * contact.contact_length;
+    contact.average_stress = std::sqrt(y * E * Q / (2. * b * L * L));
+    contact.max_stress     = 2. * contact.average_stress;
+    // Finite inputs near the limits of double can still overflow the
+    // products above: report that instead of returning inf.
+    if (!std::isfinite(contact.contact_length) ||
+        !std::isfinite(contact.contact_area) ||
+        !std::isfinite(contact.average_stress) ||
+        !std::isfinite(contact.max_stress))
+      return CornerContact{Status::invalid_input, 0., 0., 0., 0.};
+    if (contact.contact_length > block_height)
+      contact.status = Status::contact_longer_than_block;
+    return contact;
+  }
+} // namespace FloorBlock::Analytic

@@ -3,30 +3,27 @@
 
 #include <cmath>
 
-namespace FloorBlock
+namespace FloorBlock::Analytic
 {
-  namespace Analytic
-  {
-    using Internal::is_positive;
+  using Internal::is_positive;
 
-    HertzLineContact
-    hertz_line_contact(const double line_load,
-                       const double radius,
-                       const double contact_modulus)
-    {
-      if (!is_positive(line_load) || !is_positive(radius) ||
-          !is_positive(contact_modulus))
-        return HertzLineContact{Status::invalid_input, 0., 0.};
-      HertzLineContact contact;
-      contact.half_width =
-        std::sqrt(4. * line_load * radius / (M_PI * contact_modulus));
-      contact.peak_pressure = 2. * line_load / (M_PI * contact.half_width);
-      // Positive finite inputs near the limits of double can still
-      // overflow or underflow the products above.
-      if (!is_positive(contact.half_width) ||
-          !is_positive(contact.peak_pressure))
-        return HertzLineContact{Status::invalid_input, 0., 0.};
-      return contact;
-    }
-  } // namespace Analytic
-} // namespace FloorBlock
+  HertzLineContact
+  hertz_line_contact(const double line_load,
+                     const double radius,
+                     const double contact_modulus)
+  {
+    if (!is_positive(line_load) || !is_positive(radius) ||
+        !is_positive(contact_modulus))
+      return HertzLineContact{Status::invalid_input, 0., 0.};
+    HertzLineContact contact;
+    contact.half_width =
+      std::sqrt(4. * line_load * radius / (M_PI * contact_modulus));
+    contact.peak_pressure = 2. * line_load / (M_PI * contact.half_width);
+    // Positive finite inputs near the limits of double can still
+    // overflow or underflow the products above.
+    if (!is_positive(contact.half_width) ||
+        !is_positive(contact.peak_pressure))
+      return HertzLineContact{Status::invalid_input, 0., 0.};
+    return contact;
+  }
+} // namespace FloorBlock::Analytic

@@ -2,19 +2,16 @@
 
 #include <cmath>
 
-namespace FloorBlock
+namespace FloorBlock::Analytic
 {
-  namespace Analytic
+  namespace Internal
   {
-    namespace Internal
+    /** @brief True if @p value is finite and > 0 (a valid length, load,
+     *  modulus). */
+    inline bool
+    is_positive(const double value)
     {
-      /** @brief True if @p value is finite and > 0 (a valid length, load,
-       *  modulus). */
-      inline bool
-      is_positive(const double value)
-      {
-        return std::isfinite(value) && value > 0.;
-      }
-    } // namespace Internal
-  }   // namespace Analytic
-} // namespace FloorBlock
+      return std::isfinite(value) && value > 0.;
+    }
+  } // namespace Internal
+} // namespace FloorBlock::Analytic

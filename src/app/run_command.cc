@@ -1,6 +1,7 @@
 #include <app/command_options.h>
 #include <output/analytic_report.h>
 #include <output/comparison_report.h>
+#include <output/fem_summary.h>
 #include <output/figure_summary.h>
 #include <output/gnuplot.h>
 #include <output/report_markdown.h>
@@ -97,7 +98,8 @@ namespace FloorBlock::App
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
     write_closed_forms(folder, closed_forms);
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
-    std::cout << Pipeline::fem_summary_text(outcome);
+    std::cout << Output::fem_summary_text(outcome.report, outcome.result,
+                                          outcome.mesh);
     const auto estimate = Pipeline::estimate_error(scene, outcome, folder);
     std::optional<Output::RunComparison> comparison;
     if (!outcome.result.increments.empty())

@@ -1,4 +1,5 @@
 #include <app/command_options.h>
+#include <output/fem_summary.h>
 #include <pipeline/fem_pipeline.h>
 
 #include <iostream>
@@ -12,7 +13,9 @@ namespace FloorBlock::App
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
-    std::cout << Pipeline::fem_summary_text(outcome) << "wrote "
+    std::cout << Output::fem_summary_text(outcome.report, outcome.result,
+                                          outcome.mesh)
+              << "wrote "
               << folder.path_of("fem.json") << ", "
               << folder.path_of("joints.csv") << std::endl;
     return outcome.converged ? exit_code::success : exit_code::failure;

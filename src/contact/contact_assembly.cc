@@ -3,122 +3,119 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  evaluate_contact(const std::vector<ContactNode<dim>>          &nodes,
+                   const std::vector<const CoulombJoint<dim> *> &laws,
+                   const std::vector<JointHistory<dim>>         &histories,
+                   const dealii::TrilinosWrappers::MPI::Vector  &solution)
   {
-    template <int dim>
-    std::vector<JointResponse<dim>>
-    evaluate_contact(const std::vector<ContactNode<dim>>          &nodes,
-                     const std::vector<const CoulombJoint<dim> *> &laws,
-                     const std::vector<JointHistory<dim>>         &histories,
-                     const dealii::TrilinosWrappers::MPI::Vector  &solution)
-    {
-      std::vector<JointResponse<dim>> responses(nodes.size());
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        {
-          if (laws[p] == nullptr)
-            continue;
-          const ContactNode<dim> &node = nodes[p];
-          dealii::Tensor<1, dim>  jump = node.initial_gap * node.normal;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              jump[c] -= solution(node.dofs_a[c]);
-              jump[c] += node.against_rigid_obstacle() ?
-                           node.obstacle_displacement[c] :
-                           solution(node.dofs_b[c]);
-            }
-          responses[p] = laws[p]->evaluate(jump, node.normal, histories[p]);
-        }
-      return responses;
-    }
+    std::vector<JointResponse<dim>> responses(nodes.size());
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      {
+        if (laws[p] == nullptr)
+          continue;
+        const ContactNode<dim> &node = nodes[p];
+        dealii::Tensor<1, dim>  jump = node.initial_gap * node.normal;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            jump[c] -= solution(node.dofs_a[c]);
+            jump[c] += node.against_rigid_obstacle() ?
+                         node.obstacle_displacement[c] :
+                         solution(node.dofs_b[c]);
+          }
+        responses[p] = laws[p]->evaluate(jump, node.normal, histories[p]);
+      }
+    return responses;
+  }
 
-    template <int dim>
-    std::vector<std::vector<dealii::types::global_dof_index>>
-    pair_dof_groups(const std::vector<ContactNode<dim>> &nodes)
-    {
-      std::vector<std::vector<dealii::types::global_dof_index>> groups;
-      for (const auto &node : nodes)
-        {
-          std::vector<dealii::types::global_dof_index> group(
-            node.dofs_b.begin(), node.dofs_b.end());
-          if (node.against_rigid_obstacle())
-            group.clear();
-          group.insert(group.end(), node.dofs_a.begin(), node.dofs_a.end());
-          groups.push_back(group);
-        }
-      return groups;
-    }
+  template <int dim>
+  std::vector<std::vector<dealii::types::global_dof_index>>
+  pair_dof_groups(const std::vector<ContactNode<dim>> &nodes)
+  {
+    std::vector<std::vector<dealii::types::global_dof_index>> groups;
+    for (const auto &node : nodes)
+      {
+        std::vector<dealii::types::global_dof_index> group(
+          node.dofs_b.begin(), node.dofs_b.end());
+        if (node.against_rigid_obstacle())
+          group.clear();
+        group.insert(group.end(), node.dofs_a.begin(), node.dofs_a.end());
+        groups.push_back(group);
+      }
+    return groups;
+  }
 
-    template <int dim>
-    void
-    assemble_contact(const std::vector<ContactNode<dim>>     &nodes,
-                     const std::vector<JointResponse<dim>>   &responses,
-                     const dealii::AffineConstraints<double> &constraints,
-                     dealii::TrilinosWrappers::SparseMatrix  *matrix,
-                     dealii::TrilinosWrappers::MPI::Vector   *residual)
-    {
-      const std::vector<std::vector<dealii::types::global_dof_index>> groups =
-        pair_dof_groups(nodes);
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        {
-          const JointResponse<dim> &response = responses[p];
-          const double              weight   = nodes[p].weight;
-          // Local order: side B components first (if deformable), then A;
-          // B gets +w f and +w D, A gets the opposite, cross terms -w D.
-          const bool         two_sided = !nodes[p].against_rigid_obstacle();
-          const unsigned int n_sides   = two_sided ? 2 : 1;
-          const unsigned int n_local   = n_sides * dim;
-          dealii::FullMatrix<double> local_matrix(n_local, n_local);
-          dealii::Vector<double>     local_residual(n_local);
-          for (unsigned int side_i = 0; side_i < n_sides; ++side_i)
-            {
-              // Sign of side i: +1 for B, -1 for A.
-              const double sign_i = (two_sided && side_i == 0) ? 1. : -1.;
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  local_residual(side_i * dim + i) =
-                    sign_i * weight * response.force_density[i];
-                  for (unsigned int side_j = 0; side_j < n_sides; ++side_j)
-                    {
-                      const double sign_j =
-                        (two_sided && side_j == 0) ? 1. : -1.;
-                      for (unsigned int j = 0; j < dim; ++j)
-                        local_matrix(side_i * dim + i, side_j * dim + j) =
-                          sign_i * sign_j * weight * response.tangent[i][j];
-                    }
-                }
-            }
-          if (matrix != nullptr && residual != nullptr)
-            constraints.distribute_local_to_global(
-              local_matrix, local_residual, groups[p], *matrix, *residual);
-          else if (matrix != nullptr)
-            constraints.distribute_local_to_global(local_matrix,
-                                                   groups[p],
-                                                   *matrix);
-          else if (residual != nullptr)
-            constraints.distribute_local_to_global(local_residual,
-                                                   groups[p],
-                                                   *residual);
-        }
-      if (matrix != nullptr)
-        matrix->compress(dealii::VectorOperation::add);
-      if (residual != nullptr)
-        residual->compress(dealii::VectorOperation::add);
-    }
+  template <int dim>
+  void
+  assemble_contact(const std::vector<ContactNode<dim>>     &nodes,
+                   const std::vector<JointResponse<dim>>   &responses,
+                   const dealii::AffineConstraints<double> &constraints,
+                   dealii::TrilinosWrappers::SparseMatrix  *matrix,
+                   dealii::TrilinosWrappers::MPI::Vector   *residual)
+  {
+    const std::vector<std::vector<dealii::types::global_dof_index>> groups =
+      pair_dof_groups(nodes);
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      {
+        const JointResponse<dim> &response = responses[p];
+        const double              weight   = nodes[p].weight;
+        // Local order: side B components first (if deformable), then A;
+        // B gets +w f and +w D, A gets the opposite, cross terms -w D.
+        const bool         two_sided = !nodes[p].against_rigid_obstacle();
+        const unsigned int n_sides   = two_sided ? 2 : 1;
+        const unsigned int n_local   = n_sides * dim;
+        dealii::FullMatrix<double> local_matrix(n_local, n_local);
+        dealii::Vector<double>     local_residual(n_local);
+        for (unsigned int side_i = 0; side_i < n_sides; ++side_i)
+          {
+            // Sign of side i: +1 for B, -1 for A.
+            const double sign_i = (two_sided && side_i == 0) ? 1. : -1.;
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                local_residual(side_i * dim + i) =
+                  sign_i * weight * response.force_density[i];
+                for (unsigned int side_j = 0; side_j < n_sides; ++side_j)
+                  {
+                    const double sign_j =
+                      (two_sided && side_j == 0) ? 1. : -1.;
+                    for (unsigned int j = 0; j < dim; ++j)
+                      local_matrix(side_i * dim + i, side_j * dim + j) =
+                        sign_i * sign_j * weight * response.tangent[i][j];
+                  }
+              }
+          }
+        if (matrix != nullptr && residual != nullptr)
+          constraints.distribute_local_to_global(
+            local_matrix, local_residual, groups[p], *matrix, *residual);
+        else if (matrix != nullptr)
+          constraints.distribute_local_to_global(local_matrix,
+                                                 groups[p],
+                                                 *matrix);
+        else if (residual != nullptr)
+          constraints.distribute_local_to_global(local_residual,
+                                                 groups[p],
+                                                 *residual);
+      }
+    if (matrix != nullptr)
+      matrix->compress(dealii::VectorOperation::add);
+    if (residual != nullptr)
+      residual->compress(dealii::VectorOperation::add);
+  }
 
-    template std::vector<JointResponse<2>>
-    evaluate_contact(const std::vector<ContactNode<2>> &,
-                     const std::vector<const CoulombJoint<2> *> &,
-                     const std::vector<JointHistory<2>> &,
-                     const dealii::TrilinosWrappers::MPI::Vector &);
-    template void
-    assemble_contact(const std::vector<ContactNode<2>> &,
-                     const std::vector<JointResponse<2>> &,
-                     const dealii::AffineConstraints<double> &,
-                     dealii::TrilinosWrappers::SparseMatrix *,
-                     dealii::TrilinosWrappers::MPI::Vector *);
-    template std::vector<std::vector<dealii::types::global_dof_index>>
-    pair_dof_groups(const std::vector<ContactNode<2>> &);
-  } // namespace Contact
-} // namespace FloorBlock
+  template std::vector<JointResponse<2>>
+  evaluate_contact(const std::vector<ContactNode<2>> &,
+                   const std::vector<const CoulombJoint<2> *> &,
+                   const std::vector<JointHistory<2>> &,
+                   const dealii::TrilinosWrappers::MPI::Vector &);
+  template void
+  assemble_contact(const std::vector<ContactNode<2>> &,
+                   const std::vector<JointResponse<2>> &,
+                   const dealii::AffineConstraints<double> &,
+                   dealii::TrilinosWrappers::SparseMatrix *,
+                   dealii::TrilinosWrappers::MPI::Vector *);
+  template std::vector<std::vector<dealii::types::global_dof_index>>
+  pair_dof_groups(const std::vector<ContactNode<2>> &);
+} // namespace FloorBlock::Contact

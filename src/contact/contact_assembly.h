@@ -9,43 +9,40 @@
 
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
-  {
-    /**
-     * @brief Evaluates the joint law of every pair at the displacement
-     * @p solution.
-     * @param[in] nodes Contact pairs.
-     * @param[in] laws One law per pair (the law of the pair's joint); a
-     *   null law (an exact-law pair, see ExactContact) leaves the pair's
-     *   response at its default.
-     * @param[in] histories One history per pair.
-     * @param[in] solution Displacement (m).
-     */
-    template <int dim>
-    std::vector<JointResponse<dim>>
-    evaluate_contact(const std::vector<ContactNode<dim>>        &nodes,
-                     const std::vector<const CoulombJoint<dim> *> &laws,
-                     const std::vector<JointHistory<dim>>        &histories,
-                     const dealii::TrilinosWrappers::MPI::Vector &solution);
+  /**
+   * @brief Evaluates the joint law of every pair at the displacement
+   * @p solution.
+   * @param[in] nodes Contact pairs.
+   * @param[in] laws One law per pair (the law of the pair's joint); a
+   *   null law (an exact-law pair, see ExactContact) leaves the pair's
+   *   response at its default.
+   * @param[in] histories One history per pair.
+   * @param[in] solution Displacement (m).
+   */
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  evaluate_contact(const std::vector<ContactNode<dim>>        &nodes,
+                   const std::vector<const CoulombJoint<dim> *> &laws,
+                   const std::vector<JointHistory<dim>>        &histories,
+                   const dealii::TrilinosWrappers::MPI::Vector &solution);
 
-    /**
-     * @brief Adds the pairs' internal forces \f$\pm w\,(−t_n n + t_t)\f$ to
-     * @p residual and their tangents to @p matrix (either may be null),
-     * distributed with @p constraints.
-     */
-    template <int dim>
-    void
-    assemble_contact(const std::vector<ContactNode<dim>>     &nodes,
-                     const std::vector<JointResponse<dim>>   &responses,
-                     const dealii::AffineConstraints<double> &constraints,
-                     dealii::TrilinosWrappers::SparseMatrix  *matrix,
-                     dealii::TrilinosWrappers::MPI::Vector   *residual);
+  /**
+   * @brief Adds the pairs' internal forces \f$\pm w\,(−t_n n + t_t)\f$ to
+   * @p residual and their tangents to @p matrix (either may be null),
+   * distributed with @p constraints.
+   */
+  template <int dim>
+  void
+  assemble_contact(const std::vector<ContactNode<dim>>     &nodes,
+                   const std::vector<JointResponse<dim>>   &responses,
+                   const dealii::AffineConstraints<double> &constraints,
+                   dealii::TrilinosWrappers::SparseMatrix  *matrix,
+                   dealii::TrilinosWrappers::MPI::Vector   *residual);
 
-    /** @brief The DoFs of each pair, for the sparsity pattern. */
-    template <int dim>
-    std::vector<std::vector<dealii::types::global_dof_index>>
-    pair_dof_groups(const std::vector<ContactNode<dim>> &nodes);
-  } // namespace Contact
-} // namespace FloorBlock
+  /** @brief The DoFs of each pair, for the sparsity pattern. */
+  template <int dim>
+  std::vector<std::vector<dealii::types::global_dof_index>>
+  pair_dof_groups(const std::vector<ContactNode<dim>> &nodes);
+} // namespace FloorBlock::Contact

@@ -25,787 +25,784 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  namespace
   {
-    namespace
+    /**
+     * Fraction of a stage treated as its end (-): ten steps of 0.1 sum to
+     * 0.9999999999999999, and the round-off remainder must not become an
+     * increment of its own (a zero load step re-tests every slipping pair
+     * exactly on its Coulomb limit, where the stick/slip decision is
+     * round-off and the active set can cycle). Same value as the rigid
+     * model's stage end.
+     */
+    constexpr double stage_end_tolerance = 1e-12;
+
+    /** kn h / E above which a failure suggests the rigid law (-). */
+    constexpr double ill_conditioned_joint_ratio = 3.;
+
+    const char *
+    stage_name(const LoadStage stage)
     {
-      /**
-       * Fraction of a stage treated as its end (-): ten steps of 0.1 sum to
-       * 0.9999999999999999, and the round-off remainder must not become an
-       * increment of its own (a zero load step re-tests every slipping pair
-       * exactly on its Coulomb limit, where the stick/slip decision is
-       * round-off and the active set can cycle). Same value as the rigid
-       * model's stage end.
-       */
-      constexpr double stage_end_tolerance = 1e-12;
+      switch (stage)
+        {
+          case LoadStage::gravity:
+            return "gravity";
+          case LoadStage::support_pressure:
+            return "support pressure";
+          case LoadStage::uplift:
+            return "uplift";
+        }
+      return "";
+    }
 
-      /** kn h / E above which a failure suggests the rigid law (-). */
-      constexpr double ill_conditioned_joint_ratio = 3.;
+    std::vector<JointState>
+    states_of(const std::vector<JointResponse<2>> &responses)
+    {
+      std::vector<JointState> states;
+      states.reserve(responses.size());
+      for (const auto &response : responses)
+        states.push_back(response.state);
+      return states;
+    }
+  } // namespace
 
-      const char *
-      stage_name(const LoadStage stage)
+  ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
+                               const ContactProblem<2>       &problem,
+                               const ContactSolverSettings    &settings)
+    : problem(problem)
+    , settings(settings)
+    , fe_space(triangulation, settings.fe_degree)
+    , console(std::cout, settings.verbose)
+    , timer(console,
+            dealii::TimerOutput::never,
+            dealii::TimerOutput::wall_times)
+  {
+    // The pairing, the stored residual and the kept LU factors read and
+    // write only locally owned entries and decide per process: correct on
+    // one process per mesh, which is how sweeps and ladders run (MPI
+    // parallelism over cases). A distributed mesh is refused, not
+    // half-supported.
+    if (dealii::Utilities::MPI::n_mpi_processes(
+          fe_space.dof_handler().get_communicator()) != 1)
+      throw std::logic_error("ContactSolver needs the whole mesh on one "
+                             "process (a serial Triangulation); run cases "
+                             "in parallel instead");
+    dealii::TimerOutput::Scope scope(timer, "Contact: setup");
+    setup_contact();
+    dealii::IndexSet unused;
+    std::vector<Fem::DirichletCondition<2>> zero_conditions;
+    for (const auto &support : problem.supports)
+      zero_conditions.push_back({support.boundary_id,
+                                 support.constrained_components,
+                                 [](const dealii::Point<2> &) {
+                                   return dealii::Tensor<1, 2>();
+                                 }});
+    homogeneous_constraints =
+      Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
+    Fem::make_sparsity(fe_space,
+                       homogeneous_constraints,
+                       pair_dof_groups(nodes),
+                       pattern);
+    matrix.reinit(pattern);
+    bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
+      fe_space, problem.model, homogeneous_constraints, pattern);
+    if (std::any_of(exact_laws.begin(),
+                    exact_laws.end(),
+                    [](const auto &law) { return law.has_value(); }))
+      setup_exact_system();
+    if (exact || Solver::uses_direct_solver(settings.linear,
+                                            fe_space.dof_handler().n_dofs()))
+      direct_solver =
+        std::make_unique<Solver::ReusedFactorization>(settings.linear);
+    const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
+    // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
+    // so that every rank of a sweep solves its own case independently.
+    const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
+    current_solution.reinit(owned, communicator);
+    committed_solution.reinit(owned, communicator);
+    newton_base.reinit(owned, communicator);
+    update.reinit(owned, communicator);
+    residual.reinit(owned, communicator);
+    last_change.reinit(owned, communicator);
+
+    const auto &fe = fe_space.fe();
+    dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
+    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
       {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          dof_component[dofs[i]] = fe.system_to_component_index(i).first;
+      }
+  }
+
+  void
+  ContactSolver::setup_contact()
+  {
+    double largest_modulus = 0.;
+    for (const auto &entry : problem.model.laws)
+      largest_modulus =
+        std::max(largest_modulus, entry.second.youngs_modulus());
+    const double smallest_cell = fe_space.minimal_cell_diameter();
+    for (unsigned int j = 0; j < problem.joints.size(); ++j)
+      {
+        const JointDefinition<2> &joint = problem.joints[j];
+        if (joint.law == JointLawKind::compliant &&
+            (!(joint.parameters.normal_stiffness > 0.) ||
+             !(joint.parameters.shear_stiffness > 0.)))
+          throw InputError("joint '" + joint.name +
+                           "': compliant law needs kn > 0 and ks > 0 Pa/m");
+        joint_laws.push_back(
+          std::make_unique<CoulombJoint<2>>(joint.parameters));
+        const std::vector<ContactNode<2>> joint_nodes =
+          joint.against_rigid_plane ?
+            pair_nodes_with_plane(fe_space,
+                                  joint.side_a,
+                                  joint.plane_point,
+                                  joint.plane_normal,
+                                  j) :
+            pair_joint_nodes(fe_space, joint.side_a, joint.side_b, j);
+        nodes.insert(nodes.end(), joint_nodes.begin(), joint_nodes.end());
+      }
+    std::vector<bool> joint_is_exact;
+    for (const auto &joint : problem.joints)
+      joint_is_exact.push_back(joint.law == JointLawKind::rigid);
+    const unsigned int n_crosspoint_pairs =
+      remove_crosspoint_pairs(nodes, joint_is_exact);
+    if (n_crosspoint_pairs > 0)
+      console << "  " << n_crosspoint_pairs
+              << " rigid-law pairs at crosspoints merged into their "
+                 "neighbours"
+              << std::endl;
+
+    for (const auto &node : nodes)
+      {
+        const JointDefinition<2> &joint = problem.joints[node.joint];
+        if (joint.law == JointLawKind::compliant)
+          {
+            pair_laws.push_back(joint_laws[node.joint].get());
+            penalty_pair_laws.push_back(pair_laws.back());
+            exact_laws.emplace_back();
+            continue;
+          }
+        // Exact law: the complementarity parameter per pair is a multiple
+        // of the surface's own stiffness E / w, so that the multiplier and
+        // gap terms of the augmented multiplier weigh alike at every pair
+        // whatever its cell size. It changes the Newton iterates, never
+        // the converged answer.
+        const double length = std::max(node.weight, smallest_cell);
+        ExactPairLaw law;
+        law.surface_stiffness = largest_modulus / length;
+        law.complementarity.friction_coefficient =
+          std::tan(joint.parameters.friction_angle);
+        law.complementarity.cohesion = joint.parameters.cohesion;
+        law.complementarity.normal_parameter =
+          settings.rigid_penalty_factor * law.surface_stiffness;
+        law.complementarity.tangential_parameter =
+          law.complementarity.normal_parameter;
+        exact_laws.push_back(law);
+        pair_laws.push_back(nullptr);
+        JointConstants springs  = joint.parameters;
+        springs.normal_stiffness = law.complementarity.normal_parameter;
+        springs.shear_stiffness  = law.complementarity.tangential_parameter;
+        springs.tensile_strength = 0.;
+        penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+        penalty_pair_laws.push_back(penalty_laws.back().get());
+      }
+    committed_history.assign(nodes.size(), JointHistory<2>());
+    working_history = committed_history;
+
+    // Compliant joints much stiffer than the cells they join make the
+    // Newton matrix ill-conditioned and the contact set flip (bug 3 of
+    // tests/scenarios/HARD_CASES.md: kn h / E = 9 cycles, 0.9 converges);
+    // a failure then names the remedy.
+    double stiffest = 0.;
+    for (const auto &joint : problem.joints)
+      if (joint.law == JointLawKind::compliant)
+        stiffest = std::max({stiffest,
+                             joint.parameters.normal_stiffness,
+                             joint.parameters.shear_stiffness});
+    const double ratio = stiffest * smallest_cell / largest_modulus;
+    if (ratio > ill_conditioned_joint_ratio)
+      {
+        std::ostringstream hint;
+        hint << "; note: the compliant joints are stiff against the "
+                "blocks (kn h / E = "
+             << ratio << " with h the smallest cell, " << smallest_cell
+             << " m): use Joints/Law = rigid for joints this stiff";
+        stiffness_hint = hint.str();
+      }
+  }
+
+  void
+  ContactSolver::setup_exact_system()
+  {
+    const unsigned int n_u = fe_space.dof_handler().n_dofs();
+    exact                  = std::make_unique<ExactContact<2>>(
+      nodes, exact_laws, homogeneous_constraints, n_u);
+    const unsigned int n_total = n_u + exact->n_multipliers();
+    dealii::DynamicSparsityPattern couplings(n_total, n_total);
+    for (auto entry = pattern.begin(); entry != pattern.end(); ++entry)
+      couplings.add(entry->row(), entry->column());
+    exact->add_couplings(couplings);
+    const MPI_Comm   communicator = fe_space.dof_handler().get_communicator();
+    const dealii::IndexSet all    = dealii::complete_index_set(n_total);
+    system_pattern.reinit(all, all, couplings, communicator);
+    system_pattern.compress();
+    // K and the multipliers' forces B^T never change: stored once, copied
+    // at every Newton iteration before the equations of the pairs are
+    // added.
+    base_matrix.reinit(system_pattern);
+    const auto &stiffness = bulk->condensed_stiffness();
+    for (auto entry = stiffness.begin(); entry != stiffness.end(); ++entry)
+      base_matrix.set(entry->row(), entry->column(), entry->value());
+    base_matrix.compress(dealii::VectorOperation::insert);
+    exact->add_force_block(base_matrix);
+    matrix.reinit(system_pattern);
+    system_residual.reinit(all, communicator);
+    system_update.reinit(all, communicator);
+    multiplier_update.reinit(exact->n_multipliers());
+    multiplier_base.reinit(exact->n_multipliers());
+    committed_multipliers.reinit(exact->n_multipliers());
+    if (exact->n_fixed_directions() > 0)
+      console << "  " << exact->n_fixed_directions()
+              << " rigid-law pair directions held on both sides: their "
+                 "tractions are support reactions"
+              << std::endl;
+  }
+
+  Fem::ElasticModel<2>
+  ContactSolver::scaled_model(const LoadFactors &factors) const
+  {
+    Fem::ElasticModel<2> model = problem.model;
+    model.gravity *= factors.gravity;
+    for (auto &entry : model.pressures)
+      entry.second *= factors.pressure;
+    return model;
+  }
+
+  dealii::AffineConstraints<double>
+  ContactSolver::constraints_at(const double uplift_factor)
+  {
+    std::vector<Fem::DirichletCondition<2>> conditions;
+    const UpliftSettings uplift = problem.uplift;
+    for (const auto &support : problem.supports)
+      {
+        const bool moves = support.moves_with_uplift;
+        conditions.push_back(
+          {support.boundary_id,
+           support.constrained_components,
+           [uplift, uplift_factor, moves](const dealii::Point<2> &point) {
+             return moves ?
+                      uplift_displacement(uplift, uplift_factor, point) :
+                      dealii::Tensor<1, 2>();
+           }});
+      }
+    return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
+  }
+
+  void
+  ContactSolver::move_obstacles(const double uplift_factor)
+  {
+    for (auto &node : nodes)
+      if (problem.joints[node.joint].plane_moves_with_uplift)
+        node.obstacle_displacement =
+          uplift_displacement(problem.uplift, uplift_factor, node.position);
+  }
+
+  double
+  ContactSolver::load_norm(const LoadFactors &factors)
+  {
+    dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
+    zero = 0.;
+    bulk->residual(zero, factors.gravity, factors.pressure, residual);
+    return residual.l2_norm();
+  }
+
+  bool
+  ContactSolver::solve_linear(std::string &message)
+  {
+    ++n_linear_solves;
+    if (exact_equations())
+      {
+        // Multipliers make the system a saddle point: direct solver only.
+        dealii::TrilinosWrappers::MPI::Vector right_hand_side(system_residual);
+        right_hand_side *= -1.;
+        system_update = 0.;
+        const Solver::LinearSolveInfo info =
+          direct_solver->solve(matrix, right_hand_side, system_update);
+        message = info.message;
+        if (!info.success)
+          return false;
+        const unsigned int n_u = update.size();
+        std::copy(system_update.begin(),
+                  system_update.begin() + n_u,
+                  update.begin());
+        std::copy(system_update.begin() + n_u,
+                  system_update.end(),
+                  multiplier_update.begin());
+        return true;
+      }
+    dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
+    right_hand_side *= -1.;
+    update = 0.;
+    const Solver::LinearSolveInfo info =
+      direct_solver ?
+        direct_solver->solve(matrix, right_hand_side, update) :
+        Solver::solve_linear_system(settings.linear,
+                                    matrix,
+                                    right_hand_side,
+                                    fe_space.constant_modes(),
+                                    update);
+    message = info.message;
+    return info.success;
+  }
+
+  bool
+  ContactSolver::solve_load_state(const LoadFactors &factors,
+                                  const double       prediction,
+                                  IncrementResult   &increment,
+                                  std::string       &failure_reason)
+  {
+    const dealii::AffineConstraints<double> constraints = [&]() {
+      dealii::TimerOutput::Scope scope(timer, "Contact: constraints");
+      return constraints_at(factors.uplift);
+    }();
+    constraints.distribute(current_solution);
+    move_obstacles(factors.uplift);
+    double reference_load = load_norm(factors);
+
+    NewtonCallbacks callbacks;
+    callbacks.assemble = [&]() {
+      dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
+      const std::vector<JointResponse<2>> responses = responses_at_iterate();
+      matrix.copy_from(exact_equations() ? base_matrix :
+                                           bulk->condensed_stiffness());
+      bulk->residual(
+        current_solution, factors.gravity, factors.pressure, residual);
+      assemble_contact(
+        nodes, responses, homogeneous_constraints, &matrix, &residual);
+      if (exact_equations())
+        {
+          std::copy(residual.begin(), residual.end(), system_residual.begin());
+          std::fill(system_residual.begin() + residual.size(),
+                    system_residual.end(),
+                    0.);
+          exact->assemble_equations(matrix, system_residual);
+        }
+      active_set.update(states_of(responses));
+      NewtonIterate iterate;
+      iterate.residual_norm =
+        exact_equations() ? system_residual.l2_norm() : residual.l2_norm();
+      iterate.set_signature = active_set.signature();
+      iterate.counts        = active_set.counts();
+      last_iterate_counts   = iterate.counts;
+      console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
+              << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
+              << iterate.counts.n_open << std::endl;
+      return iterate;
+    };
+    callbacks.solve_update = [&](std::string &message) {
+      dealii::TimerOutput::Scope scope(timer, "Contact: linear solve");
+      if (!solve_linear(message))
+        return false;
+      homogeneous_constraints.distribute(update);
+      newton_base = current_solution;
+      if (exact_equations())
+        multiplier_base = exact->multipliers();
+      return true;
+    };
+    callbacks.set_step = [&](const double step) {
+      current_solution = newton_base;
+      current_solution.add(step, update);
+      if (exact_equations())
+        {
+          exact->multipliers() = multiplier_base;
+          exact->multipliers().add(step, multiplier_update);
+        }
+    };
+    callbacks.round_off_floor = [&]() {
+      const double bulk_floor = bulk->round_off_floor(
+        current_solution, factors.gravity, factors.pressure);
+      const double contact_floor =
+        exact_equations() ? exact->round_off_floor(current_solution) : 0.;
+      return std::hypot(bulk_floor, contact_floor);
+    };
+
+    if (prediction > 0.)
+      {
+        // The stop test stays relative to the larger of the load and the
+        // residual at the last converged state, as without the predictor:
+        // the predictor changes where Newton starts, not when it stops.
+        // (Relative to the load alone, a 1e-12 tolerance fell below the
+        // round-off of K u under a large uplift.)
+        reference_load =
+          std::max(reference_load, callbacks.assemble().residual_norm);
+        current_solution.add(prediction, last_change);
+        constraints.distribute(current_solution);
+        // The multipliers start from the last converged state: their
+        // extrapolation too made the predictor useless on the lifted
+        // floor (58 Newton iterations plain, 59 with both extrapolated,
+        // 32 with the displacements alone).
+      }
+
+    const NewtonReport report =
+      solve_newton(settings.newton,
+                   reference_load,
+                   callbacks,
+                   prediction > 0. ? ReferenceForce::given :
+                                     ReferenceForce::given_or_first_residual);
+    increment.n_newton_iterations = report.n_iterations;
+    increment.round_off_limited   = report.stopped_at_round_off_floor;
+    increment.relative_residual   = report.relative_residual;
+    if (!report.converged)
+      failure_reason = report.failure_reason;
+    else if (exact_equations())
+      exact->zero_open_multipliers();
+    return report.converged;
+  }
+
+  std::vector<JointResponse<2>>
+  ContactSolver::responses_at_iterate()
+  {
+    std::vector<JointResponse<2>> responses =
+      evaluate_contact(nodes,
+                       penalty_start ? penalty_pair_laws : pair_laws,
+                       working_history,
+                       current_solution);
+    if (exact_equations())
+      exact->evaluate(current_solution, working_history, responses);
+    return responses;
+  }
+
+  bool
+  ContactSolver::exact_equations() const
+  {
+    return exact && !penalty_start;
+  }
+
+  bool
+  ContactSolver::solve_from_penalty_start(const LoadFactors &factors,
+                                          IncrementResult   &increment,
+                                          std::string       &failure_reason)
+  {
+    // The exact law's first iterate ties every pair (stick at g = 0,
+    // lambda = 0); from there a block can reach an iterate held by
+    // slipping pairs alone, a singular Newton matrix (six-block scene,
+    // first increment: a block next to the face lifted off its bedding).
+    // Springs of the complementarity parameter's stiffness let the
+    // blocks settle; their state and tractions start the exact Newton.
+    penalty_start = true;
+    IncrementResult penalty_increment;
+    const bool      settled =
+      solve_load_state(factors, 0., penalty_increment, failure_reason);
+    if (settled)
+      exact->set_multipliers(responses_at_iterate());
+    penalty_start = false;
+    if (!settled)
+      {
+        failure_reason = "penalty start: " + failure_reason;
+        return false;
+      }
+    const bool solved =
+      solve_load_state(factors, 0., increment, failure_reason);
+    increment.n_newton_iterations += penalty_increment.n_newton_iterations;
+    increment.started_from_penalty = true;
+    return solved;
+  }
+
+  void
+  ContactSolver::commit(const std::vector<JointResponse<2>> &responses)
+  {
+    committed_solution  = current_solution;
+    committed_responses = responses;
+    if (exact)
+      committed_multipliers = exact->multipliers();
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      {
+        const JointResponse<2> &response = responses[p];
+        JointHistory<2>        &history  = committed_history[p];
+        history.tangential_base = response.tangential_traction;
+        history.reference_slip  = response.slip;
+        // UDEC convention: cohesion and tensile strength are lost for good
+        // once the pair slips or opens.
+        history.intact = history.intact && response.state == JointState::stick;
+      }
+    working_history = committed_history;
+  }
+
+  ForceBalance
+  ContactSolver::force_balance(const Fem::ElasticModel<2>          &model,
+                               const std::vector<JointResponse<2>> &responses)
+  {
+    dealii::AffineConstraints<double> no_constraints;
+    no_constraints.close();
+    dealii::TrilinosWrappers::MPI::Vector raw(residual);
+    raw = 0.;
+    ForceBalance                   balance;
+    Fem::ElasticAssemblyTargets<2> targets;
+      targets.cache = &cell_matrices;
+    targets.residual           = &raw;
+    targets.applied_load_total = &balance.applied_load;
+    Fem::assemble_elastic_system(
+      fe_space, model, current_solution, no_constraints, targets);
+    assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
+    // The equations solved are the condensed ones: a hanging node's
+    // residual is carried by its masters, and where a master is a support
+    // DoF that share is part of the support's reaction. Without it the
+    // check reported 2e-3 imbalance on adaptively refined meshes whose
+    // hanging nodes touch a support (the solution itself was balanced).
+    dealii::Vector<double> condensed(raw);
+    for (const auto &line :
+         fe_space.hanging_node_constraints().get_lines())
+      if (!dirichlet_dofs.is_element(line.index))
+        {
+          for (const auto &[master, weight] : line.entries)
+            condensed(master) += weight * condensed(line.index);
+          condensed(line.index) = 0.;
+        }
+    double reaction_magnitude = 0.;
+    for (const auto dof : dirichlet_dofs)
+      {
+        balance.support_reaction[dof_component[dof]] += condensed(dof);
+        reaction_magnitude += std::abs(condensed(dof));
+      }
+    // A rigid obstacle is a support too: it receives +w f (the force
+    // density on side B) from each of its pairs.
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      if (nodes[p].against_rigid_obstacle())
+        {
+          const dealii::Tensor<1, 2> force =
+            nodes[p].weight * responses[p].force_density;
+          balance.support_reaction += force;
+          reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
+        }
+    const double scale = balance.applied_load.norm() + reaction_magnitude;
+    balance.relative_imbalance =
+      scale > 0. ?
+        (balance.applied_load + balance.support_reaction).norm() / scale :
+        0.;
+    return balance;
+  }
+
+  void
+  ContactSolver::run_stage(const LoadStage    stage,
+                           const unsigned int n_increments,
+                           SolveResult       &result)
+  {
+    if (n_increments == 0)
+      return;
+    const double nominal_step = 1. / n_increments;
+    double       reached      = 0.;
+    double       step         = nominal_step;
+    unsigned int n_failed     = 0;
+    last_change_step          = 0.; // no extrapolation across stages
+    while (reached < 1.)
+      {
+        // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
+        // solve, so nothing half-computed reaches a result file.
+        stop_if_interrupted();
+        const bool   last   = reached + step >= 1. - stage_end_tolerance;
+        const double target = last ? 1. : reached + step;
+        LoadFactors  factors = committed_factors;
         switch (stage)
           {
             case LoadStage::gravity:
-              return "gravity";
+              factors = {target, 0., 0.};
+              break;
             case LoadStage::support_pressure:
-              return "support pressure";
+              factors = {problem.steps.gravity_with_pressure ? target : 1.,
+                         target,
+                         0.};
+              break;
             case LoadStage::uplift:
-              return "uplift";
+              factors = {1., 1., target};
+              break;
           }
-        return "";
+        dealii::Timer   clock;
+        IncrementResult increment;
+        std::string     reason;
+        const double prediction =
+          settings.extrapolate_increments && last_change_step > 0. ?
+            (target - reached) / last_change_step :
+            0.;
+        const auto record_failure = [&](const std::string &start) {
+          n_failed_newton_iterations += increment.n_newton_iterations;
+          std::ostringstream attempt;
+          attempt << stage_name(stage) << " factor " << target << " (step "
+                  << step << start << "): " << reason;
+          failed_attempts.push_back(attempt.str());
+          console << "  failed: " << attempt.str() << std::endl;
+          current_solution = committed_solution;
+          working_history  = committed_history;
+          if (exact)
+            exact->multipliers() = committed_multipliers;
+        };
+        bool solved = false;
+        if (prediction > 0.)
+          {
+            solved = solve_load_state(factors, prediction, increment, reason);
+            // The extrapolated start can lie where a very stiff joint law
+            // makes the active set cycle (kn = 1e14 Pa/m, two-block
+            // test); the plain start is tried before any cutback, so a
+            // start the predictor spoils costs a retry, not a cutback.
+            if (!solved)
+              {
+                record_failure(", extrapolated start");
+                increment = IncrementResult();
+              }
+          }
+        if (!solved)
+          solved = solve_load_state(factors, 0., increment, reason);
+        if (!solved && exact)
+          {
+            record_failure(", exact law from the last state");
+            increment = IncrementResult();
+            solved    = solve_from_penalty_start(factors, increment, reason);
+          }
+        if (solved)
+          {
+            dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
+            const std::vector<JointResponse<2>> responses =
+              responses_at_iterate();
+            increment.stage        = stage;
+            increment.stage_factor = target;
+            increment.n_cutbacks   = n_failed;
+            increment.counts       = count_states(states_of(responses));
+            increment.balance = force_balance(scaled_model(factors), responses);
+            std::vector<std::string> names;
+            for (const auto &joint : problem.joints)
+              names.push_back(joint.name);
+            increment.joints = make_joint_reports(
+              nodes, responses, names, settings.averaging_length);
+            increment.motions =
+              Fem::fit_rigid_motions(fe_space, current_solution);
+            last_change = current_solution;
+            last_change -= committed_solution;
+            last_change_step = target - reached;
+            commit(responses);
+            committed_factors = factors;
+            reached           = target;
+            n_failed          = 0;
+            step              = std::min(nominal_step, 2. * step);
+            increment.wall_time = clock.wall_time();
+            console << "  " << stage_name(stage) << " " << target
+                    << ": newton " << increment.n_newton_iterations
+                    << ", stick/slip/open " << increment.counts.n_stick
+                    << "/" << increment.counts.n_slip << "/"
+                    << increment.counts.n_open << ", residual "
+                    << increment.relative_residual << ", imbalance "
+                    << increment.balance.relative_imbalance << std::endl;
+            if (!settings.output_directory.empty())
+              write_output(responses);
+            result.increments.push_back(increment);
+            continue;
+          }
+        record_failure("");
+        if (++n_failed > settings.max_cutbacks)
+          throw ContactSolveFailure(
+            std::string("contact solve failed in stage '") +
+              stage_name(stage) + "' after " +
+              std::to_string(settings.max_cutbacks) + " cutbacks: " + reason +
+              stiffness_hint,
+            failed_attempts,
+            result.increments.empty() ?
+              std::nullopt :
+              std::optional<IncrementResult>(result.increments.back()),
+            last_iterate_counts);
+        step /= 2.;
       }
+  }
 
-      std::vector<JointState>
-      states_of(const std::vector<JointResponse<2>> &responses)
+  SolveResult
+  ContactSolver::run()
+  {
+    SolveResult result;
+    result.n_dofs          = fe_space.dof_handler().n_dofs();
+    result.n_contact_pairs = nodes.size();
+    current_solution       = 0.;
+    committed_solution     = 0.;
+    if (exact)
       {
-        std::vector<JointState> states;
-        states.reserve(responses.size());
-        for (const auto &response : responses)
-          states.push_back(response.state);
-        return states;
-      }
-    } // namespace
-
-    ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
-                                 const SceneDefinition<2>       &scene,
-                                 const ContactSolverSettings    &settings)
-      : scene(scene)
-      , settings(settings)
-      , fe_space(triangulation, settings.fe_degree)
-      , console(std::cout, settings.verbose)
-      , timer(console,
-              dealii::TimerOutput::never,
-              dealii::TimerOutput::wall_times)
-    {
-      // The pairing, the stored residual and the kept LU factors read and
-      // write only locally owned entries and decide per process: correct on
-      // one process per mesh, which is how sweeps and ladders run (MPI
-      // parallelism over cases). A distributed mesh is refused, not
-      // half-supported.
-      if (dealii::Utilities::MPI::n_mpi_processes(
-            fe_space.dof_handler().get_communicator()) != 1)
-        throw std::logic_error("ContactSolver needs the whole mesh on one "
-                               "process (a serial Triangulation); run cases "
-                               "in parallel instead");
-      dealii::TimerOutput::Scope scope(timer, "Contact: setup");
-      setup_contact();
-      dealii::IndexSet unused;
-      std::vector<Fem::DirichletCondition<2>> zero_conditions;
-      for (const auto &support : scene.supports)
-        zero_conditions.push_back({support.boundary_id,
-                                   support.constrained_components,
-                                   [](const dealii::Point<2> &) {
-                                     return dealii::Tensor<1, 2>();
-                                   }});
-      homogeneous_constraints =
-        Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
-      Fem::make_sparsity(fe_space,
-                         homogeneous_constraints,
-                         pair_dof_groups(nodes),
-                         pattern);
-      matrix.reinit(pattern);
-      bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
-        fe_space, scene.model, homogeneous_constraints, pattern);
-      if (std::any_of(exact_laws.begin(),
-                      exact_laws.end(),
-                      [](const auto &law) { return law.has_value(); }))
-        setup_exact_system();
-      if (exact || Solver::uses_direct_solver(settings.linear,
-                                              fe_space.dof_handler().n_dofs()))
-        direct_solver =
-          std::make_unique<Solver::ReusedFactorization>(settings.linear);
-      const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
-      // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
-      // so that every rank of a sweep solves its own case independently.
-      const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
-      current_solution.reinit(owned, communicator);
-      committed_solution.reinit(owned, communicator);
-      newton_base.reinit(owned, communicator);
-      update.reinit(owned, communicator);
-      residual.reinit(owned, communicator);
-      last_change.reinit(owned, communicator);
-
-      const auto &fe = fe_space.fe();
-      dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
-      std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            dof_component[dofs[i]] = fe.system_to_component_index(i).first;
-        }
-    }
-
-    void
-    ContactSolver::setup_contact()
-    {
-      double largest_modulus = 0.;
-      for (const auto &entry : scene.model.laws)
-        largest_modulus =
-          std::max(largest_modulus, entry.second.youngs_modulus());
-      const double smallest_cell = fe_space.minimal_cell_diameter();
-      for (unsigned int j = 0; j < scene.joints.size(); ++j)
-        {
-          const JointDefinition<2> &joint = scene.joints[j];
-          if (joint.law == JointLawKind::compliant &&
-              (!(joint.parameters.normal_stiffness > 0.) ||
-               !(joint.parameters.shear_stiffness > 0.)))
-            throw InputError("joint '" + joint.name +
-                             "': compliant law needs kn > 0 and ks > 0 Pa/m");
-          joint_laws.push_back(
-            std::make_unique<CoulombJoint<2>>(joint.parameters));
-          const std::vector<ContactNode<2>> joint_nodes =
-            joint.against_rigid_plane ?
-              pair_nodes_with_plane(fe_space,
-                                    joint.side_a,
-                                    joint.plane_point,
-                                    joint.plane_normal,
-                                    j) :
-              pair_joint_nodes(fe_space, joint.side_a, joint.side_b, j);
-          nodes.insert(nodes.end(), joint_nodes.begin(), joint_nodes.end());
-        }
-      std::vector<bool> joint_is_exact;
-      for (const auto &joint : scene.joints)
-        joint_is_exact.push_back(joint.law == JointLawKind::rigid);
-      const unsigned int n_crosspoint_pairs =
-        remove_crosspoint_pairs(nodes, joint_is_exact);
-      if (n_crosspoint_pairs > 0)
-        console << "  " << n_crosspoint_pairs
-                << " rigid-law pairs at crosspoints merged into their "
-                   "neighbours"
-                << std::endl;
-
-      for (const auto &node : nodes)
-        {
-          const JointDefinition<2> &joint = scene.joints[node.joint];
-          if (joint.law == JointLawKind::compliant)
-            {
-              pair_laws.push_back(joint_laws[node.joint].get());
-              penalty_pair_laws.push_back(pair_laws.back());
-              exact_laws.emplace_back();
-              continue;
-            }
-          // Exact law: the complementarity parameter per pair is a multiple
-          // of the surface's own stiffness E / w, so that the multiplier and
-          // gap terms of the augmented multiplier weigh alike at every pair
-          // whatever its cell size. It changes the Newton iterates, never
-          // the converged answer.
-          const double length = std::max(node.weight, smallest_cell);
-          ExactPairLaw law;
-          law.surface_stiffness = largest_modulus / length;
-          law.complementarity.friction_coefficient =
-            std::tan(joint.parameters.friction_angle);
-          law.complementarity.cohesion = joint.parameters.cohesion;
-          law.complementarity.normal_parameter =
-            settings.rigid_penalty_factor * law.surface_stiffness;
-          law.complementarity.tangential_parameter =
-            law.complementarity.normal_parameter;
-          exact_laws.push_back(law);
-          pair_laws.push_back(nullptr);
-          JointParameters springs  = joint.parameters;
-          springs.normal_stiffness = law.complementarity.normal_parameter;
-          springs.shear_stiffness  = law.complementarity.tangential_parameter;
-          springs.tensile_strength = 0.;
-          penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
-          penalty_pair_laws.push_back(penalty_laws.back().get());
-        }
-      committed_history.assign(nodes.size(), JointHistory<2>());
-      working_history = committed_history;
-
-      // Compliant joints much stiffer than the cells they join make the
-      // Newton matrix ill-conditioned and the contact set flip (bug 3 of
-      // tests/scenarios/HARD_CASES.md: kn h / E = 9 cycles, 0.9 converges);
-      // a failure then names the remedy.
-      double stiffest = 0.;
-      for (const auto &joint : scene.joints)
-        if (joint.law == JointLawKind::compliant)
-          stiffest = std::max({stiffest,
-                               joint.parameters.normal_stiffness,
-                               joint.parameters.shear_stiffness});
-      const double ratio = stiffest * smallest_cell / largest_modulus;
-      if (ratio > ill_conditioned_joint_ratio)
-        {
-          std::ostringstream hint;
-          hint << "; note: the compliant joints are stiff against the "
-                  "blocks (kn h / E = "
-               << ratio << " with h the smallest cell, " << smallest_cell
-               << " m): use Joints/Law = rigid for joints this stiff";
-          stiffness_hint = hint.str();
-        }
-    }
-
-    void
-    ContactSolver::setup_exact_system()
-    {
-      const unsigned int n_u = fe_space.dof_handler().n_dofs();
-      exact                  = std::make_unique<ExactContact<2>>(
-        nodes, exact_laws, homogeneous_constraints, n_u);
-      const unsigned int n_total = n_u + exact->n_multipliers();
-      dealii::DynamicSparsityPattern couplings(n_total, n_total);
-      for (auto entry = pattern.begin(); entry != pattern.end(); ++entry)
-        couplings.add(entry->row(), entry->column());
-      exact->add_couplings(couplings);
-      const MPI_Comm   communicator = fe_space.dof_handler().get_communicator();
-      const dealii::IndexSet all    = dealii::complete_index_set(n_total);
-      system_pattern.reinit(all, all, couplings, communicator);
-      system_pattern.compress();
-      // K and the multipliers' forces B^T never change: stored once, copied
-      // at every Newton iteration before the equations of the pairs are
-      // added.
-      base_matrix.reinit(system_pattern);
-      const auto &stiffness = bulk->condensed_stiffness();
-      for (auto entry = stiffness.begin(); entry != stiffness.end(); ++entry)
-        base_matrix.set(entry->row(), entry->column(), entry->value());
-      base_matrix.compress(dealii::VectorOperation::insert);
-      exact->add_force_block(base_matrix);
-      matrix.reinit(system_pattern);
-      system_residual.reinit(all, communicator);
-      system_update.reinit(all, communicator);
-      multiplier_update.reinit(exact->n_multipliers());
-      multiplier_base.reinit(exact->n_multipliers());
-      committed_multipliers.reinit(exact->n_multipliers());
-      if (exact->n_fixed_directions() > 0)
-        console << "  " << exact->n_fixed_directions()
-                << " rigid-law pair directions held on both sides: their "
-                   "tractions are support reactions"
-                << std::endl;
-    }
-
-    Fem::ElasticModel<2>
-    ContactSolver::scaled_model(const LoadFactors &factors) const
-    {
-      Fem::ElasticModel<2> model = scene.model;
-      model.gravity *= factors.gravity;
-      for (auto &entry : model.pressures)
-        entry.second *= factors.pressure;
-      return model;
-    }
-
-    dealii::AffineConstraints<double>
-    ContactSolver::constraints_at(const double uplift_factor)
-    {
-      std::vector<Fem::DirichletCondition<2>> conditions;
-      const UpliftSettings uplift = scene.uplift;
-      for (const auto &support : scene.supports)
-        {
-          const bool moves = support.moves_with_uplift;
-          conditions.push_back(
-            {support.boundary_id,
-             support.constrained_components,
-             [uplift, uplift_factor, moves](const dealii::Point<2> &point) {
-               return moves ?
-                        uplift_displacement(uplift, uplift_factor, point) :
-                        dealii::Tensor<1, 2>();
-             }});
-        }
-      return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
-    }
-
-    void
-    ContactSolver::move_obstacles(const double uplift_factor)
-    {
-      for (auto &node : nodes)
-        if (scene.joints[node.joint].plane_moves_with_uplift)
-          node.obstacle_displacement =
-            uplift_displacement(scene.uplift, uplift_factor, node.position);
-    }
-
-    double
-    ContactSolver::load_norm(const LoadFactors &factors)
-    {
-      dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
-      zero = 0.;
-      bulk->residual(zero, factors.gravity, factors.pressure, residual);
-      return residual.l2_norm();
-    }
-
-    bool
-    ContactSolver::solve_linear(std::string &message)
-    {
-      ++n_linear_solves;
-      if (exact_equations())
-        {
-          // Multipliers make the system a saddle point: direct solver only.
-          dealii::TrilinosWrappers::MPI::Vector right_hand_side(system_residual);
-          right_hand_side *= -1.;
-          system_update = 0.;
-          const Solver::LinearSolveInfo info =
-            direct_solver->solve(matrix, right_hand_side, system_update);
-          message = info.message;
-          if (!info.success)
-            return false;
-          const unsigned int n_u = update.size();
-          std::copy(system_update.begin(),
-                    system_update.begin() + n_u,
-                    update.begin());
-          std::copy(system_update.begin() + n_u,
-                    system_update.end(),
-                    multiplier_update.begin());
-          return true;
-        }
-      dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
-      right_hand_side *= -1.;
-      update = 0.;
-      const Solver::LinearSolveInfo info =
-        direct_solver ?
-          direct_solver->solve(matrix, right_hand_side, update) :
-          Solver::solve_linear_system(settings.linear,
-                                      matrix,
-                                      right_hand_side,
-                                      fe_space.constant_modes(),
-                                      update);
-      message = info.message;
-      return info.success;
-    }
-
-    bool
-    ContactSolver::solve_load_state(const LoadFactors &factors,
-                                    const double       prediction,
-                                    IncrementResult   &increment,
-                                    std::string       &failure_reason)
-    {
-      const dealii::AffineConstraints<double> constraints = [&]() {
-        dealii::TimerOutput::Scope scope(timer, "Contact: constraints");
-        return constraints_at(factors.uplift);
-      }();
-      constraints.distribute(current_solution);
-      move_obstacles(factors.uplift);
-      double reference_load = load_norm(factors);
-
-      NewtonCallbacks callbacks;
-      callbacks.assemble = [&]() {
-        dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
-        const std::vector<JointResponse<2>> responses = responses_at_iterate();
-        matrix.copy_from(exact_equations() ? base_matrix :
-                                             bulk->condensed_stiffness());
-        bulk->residual(
-          current_solution, factors.gravity, factors.pressure, residual);
-        assemble_contact(
-          nodes, responses, homogeneous_constraints, &matrix, &residual);
-        if (exact_equations())
-          {
-            std::copy(residual.begin(), residual.end(), system_residual.begin());
-            std::fill(system_residual.begin() + residual.size(),
-                      system_residual.end(),
-                      0.);
-            exact->assemble_equations(matrix, system_residual);
-          }
-        active_set.update(states_of(responses));
-        NewtonIterate iterate;
-        iterate.residual_norm =
-          exact_equations() ? system_residual.l2_norm() : residual.l2_norm();
-        iterate.set_signature = active_set.signature();
-        iterate.counts        = active_set.counts();
-        last_iterate_counts   = iterate.counts;
-        console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
-                << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
-                << iterate.counts.n_open << std::endl;
-        return iterate;
-      };
-      callbacks.solve_update = [&](std::string &message) {
-        dealii::TimerOutput::Scope scope(timer, "Contact: linear solve");
-        if (!solve_linear(message))
-          return false;
-        homogeneous_constraints.distribute(update);
-        newton_base = current_solution;
-        if (exact_equations())
-          multiplier_base = exact->multipliers();
-        return true;
-      };
-      callbacks.set_step = [&](const double step) {
-        current_solution = newton_base;
-        current_solution.add(step, update);
-        if (exact_equations())
-          {
-            exact->multipliers() = multiplier_base;
-            exact->multipliers().add(step, multiplier_update);
-          }
-      };
-      callbacks.round_off_floor = [&]() {
-        const double bulk_floor = bulk->round_off_floor(
-          current_solution, factors.gravity, factors.pressure);
-        const double contact_floor =
-          exact_equations() ? exact->round_off_floor(current_solution) : 0.;
-        return std::hypot(bulk_floor, contact_floor);
-      };
-
-      if (prediction > 0.)
-        {
-          // The stop test stays relative to the larger of the load and the
-          // residual at the last converged state, as without the predictor:
-          // the predictor changes where Newton starts, not when it stops.
-          // (Relative to the load alone, a 1e-12 tolerance fell below the
-          // round-off of K u under a large uplift.)
-          reference_load =
-            std::max(reference_load, callbacks.assemble().residual_norm);
-          current_solution.add(prediction, last_change);
-          constraints.distribute(current_solution);
-          // The multipliers start from the last converged state: their
-          // extrapolation too made the predictor useless on the lifted
-          // floor (58 Newton iterations plain, 59 with both extrapolated,
-          // 32 with the displacements alone).
-        }
-
-      const NewtonReport report =
-        solve_newton(settings.newton,
-                     reference_load,
-                     callbacks,
-                     prediction > 0. ? ReferenceForce::given :
-                                       ReferenceForce::given_or_first_residual);
-      increment.n_newton_iterations = report.n_iterations;
-      increment.round_off_limited   = report.stopped_at_round_off_floor;
-      increment.relative_residual   = report.relative_residual;
-      if (!report.converged)
-        failure_reason = report.failure_reason;
-      else if (exact_equations())
-        exact->zero_open_multipliers();
-      return report.converged;
-    }
-
-    std::vector<JointResponse<2>>
-    ContactSolver::responses_at_iterate()
-    {
-      std::vector<JointResponse<2>> responses =
-        evaluate_contact(nodes,
-                         penalty_start ? penalty_pair_laws : pair_laws,
-                         working_history,
-                         current_solution);
-      if (exact_equations())
-        exact->evaluate(current_solution, working_history, responses);
-      return responses;
-    }
-
-    bool
-    ContactSolver::exact_equations() const
-    {
-      return exact && !penalty_start;
-    }
-
-    bool
-    ContactSolver::solve_from_penalty_start(const LoadFactors &factors,
-                                            IncrementResult   &increment,
-                                            std::string       &failure_reason)
-    {
-      // The exact law's first iterate ties every pair (stick at g = 0,
-      // lambda = 0); from there a block can reach an iterate held by
-      // slipping pairs alone, a singular Newton matrix (six-block scene,
-      // first increment: a block next to the face lifted off its bedding).
-      // Springs of the complementarity parameter's stiffness let the
-      // blocks settle; their state and tractions start the exact Newton.
-      penalty_start = true;
-      IncrementResult penalty_increment;
-      const bool      settled =
-        solve_load_state(factors, 0., penalty_increment, failure_reason);
-      if (settled)
-        exact->set_multipliers(responses_at_iterate());
-      penalty_start = false;
-      if (!settled)
-        {
-          failure_reason = "penalty start: " + failure_reason;
-          return false;
-        }
-      const bool solved =
-        solve_load_state(factors, 0., increment, failure_reason);
-      increment.n_newton_iterations += penalty_increment.n_newton_iterations;
-      increment.started_from_penalty = true;
-      return solved;
-    }
-
-    void
-    ContactSolver::commit(const std::vector<JointResponse<2>> &responses)
-    {
-      committed_solution  = current_solution;
-      committed_responses = responses;
-      if (exact)
+        exact->multipliers() = 0.;
         committed_multipliers = exact->multipliers();
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        {
-          const JointResponse<2> &response = responses[p];
-          JointHistory<2>        &history  = committed_history[p];
-          history.tangential_base = response.tangential_traction;
-          history.reference_slip  = response.slip;
-          // UDEC convention: cohesion and tensile strength are lost for good
-          // once the pair slips or opens.
-          history.intact = history.intact && response.state == JointState::stick;
-        }
-      working_history = committed_history;
-    }
+      }
+    try
+      {
+        if (!problem.steps.gravity_with_pressure)
+          run_stage(LoadStage::gravity, problem.steps.n_gravity, result);
+        run_stage(LoadStage::support_pressure, problem.steps.n_pressure, result);
+        run_stage(LoadStage::uplift, problem.steps.n_uplift, result);
+      }
+    catch (ContactSolveFailure &failure)
+      {
+        add_statistics(result);
+        failure.partial_result = result;
+        throw;
+      }
+    add_statistics(result);
+    return result;
+  }
 
-    ForceBalance
-    ContactSolver::force_balance(const Fem::ElasticModel<2>          &model,
-                                 const std::vector<JointResponse<2>> &responses)
-    {
-      dealii::AffineConstraints<double> no_constraints;
-      no_constraints.close();
-      dealii::TrilinosWrappers::MPI::Vector raw(residual);
-      raw = 0.;
-      ForceBalance                   balance;
-      Fem::ElasticAssemblyTargets<2> targets;
-        targets.cache = &cell_matrices;
-      targets.residual           = &raw;
-      targets.applied_load_total = &balance.applied_load;
-      Fem::assemble_elastic_system(
-        fe_space, model, current_solution, no_constraints, targets);
-      assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
-      // The equations solved are the condensed ones: a hanging node's
-      // residual is carried by its masters, and where a master is a support
-      // DoF that share is part of the support's reaction. Without it the
-      // check reported 2e-3 imbalance on adaptively refined meshes whose
-      // hanging nodes touch a support (the solution itself was balanced).
-      dealii::Vector<double> condensed(raw);
-      for (const auto &line :
-           fe_space.hanging_node_constraints().get_lines())
-        if (!dirichlet_dofs.is_element(line.index))
-          {
-            for (const auto &[master, weight] : line.entries)
-              condensed(master) += weight * condensed(line.index);
-            condensed(line.index) = 0.;
-          }
-      double reaction_magnitude = 0.;
-      for (const auto dof : dirichlet_dofs)
-        {
-          balance.support_reaction[dof_component[dof]] += condensed(dof);
-          reaction_magnitude += std::abs(condensed(dof));
-        }
-      // A rigid obstacle is a support too: it receives +w f (the force
-      // density on side B) from each of its pairs.
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        if (nodes[p].against_rigid_obstacle())
-          {
-            const dealii::Tensor<1, 2> force =
-              nodes[p].weight * responses[p].force_density;
-            balance.support_reaction += force;
-            reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
-          }
-      const double scale = balance.applied_load.norm() + reaction_magnitude;
-      balance.relative_imbalance =
-        scale > 0. ?
-          (balance.applied_load + balance.support_reaction).norm() / scale :
-          0.;
-      return balance;
-    }
+  void
+  ContactSolver::add_statistics(SolveResult &result) const
+  {
+    result.wall_times =
+      timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+    result.n_linear_solves            = n_linear_solves;
+    result.n_failed_newton_iterations = n_failed_newton_iterations;
+    if (direct_solver)
+      {
+        result.n_factorizations = direct_solver->statistics().n_factorizations;
+        result.n_krylov_iterations =
+          direct_solver->statistics().n_krylov_iterations;
+        result.n_solves_above_tolerance =
+          direct_solver->statistics().n_accepted_above_tolerance;
+      }
+  }
 
-    void
-    ContactSolver::run_stage(const LoadStage    stage,
-                             const unsigned int n_increments,
-                             SolveResult       &result)
-    {
-      if (n_increments == 0)
-        return;
-      const double nominal_step = 1. / n_increments;
-      double       reached      = 0.;
-      double       step         = nominal_step;
-      unsigned int n_failed     = 0;
-      last_change_step          = 0.; // no extrapolation across stages
-      while (reached < 1.)
-        {
-          // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
-          // solve, so nothing half-computed reaches a result file.
-          stop_if_interrupted();
-          const bool   last   = reached + step >= 1. - stage_end_tolerance;
-          const double target = last ? 1. : reached + step;
-          LoadFactors  factors = committed_factors;
-          switch (stage)
-            {
-              case LoadStage::gravity:
-                factors = {target, 0., 0.};
-                break;
-              case LoadStage::support_pressure:
-                factors = {scene.steps.gravity_with_pressure ? target : 1.,
-                           target,
-                           0.};
-                break;
-              case LoadStage::uplift:
-                factors = {1., 1., target};
-                break;
-            }
-          dealii::Timer   clock;
-          IncrementResult increment;
-          std::string     reason;
-          const double prediction =
-            settings.extrapolate_increments && last_change_step > 0. ?
-              (target - reached) / last_change_step :
-              0.;
-          const auto record_failure = [&](const std::string &start) {
-            n_failed_newton_iterations += increment.n_newton_iterations;
-            std::ostringstream attempt;
-            attempt << stage_name(stage) << " factor " << target << " (step "
-                    << step << start << "): " << reason;
-            failed_attempts.push_back(attempt.str());
-            console << "  failed: " << attempt.str() << std::endl;
-            current_solution = committed_solution;
-            working_history  = committed_history;
-            if (exact)
-              exact->multipliers() = committed_multipliers;
-          };
-          bool solved = false;
-          if (prediction > 0.)
-            {
-              solved = solve_load_state(factors, prediction, increment, reason);
-              // The extrapolated start can lie where a very stiff joint law
-              // makes the active set cycle (kn = 1e14 Pa/m, two-block
-              // test); the plain start is tried before any cutback, so a
-              // start the predictor spoils costs a retry, not a cutback.
-              if (!solved)
-                {
-                  record_failure(", extrapolated start");
-                  increment = IncrementResult();
-                }
-            }
-          if (!solved)
-            solved = solve_load_state(factors, 0., increment, reason);
-          if (!solved && exact)
-            {
-              record_failure(", exact law from the last state");
-              increment = IncrementResult();
-              solved    = solve_from_penalty_start(factors, increment, reason);
-            }
-          if (solved)
-            {
-              dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
-              const std::vector<JointResponse<2>> responses =
-                responses_at_iterate();
-              increment.stage        = stage;
-              increment.stage_factor = target;
-              increment.n_cutbacks   = n_failed;
-              increment.counts       = count_states(states_of(responses));
-              increment.balance = force_balance(scaled_model(factors), responses);
-              std::vector<std::string> names;
-              for (const auto &joint : scene.joints)
-                names.push_back(joint.name);
-              increment.joints = make_joint_reports(
-                nodes, responses, names, settings.averaging_length);
-              increment.motions =
-                Fem::fit_rigid_motions(fe_space, current_solution);
-              last_change = current_solution;
-              last_change -= committed_solution;
-              last_change_step = target - reached;
-              commit(responses);
-              committed_factors = factors;
-              reached           = target;
-              n_failed          = 0;
-              step              = std::min(nominal_step, 2. * step);
-              increment.wall_time = clock.wall_time();
-              console << "  " << stage_name(stage) << " " << target
-                      << ": newton " << increment.n_newton_iterations
-                      << ", stick/slip/open " << increment.counts.n_stick
-                      << "/" << increment.counts.n_slip << "/"
-                      << increment.counts.n_open << ", residual "
-                      << increment.relative_residual << ", imbalance "
-                      << increment.balance.relative_imbalance << std::endl;
-              if (!settings.output_directory.empty())
-                write_output(responses);
-              result.increments.push_back(increment);
-              continue;
-            }
-          record_failure("");
-          if (++n_failed > settings.max_cutbacks)
-            throw ContactSolveFailure(
-              std::string("contact solve failed in stage '") +
-                stage_name(stage) + "' after " +
-                std::to_string(settings.max_cutbacks) + " cutbacks: " + reason +
-                stiffness_hint,
-              failed_attempts,
-              result.increments.empty() ?
-                std::nullopt :
-                std::optional<IncrementResult>(result.increments.back()),
-              last_iterate_counts);
-          step /= 2.;
-        }
-    }
+  void
+  ContactSolver::write_output(const std::vector<JointResponse<2>> &responses)
+  {
+    dealii::TimerOutput::Scope scope(timer, "Contact: output");
+    std::vector<double> node_states(nodes.size());
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      node_states[p] = static_cast<double>(responses[p].state);
+    std::vector<dealii::types::global_dof_index> state_dofs;
+    for (const auto &node : nodes)
+      state_dofs.push_back(node.dofs_a[0]);
+    Fem::write_vtu_increment(fe_space,
+                             problem.model,
+                             current_solution,
+                             state_dofs,
+                             node_states,
+                             settings.output_directory,
+                             output_records);
+  }
 
-    SolveResult
-    ContactSolver::run()
-    {
-      SolveResult result;
-      result.n_dofs          = fe_space.dof_handler().n_dofs();
-      result.n_contact_pairs = nodes.size();
-      current_solution       = 0.;
-      committed_solution     = 0.;
-      if (exact)
-        {
-          exact->multipliers() = 0.;
-          committed_multipliers = exact->multipliers();
-        }
-      try
-        {
-          if (!scene.steps.gravity_with_pressure)
-            run_stage(LoadStage::gravity, scene.steps.n_gravity, result);
-          run_stage(LoadStage::support_pressure, scene.steps.n_pressure, result);
-          run_stage(LoadStage::uplift, scene.steps.n_uplift, result);
-        }
-      catch (ContactSolveFailure &failure)
-        {
-          add_statistics(result);
-          failure.partial_result = result;
-          throw;
-        }
-      add_statistics(result);
-      return result;
-    }
+  const dealii::TrilinosWrappers::MPI::Vector &
+  ContactSolver::solution() const
+  {
+    return committed_solution;
+  }
 
-    void
-    ContactSolver::add_statistics(SolveResult &result) const
-    {
-      result.wall_times =
-        timer.get_summary_data(dealii::TimerOutput::total_wall_time);
-      result.n_linear_solves            = n_linear_solves;
-      result.n_failed_newton_iterations = n_failed_newton_iterations;
-      if (direct_solver)
-        {
-          result.n_factorizations = direct_solver->statistics().n_factorizations;
-          result.n_krylov_iterations =
-            direct_solver->statistics().n_krylov_iterations;
-          result.n_solves_above_tolerance =
-            direct_solver->statistics().n_accepted_above_tolerance;
-        }
-    }
+  const Fem::FeSpace<2> &
+  ContactSolver::space() const
+  {
+    return fe_space;
+  }
 
-    void
-    ContactSolver::write_output(const std::vector<JointResponse<2>> &responses)
-    {
-      dealii::TimerOutput::Scope scope(timer, "Contact: output");
-      std::vector<double> node_states(nodes.size());
-      for (unsigned int p = 0; p < nodes.size(); ++p)
-        node_states[p] = static_cast<double>(responses[p].state);
-      std::vector<dealii::types::global_dof_index> state_dofs;
-      for (const auto &node : nodes)
-        state_dofs.push_back(node.dofs_a[0]);
-      Fem::write_vtu_increment(fe_space,
-                               scene.model,
-                               current_solution,
-                               state_dofs,
-                               node_states,
-                               settings.output_directory,
-                               output_records);
-    }
+  const std::vector<ContactNode<2>> &
+  ContactSolver::contact_nodes() const
+  {
+    return nodes;
+  }
 
-    const dealii::TrilinosWrappers::MPI::Vector &
-    ContactSolver::solution() const
-    {
-      return committed_solution;
-    }
-
-    const Fem::FeSpace<2> &
-    ContactSolver::space() const
-    {
-      return fe_space;
-    }
-
-    const std::vector<ContactNode<2>> &
-    ContactSolver::contact_nodes() const
-    {
-      return nodes;
-    }
-
-    std::vector<JointResponse<2>>
-    ContactSolver::responses_at_solution() const
-    {
-      return committed_responses;
-    }
-  } // namespace Contact
-} // namespace FloorBlock
+  std::vector<JointResponse<2>>
+  ContactSolver::responses_at_solution() const
+  {
+    return committed_responses;
+  }
+} // namespace FloorBlock::Contact

@@ -5,7 +5,7 @@
 #include <contact/exact_contact.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
@@ -24,176 +24,173 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  /**
+   * @brief Quasi-static frictional multi-body contact in 2D plane strain:
+   * follows the loading path gravity -> support pressure -> floor uplift
+   * in increments, each a converged equilibrium, with automatic cutback.
+   *
+   * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
+   * the joints from CoulombJoint through evaluate_contact/assemble_contact,
+   * the iteration from solve_newton, the linear algebra from
+   * Solver::solve_linear_system.
+   */
+  class ContactSolver
   {
+  public:
     /**
-     * @brief Quasi-static frictional multi-body contact in 2D plane strain:
-     * follows the loading path gravity -> support pressure -> floor uplift
-     * in increments, each a converged equilibrium, with automatic cutback.
-     *
-     * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
-     * the joints from CoulombJoint through evaluate_contact/assemble_contact,
-     * the iteration from solve_newton, the linear algebra from
-     * Solver::solve_linear_system.
+     * @param[in] triangulation Mesh with the agreed material and boundary
+     *   ids; must outlive the solver.
+     * @param[in] problem Physics and loading path.
+     * @param[in] settings Numerics.
+     * Throws InputError if a joint's sides do not match or a material has
+     * no law.
      */
-    class ContactSolver
+    ContactSolver(const dealii::Triangulation<2> &triangulation,
+                  const ContactProblem<2>       &problem,
+                  const ContactSolverSettings    &settings);
+
+    /**
+     * @brief Runs all stages.
+     * @return Every converged increment with its joint tables.
+     * Throws ContactSolveFailure if an increment fails after all cutbacks;
+     * solution() then holds the last converged state and the exception's
+     * partial_result everything up to the failure.
+     */
+    SolveResult
+    run();
+
+    /** @brief Displacement of the last converged increment (m). */
+    const dealii::TrilinosWrappers::MPI::Vector &
+    solution() const;
+
+    const Fem::FeSpace<2> &
+    space() const;
+
+    const std::vector<ContactNode<2>> &
+    contact_nodes() const;
+
+    /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
+    std::vector<JointResponse<2>>
+    responses_at_solution() const;
+
+  private:
+    struct LoadFactors
     {
-    public:
-      /**
-       * @param[in] triangulation Mesh with the agreed material and boundary
-       *   ids; must outlive the solver.
-       * @param[in] scene Physics and loading path.
-       * @param[in] settings Numerics.
-       * Throws InputError if a joint's sides do not match or a material has
-       * no law.
-       */
-      ContactSolver(const dealii::Triangulation<2> &triangulation,
-                    const SceneDefinition<2>       &scene,
-                    const ContactSolverSettings    &settings);
-
-      /**
-       * @brief Runs all stages.
-       * @return Every converged increment with its joint tables.
-       * Throws ContactSolveFailure if an increment fails after all cutbacks;
-       * solution() then holds the last converged state and the exception's
-       * partial_result everything up to the failure.
-       */
-      SolveResult
-      run();
-
-      /** @brief Displacement of the last converged increment (m). */
-      const dealii::TrilinosWrappers::MPI::Vector &
-      solution() const;
-
-      const Fem::FeSpace<2> &
-      space() const;
-
-      const std::vector<ContactNode<2>> &
-      contact_nodes() const;
-
-      /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
-      std::vector<JointResponse<2>>
-      responses_at_solution() const;
-
-    private:
-      struct LoadFactors
-      {
-        double gravity  = 0.;
-        double pressure = 0.;
-        double uplift   = 0.;
-      };
-
-      void
-      setup_contact();
-      /** Wall times and solve counters of the run so far. */
-      void
-      add_statistics(SolveResult &result) const;
-      void
-      run_stage(const LoadStage    stage,
-                const unsigned int n_increments,
-                SolveResult       &result);
-      /** @p prediction: multiple of last_change added to the start (0: none). */
-      bool
-      solve_load_state(const LoadFactors &factors,
-                       const double       prediction,
-                       IncrementResult   &increment,
-                       std::string       &failure_reason);
-      /** Builds the multipliers' system (rigid-law pairs only). */
-      void
-      setup_exact_system();
-      /** Every pair's law at the current iterate. */
-      std::vector<JointResponse<2>>
-      responses_at_iterate();
-      /** The Newton equations include the exact law's multipliers. */
-      bool
-      exact_equations() const;
-      /**
-       * The increment solved with the rigid-law pairs as springs of the
-       * complementarity parameter's stiffness, then with the exact law
-       * from that state (a fallback of the exact law).
-       */
-      bool
-      solve_from_penalty_start(const LoadFactors &factors,
-                               IncrementResult   &increment,
-                               std::string       &failure_reason);
-      Fem::ElasticModel<2>
-      scaled_model(const LoadFactors &factors) const;
-      dealii::AffineConstraints<double>
-      constraints_at(const double uplift_factor);
-      double
-      load_norm(const LoadFactors &factors);
-      /** Sets the rigid obstacles' displacements for the uplift factor. */
-      void
-      move_obstacles(const double uplift_factor);
-      bool
-      solve_linear(std::string &message);
-      void
-      commit(const std::vector<JointResponse<2>> &responses);
-      ForceBalance
-      force_balance(const Fem::ElasticModel<2>          &model,
-                    const std::vector<JointResponse<2>> &responses);
-      void
-      write_output(const std::vector<JointResponse<2>> &responses);
-
-      const SceneDefinition<2>      scene;
-      const ContactSolverSettings   settings;
-      const Fem::FeSpace<2>         fe_space;
-      std::vector<ContactNode<2>>   nodes;
-      std::vector<std::unique_ptr<CoulombJoint<2>>> joint_laws;
-      std::vector<const CoulombJoint<2> *>           pair_laws;
-      /** Per pair: the exact law, empty for a compliant pair. */
-      std::vector<std::optional<ExactPairLaw>>       exact_laws;
-      /** Rigid-law pairs as springs (kn = ks = c_n), for the penalty start. */
-      std::vector<std::unique_ptr<CoulombJoint<2>>> penalty_laws;
-      /** pair_laws with the penalty springs in place of the exact law. */
-      std::vector<const CoulombJoint<2> *>           penalty_pair_laws;
-      /** Solving the penalty start (solve_from_penalty_start). */
-      bool                                           penalty_start = false;
-      /** The exact law's equations; null when every pair is compliant. */
-      std::unique_ptr<ExactContact<2>>               exact;
-      /** Displacements and multipliers (exact law only). */
-      dealii::TrilinosWrappers::SparsityPattern      system_pattern;
-      /** K and B^T, the constant part of the Newton matrix (exact law). */
-      dealii::TrilinosWrappers::SparseMatrix         base_matrix;
-      dealii::TrilinosWrappers::MPI::Vector          system_residual;
-      dealii::TrilinosWrappers::MPI::Vector          system_update;
-      dealii::Vector<double>                         multiplier_update;
-      dealii::Vector<double>                         multiplier_base;
-      dealii::Vector<double>                         committed_multipliers;
-      std::vector<JointHistory<2>>  committed_history;
-      std::vector<JointHistory<2>>  working_history;
-      std::vector<JointResponse<2>> committed_responses;
-      Fem::CellMatrixCache              cell_matrices;
-      dealii::AffineConstraints<double> homogeneous_constraints;
-      dealii::IndexSet                  dirichlet_dofs;
-      std::vector<unsigned int>         dof_component;
-      dealii::TrilinosWrappers::SparsityPattern pattern;
-      dealii::TrilinosWrappers::SparseMatrix    matrix;
-      std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
-      /** Set when the linear systems are solved directly (see run()). */
-      std::unique_ptr<Solver::ReusedFactorization> direct_solver;
-      unsigned int                                 n_linear_solves = 0;
-      unsigned int n_failed_newton_iterations = 0;
-      dealii::TrilinosWrappers::MPI::Vector     current_solution;
-      dealii::TrilinosWrappers::MPI::Vector     committed_solution;
-      dealii::TrilinosWrappers::MPI::Vector     newton_base;
-      dealii::TrilinosWrappers::MPI::Vector     update;
-      dealii::TrilinosWrappers::MPI::Vector     residual;
-      LoadFactors                               committed_factors;
-      /** Displacement change of the last converged increment (m) and the
-       *  stage-factor step it was taken over, for the predictor. */
-      dealii::TrilinosWrappers::MPI::Vector     last_change;
-      double                                    last_change_step = 0.;
-      ActiveSet                                 active_set;
-      StateCounts                               last_iterate_counts;
-      std::vector<std::string>                  failed_attempts;
-      /** Appended to a failure message when compliant joints are very stiff. */
-      std::string                               stiffness_hint;
-      std::vector<std::pair<double, std::string>> output_records;
-      dealii::ConditionalOStream                console;
-      dealii::TimerOutput                       timer;
+      double gravity  = 0.;
+      double pressure = 0.;
+      double uplift   = 0.;
     };
-  } // namespace Contact
-} // namespace FloorBlock
+
+    void
+    setup_contact();
+    /** Wall times and solve counters of the run so far. */
+    void
+    add_statistics(SolveResult &result) const;
+    void
+    run_stage(const LoadStage    stage,
+              const unsigned int n_increments,
+              SolveResult       &result);
+    /** @p prediction: multiple of last_change added to the start (0: none). */
+    bool
+    solve_load_state(const LoadFactors &factors,
+                     const double       prediction,
+                     IncrementResult   &increment,
+                     std::string       &failure_reason);
+    /** Builds the multipliers' system (rigid-law pairs only). */
+    void
+    setup_exact_system();
+    /** Every pair's law at the current iterate. */
+    std::vector<JointResponse<2>>
+    responses_at_iterate();
+    /** The Newton equations include the exact law's multipliers. */
+    bool
+    exact_equations() const;
+    /**
+     * The increment solved with the rigid-law pairs as springs of the
+     * complementarity parameter's stiffness, then with the exact law
+     * from that state (a fallback of the exact law).
+     */
+    bool
+    solve_from_penalty_start(const LoadFactors &factors,
+                             IncrementResult   &increment,
+                             std::string       &failure_reason);
+    Fem::ElasticModel<2>
+    scaled_model(const LoadFactors &factors) const;
+    dealii::AffineConstraints<double>
+    constraints_at(const double uplift_factor);
+    double
+    load_norm(const LoadFactors &factors);
+    /** Sets the rigid obstacles' displacements for the uplift factor. */
+    void
+    move_obstacles(const double uplift_factor);
+    bool
+    solve_linear(std::string &message);
+    void
+    commit(const std::vector<JointResponse<2>> &responses);
+    ForceBalance
+    force_balance(const Fem::ElasticModel<2>          &model,
+                  const std::vector<JointResponse<2>> &responses);
+    void
+    write_output(const std::vector<JointResponse<2>> &responses);
+
+    const ContactProblem<2>      problem;
+    const ContactSolverSettings   settings;
+    const Fem::FeSpace<2>         fe_space;
+    std::vector<ContactNode<2>>   nodes;
+    std::vector<std::unique_ptr<CoulombJoint<2>>> joint_laws;
+    std::vector<const CoulombJoint<2> *>           pair_laws;
+    /** Per pair: the exact law, empty for a compliant pair. */
+    std::vector<std::optional<ExactPairLaw>>       exact_laws;
+    /** Rigid-law pairs as springs (kn = ks = c_n), for the penalty start. */
+    std::vector<std::unique_ptr<CoulombJoint<2>>> penalty_laws;
+    /** pair_laws with the penalty springs in place of the exact law. */
+    std::vector<const CoulombJoint<2> *>           penalty_pair_laws;
+    /** Solving the penalty start (solve_from_penalty_start). */
+    bool                                           penalty_start = false;
+    /** The exact law's equations; null when every pair is compliant. */
+    std::unique_ptr<ExactContact<2>>               exact;
+    /** Displacements and multipliers (exact law only). */
+    dealii::TrilinosWrappers::SparsityPattern      system_pattern;
+    /** K and B^T, the constant part of the Newton matrix (exact law). */
+    dealii::TrilinosWrappers::SparseMatrix         base_matrix;
+    dealii::TrilinosWrappers::MPI::Vector          system_residual;
+    dealii::TrilinosWrappers::MPI::Vector          system_update;
+    dealii::Vector<double>                         multiplier_update;
+    dealii::Vector<double>                         multiplier_base;
+    dealii::Vector<double>                         committed_multipliers;
+    std::vector<JointHistory<2>>  committed_history;
+    std::vector<JointHistory<2>>  working_history;
+    std::vector<JointResponse<2>> committed_responses;
+    Fem::CellMatrixCache              cell_matrices;
+    dealii::AffineConstraints<double> homogeneous_constraints;
+    dealii::IndexSet                  dirichlet_dofs;
+    std::vector<unsigned int>         dof_component;
+    dealii::TrilinosWrappers::SparsityPattern pattern;
+    dealii::TrilinosWrappers::SparseMatrix    matrix;
+    std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
+    /** Set when the linear systems are solved directly (see run()). */
+    std::unique_ptr<Solver::ReusedFactorization> direct_solver;
+    unsigned int                                 n_linear_solves = 0;
+    unsigned int n_failed_newton_iterations = 0;
+    dealii::TrilinosWrappers::MPI::Vector     current_solution;
+    dealii::TrilinosWrappers::MPI::Vector     committed_solution;
+    dealii::TrilinosWrappers::MPI::Vector     newton_base;
+    dealii::TrilinosWrappers::MPI::Vector     update;
+    dealii::TrilinosWrappers::MPI::Vector     residual;
+    LoadFactors                               committed_factors;
+    /** Displacement change of the last converged increment (m) and the
+     *  stage-factor step it was taken over, for the predictor. */
+    dealii::TrilinosWrappers::MPI::Vector     last_change;
+    double                                    last_change_step = 0.;
+    ActiveSet                                 active_set;
+    StateCounts                               last_iterate_counts;
+    std::vector<std::string>                  failed_attempts;
+    /** Appended to a failure message when compliant joints are very stiff. */
+    std::string                               stiffness_hint;
+    std::vector<std::pair<double, std::string>> output_records;
+    dealii::ConditionalOStream                console;
+    dealii::TimerOutput                       timer;
+  };
+} // namespace FloorBlock::Contact

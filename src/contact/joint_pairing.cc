@@ -9,377 +9,374 @@
 #include <sstream>
 #include <string>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  namespace
   {
-    namespace
-    {
-      /** Coincident nodes lie closer than this fraction of the smallest cell. */
-      constexpr double position_tolerance_factor = 1e-6;
-
-      template <int dim>
-      struct SideNode
-      {
-        dealii::Point<dim>                               position;
-        double                                           weight = 0.;
-        dealii::Tensor<1, dim>                           normal_sum;
-        std::array<dealii::types::global_dof_index, dim> dofs;
-      };
-
-      /** All nodes of one boundary id, keyed by their x-component DoF. */
-      template <int dim>
-      std::vector<SideNode<dim>>
-      collect_side(const Fem::FeSpace<dim>         &space,
-                   const dealii::types::boundary_id side)
-      {
-        using namespace dealii;
-        const FiniteElement<dim> &fe = space.fe();
-        FEFaceValues<dim> face_values(space.mapping(),
-                                      fe,
-                                      space.face_quadrature(),
-                                      update_values | update_normal_vectors |
-                                        update_JxW_values);
-        const unsigned int n_cell_dofs = fe.n_dofs_per_cell();
-        std::vector<types::global_dof_index> dof_indices(n_cell_dofs);
-        std::map<types::global_dof_index, SideNode<dim>> nodes;
-        for (const auto &cell : space.dof_handler().active_cell_iterators())
-          for (const unsigned int face_no : cell->face_indices())
-            {
-              const auto face = cell->face(face_no);
-              if (!face->at_boundary() || face->boundary_id() != side)
-                continue;
-              face_values.reinit(cell, face_no);
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int i = 0; i < n_cell_dofs; ++i)
-                {
-                  if (fe.system_to_component_index(i).first != 0 ||
-                      !fe.has_support_on_face(i, face_no))
-                    continue;
-                  SideNode<dim> &node = nodes[dof_indices[i]];
-                  // FESystem of dim equal FE_Q: the components of one node
-                  // are consecutive cell DoFs.
-                  for (unsigned int c = 0; c < dim; ++c)
-                    {
-                      Assert(fe.system_to_component_index(i + c).first == c,
-                             ExcInternalError());
-                      node.dofs[c] = dof_indices[i + c];
-                    }
-                  node.position = space.mapping().transform_unit_to_real_cell(
-                    cell, fe.unit_support_point(i));
-                  for (const unsigned int q :
-                       face_values.quadrature_point_indices())
-                    {
-                      const double integral =
-                        face_values.shape_value(i, q) * face_values.JxW(q);
-                      node.weight += integral;
-                      node.normal_sum += integral * face_values.normal_vector(q);
-                    }
-                }
-            }
-        if (nodes.empty())
-          throw InputError("joint side with boundary id " +
-                           std::to_string(side) + " has no faces in the mesh");
-        std::vector<SideNode<dim>> result;
-        for (const auto &entry : nodes)
-          result.push_back(entry.second);
-        return result;
-      }
-
-      template <int dim>
-      ContactNode<dim>
-      make_contact_node(const SideNode<dim> &node, const unsigned int joint)
-      {
-        ContactNode<dim> contact;
-        contact.joint    = joint;
-        contact.position = node.position;
-        contact.weight   = node.weight;
-        contact.normal   = node.normal_sum / node.normal_sum.norm();
-        contact.dofs_a   = node.dofs;
-        contact.dofs_b.fill(dealii::numbers::invalid_dof_index);
-        return contact;
-      }
-
-      template <int dim>
-      std::string
-      describe(const dealii::Point<dim> &point)
-      {
-        std::ostringstream text;
-        text << "(" << point << ")";
-        return text.str();
-      }
-    } // namespace
-
-    namespace
-    {
-      /** Straight line through the common part of a joint (2D). */
-      struct JointLine
-      {
-        dealii::Point<2>     origin;
-        dealii::Tensor<1, 2> tangent;
-        /** Unit normal out of side A. */
-        dealii::Tensor<1, 2> normal;
-        /** Extent of the common part along the tangent (m). */
-        double low  = 0.;
-        double high = 0.;
-      };
-
-      /**
-       * Chord of the coincident side-A nodes: its two farthest-apart nodes
-       * (for a straight joint exactly its line). The normal is oriented like
-       * side A's summed face normals.
-       */
-      JointLine
-      joint_line(const std::vector<SideNode<2>> &common)
-      {
-        const auto farthest_from = [&](const dealii::Point<2> &from) {
-          dealii::Point<2> far = from;
-          for (const auto &node : common)
-            if (node.position.distance(from) > far.distance(from))
-              far = node.position;
-          return far;
-        };
-        JointLine              line;
-        const dealii::Point<2> first = farthest_from(common.front().position);
-        const dealii::Point<2> last  = farthest_from(first);
-        dealii::Tensor<1, 2>   normal_sum;
-        for (const auto &node : common)
-          normal_sum += node.normal_sum;
-        line.origin = first;
-        if (first.distance(last) > 0.)
-          {
-            line.tangent   = (last - first) / first.distance(last);
-            line.normal[0] = line.tangent[1];
-            line.normal[1] = -line.tangent[0];
-            if (line.normal * normal_sum < 0.)
-              line.normal *= -1.;
-          }
-        else
-          {
-            // One common node: its own normal is the best estimate.
-            line.normal     = normal_sum / normal_sum.norm();
-            line.tangent[0] = -line.normal[1];
-            line.tangent[1] = line.normal[0];
-          }
-        line.high = (last - first) * line.tangent;
-        return line;
-      }
-
-      /** Unpaired nodes of one side beyond the two ends of the common part. */
-      struct EndNodes
-      {
-        std::vector<const SideNode<2> *> low;
-        std::vector<const SideNode<2> *> high;
-      };
-
-      /**
-       * Sorts a side's unpaired nodes to the two ends of the common part,
-       * nearest first; a node on the common part itself has no place here:
-       * the meshes do not match.
-       */
-      EndNodes
-      split_by_end(const std::vector<SideNode<2>> &nodes,
-                   const std::vector<bool>        &taken,
-                   const JointLine                &line,
-                   const double                    tolerance,
-                   const std::string              &joint_name)
-      {
-        EndNodes ends;
-        const auto along = [&](const SideNode<2> *node) {
-          return (node->position - line.origin) * line.tangent;
-        };
-        for (unsigned int k = 0; k < nodes.size(); ++k)
-          {
-            if (taken[k])
-              continue;
-            const double position = along(&nodes[k]);
-            if (position < line.low - tolerance)
-              ends.low.push_back(&nodes[k]);
-            else if (position > line.high + tolerance)
-              ends.high.push_back(&nodes[k]);
-            else
-              throw InputError(joint_name + ": node at " +
-                               describe(nodes[k].position) +
-                               " has no coincident partner");
-          }
-        std::sort(ends.low.begin(), ends.low.end(), [&](auto a, auto b) {
-          return along(a) > along(b);
-        });
-        std::sort(ends.high.begin(), ends.high.end(), [&](auto a, auto b) {
-          return along(a) < along(b);
-        });
-        return ends;
-      }
-
-      /**
-       * Pairs the nodes beyond one end if the two sides are mirror images
-       * there: equal numbers of nodes, and the k-th of side B on the normal
-       * line of the k-th of side A, not behind it. Otherwise no pair.
-       */
-      std::vector<ContactNode<2>>
-      mirror_pairs(const std::vector<const SideNode<2> *> &nodes_a,
-                   const std::vector<const SideNode<2> *> &nodes_b,
-                   const JointLine                        &line,
-                   const double                            tolerance,
-                   const unsigned int                      joint)
-      {
-        if (nodes_a.empty() || nodes_a.size() != nodes_b.size())
-          return {};
-        std::vector<ContactNode<2>> pairs;
-        for (unsigned int k = 0; k < nodes_a.size(); ++k)
-          {
-            const dealii::Tensor<1, 2> offset =
-              nodes_b[k]->position - nodes_a[k]->position;
-            const double gap = offset * line.normal;
-            if (std::abs(offset * line.tangent) > tolerance || gap < -tolerance)
-              return {};
-            ContactNode<2> pair = make_contact_node(*nodes_a[k], joint);
-            pair.normal         = line.normal;
-            pair.weight         = std::max(0., nodes_a[k]->normal_sum * line.normal);
-            pair.initial_gap    = std::max(0., gap);
-            pair.dofs_b         = nodes_b[k]->dofs;
-            pairs.push_back(pair);
-          }
-        return pairs;
-      }
-
-      /** The nodes of both sides that have no coincident partner, paired where they mirror each other. */
-      template <int dim>
-      std::vector<ContactNode<dim>>
-      pair_beyond_common_part(const std::vector<SideNode<dim>> &nodes_a,
-                              const std::vector<bool>          &taken_a,
-                              const std::vector<SideNode<dim>> &nodes_b,
-                              const std::vector<bool>          &taken_b,
-                              const double                      tolerance,
-                              const std::string                &joint_name,
-                              const unsigned int                joint,
-                              PairingSummary                   &summary)
-      {
-        if constexpr (dim != 2)
-          {
-            for (unsigned int k = 0; k < nodes_a.size(); ++k)
-              if (!taken_a[k])
-                throw InputError(joint_name + ": node at " +
-                                 describe(nodes_a[k].position) +
-                                 " has no coincident partner");
-            for (unsigned int k = 0; k < nodes_b.size(); ++k)
-              if (!taken_b[k])
-                throw InputError(joint_name + ": node at " +
-                                 describe(nodes_b[k].position) +
-                                 " has no coincident partner");
-            return {};
-          }
-        else
-          {
-            std::vector<SideNode<2>> common;
-            for (unsigned int k = 0; k < nodes_a.size(); ++k)
-              if (taken_a[k])
-                common.push_back(nodes_a[k]);
-            const JointLine line = joint_line(common);
-            const EndNodes  ends_a =
-              split_by_end(nodes_a, taken_a, line, tolerance, joint_name);
-            const EndNodes ends_b =
-              split_by_end(nodes_b, taken_b, line, tolerance, joint_name);
-            std::vector<ContactNode<2>> pairs;
-            for (const auto &[end_a, end_b] :
-                 {std::make_pair(&ends_a.low, &ends_b.low),
-                  std::make_pair(&ends_a.high, &ends_b.high)})
-              {
-                const std::vector<ContactNode<2>> mirrored =
-                  mirror_pairs(*end_a, *end_b, line, tolerance, joint);
-                pairs.insert(pairs.end(), mirrored.begin(), mirrored.end());
-                summary.n_mirrored += mirrored.size();
-                if (mirrored.empty())
-                  {
-                    summary.n_free_a += end_a->size();
-                    summary.n_free_b += end_b->size();
-                  }
-              }
-            return pairs;
-          }
-      }
-    } // namespace
+    /** Coincident nodes lie closer than this fraction of the smallest cell. */
+    constexpr double position_tolerance_factor = 1e-6;
 
     template <int dim>
-    std::vector<ContactNode<dim>>
-    pair_joint_nodes(const Fem::FeSpace<dim>         &space,
-                     const dealii::types::boundary_id side_a,
-                     const dealii::types::boundary_id side_b,
-                     const unsigned int               joint_index,
-                     PairingSummary                  *summary)
+    struct SideNode
     {
-      const std::vector<SideNode<dim>> nodes_a = collect_side(space, side_a);
-      const std::vector<SideNode<dim>> nodes_b = collect_side(space, side_b);
-      const std::string joint_name =
-        "joint " + std::to_string(side_a) + "/" + std::to_string(side_b);
-      const double tolerance =
-        position_tolerance_factor * space.minimal_cell_diameter();
-      std::vector<ContactNode<dim>> pairs;
-      std::vector<bool>             taken_a(nodes_a.size(), false);
-      std::vector<bool>             taken_b(nodes_b.size(), false);
-      for (unsigned int a = 0; a < nodes_a.size(); ++a)
-        for (unsigned int b = 0; b < nodes_b.size() && !taken_a[a]; ++b)
-          if (!taken_b[b] &&
-              nodes_a[a].position.distance(nodes_b[b].position) < tolerance)
-            {
-              ContactNode<dim> pair = make_contact_node(nodes_a[a], joint_index);
-              pair.dofs_b           = nodes_b[b].dofs;
-              pairs.push_back(pair);
-              taken_a[a] = true;
-              taken_b[b] = true;
-            }
-      PairingSummary counts;
-      counts.n_coincident = pairs.size();
-      if (pairs.empty())
-        throw InputError(joint_name + ": node at " +
-                         describe(nodes_a.front().position) +
-                         " has no coincident partner (the meshes of the two "
-                         "sides do not match)");
-      const std::vector<ContactNode<dim>> beyond =
-        pair_beyond_common_part(nodes_a,
-                                taken_a,
-                                nodes_b,
-                                taken_b,
-                                tolerance,
-                                joint_name,
-                                joint_index,
-                                counts);
-      pairs.insert(pairs.end(), beyond.begin(), beyond.end());
-      if (summary != nullptr)
-        *summary = counts;
-      return pairs;
+      dealii::Point<dim>                               position;
+      double                                           weight = 0.;
+      dealii::Tensor<1, dim>                           normal_sum;
+      std::array<dealii::types::global_dof_index, dim> dofs;
+    };
+
+    /** All nodes of one boundary id, keyed by their x-component DoF. */
+    template <int dim>
+    std::vector<SideNode<dim>>
+    collect_side(const Fem::FeSpace<dim>         &space,
+                 const dealii::types::boundary_id side)
+    {
+      using namespace dealii;
+      const FiniteElement<dim> &fe = space.fe();
+      FEFaceValues<dim> face_values(space.mapping(),
+                                    fe,
+                                    space.face_quadrature(),
+                                    update_values | update_normal_vectors |
+                                      update_JxW_values);
+      const unsigned int n_cell_dofs = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n_cell_dofs);
+      std::map<types::global_dof_index, SideNode<dim>> nodes;
+      for (const auto &cell : space.dof_handler().active_cell_iterators())
+        for (const unsigned int face_no : cell->face_indices())
+          {
+            const auto face = cell->face(face_no);
+            if (!face->at_boundary() || face->boundary_id() != side)
+              continue;
+            face_values.reinit(cell, face_no);
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < n_cell_dofs; ++i)
+              {
+                if (fe.system_to_component_index(i).first != 0 ||
+                    !fe.has_support_on_face(i, face_no))
+                  continue;
+                SideNode<dim> &node = nodes[dof_indices[i]];
+                // FESystem of dim equal FE_Q: the components of one node
+                // are consecutive cell DoFs.
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    Assert(fe.system_to_component_index(i + c).first == c,
+                           ExcInternalError());
+                    node.dofs[c] = dof_indices[i + c];
+                  }
+                node.position = space.mapping().transform_unit_to_real_cell(
+                  cell, fe.unit_support_point(i));
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
+                  {
+                    const double integral =
+                      face_values.shape_value(i, q) * face_values.JxW(q);
+                    node.weight += integral;
+                    node.normal_sum += integral * face_values.normal_vector(q);
+                  }
+              }
+          }
+      if (nodes.empty())
+        throw InputError("joint side with boundary id " +
+                         std::to_string(side) + " has no faces in the mesh");
+      std::vector<SideNode<dim>> result;
+      for (const auto &entry : nodes)
+        result.push_back(entry.second);
+      return result;
     }
 
     template <int dim>
-    std::vector<ContactNode<dim>>
-    pair_nodes_with_plane(const Fem::FeSpace<dim>         &space,
-                          const dealii::types::boundary_id side,
-                          const dealii::Point<dim>        &plane_point,
-                          const dealii::Tensor<1, dim>    &plane_normal,
-                          const unsigned int               joint_index)
+    ContactNode<dim>
+    make_contact_node(const SideNode<dim> &node, const unsigned int joint)
     {
-      std::vector<ContactNode<dim>> pairs;
-      for (const auto &node : collect_side(space, side))
+      ContactNode<dim> contact;
+      contact.joint    = joint;
+      contact.position = node.position;
+      contact.weight   = node.weight;
+      contact.normal   = node.normal_sum / node.normal_sum.norm();
+      contact.dofs_a   = node.dofs;
+      contact.dofs_b.fill(dealii::numbers::invalid_dof_index);
+      return contact;
+    }
+
+    template <int dim>
+    std::string
+    describe(const dealii::Point<dim> &point)
+    {
+      std::ostringstream text;
+      text << "(" << point << ")";
+      return text.str();
+    }
+  } // namespace
+
+  namespace
+  {
+    /** Straight line through the common part of a joint (2D). */
+    struct JointLine
+    {
+      dealii::Point<2>     origin;
+      dealii::Tensor<1, 2> tangent;
+      /** Unit normal out of side A. */
+      dealii::Tensor<1, 2> normal;
+      /** Extent of the common part along the tangent (m). */
+      double low  = 0.;
+      double high = 0.;
+    };
+
+    /**
+     * Chord of the coincident side-A nodes: its two farthest-apart nodes
+     * (for a straight joint exactly its line). The normal is oriented like
+     * side A's summed face normals.
+     */
+    JointLine
+    joint_line(const std::vector<SideNode<2>> &common)
+    {
+      const auto farthest_from = [&](const dealii::Point<2> &from) {
+        dealii::Point<2> far = from;
+        for (const auto &node : common)
+          if (node.position.distance(from) > far.distance(from))
+            far = node.position;
+        return far;
+      };
+      JointLine              line;
+      const dealii::Point<2> first = farthest_from(common.front().position);
+      const dealii::Point<2> last  = farthest_from(first);
+      dealii::Tensor<1, 2>   normal_sum;
+      for (const auto &node : common)
+        normal_sum += node.normal_sum;
+      line.origin = first;
+      if (first.distance(last) > 0.)
         {
-          ContactNode<dim> pair = make_contact_node(node, joint_index);
-          pair.normal           = plane_normal / plane_normal.norm();
-          pair.initial_gap      = (plane_point - node.position) * pair.normal;
+          line.tangent   = (last - first) / first.distance(last);
+          line.normal[0] = line.tangent[1];
+          line.normal[1] = -line.tangent[0];
+          if (line.normal * normal_sum < 0.)
+            line.normal *= -1.;
+        }
+      else
+        {
+          // One common node: its own normal is the best estimate.
+          line.normal     = normal_sum / normal_sum.norm();
+          line.tangent[0] = -line.normal[1];
+          line.tangent[1] = line.normal[0];
+        }
+      line.high = (last - first) * line.tangent;
+      return line;
+    }
+
+    /** Unpaired nodes of one side beyond the two ends of the common part. */
+    struct EndNodes
+    {
+      std::vector<const SideNode<2> *> low;
+      std::vector<const SideNode<2> *> high;
+    };
+
+    /**
+     * Sorts a side's unpaired nodes to the two ends of the common part,
+     * nearest first; a node on the common part itself has no place here:
+     * the meshes do not match.
+     */
+    EndNodes
+    split_by_end(const std::vector<SideNode<2>> &nodes,
+                 const std::vector<bool>        &taken,
+                 const JointLine                &line,
+                 const double                    tolerance,
+                 const std::string              &joint_name)
+    {
+      EndNodes ends;
+      const auto along = [&](const SideNode<2> *node) {
+        return (node->position - line.origin) * line.tangent;
+      };
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          if (taken[k])
+            continue;
+          const double position = along(&nodes[k]);
+          if (position < line.low - tolerance)
+            ends.low.push_back(&nodes[k]);
+          else if (position > line.high + tolerance)
+            ends.high.push_back(&nodes[k]);
+          else
+            throw InputError(joint_name + ": node at " +
+                             describe(nodes[k].position) +
+                             " has no coincident partner");
+        }
+      std::sort(ends.low.begin(), ends.low.end(), [&](auto a, auto b) {
+        return along(a) > along(b);
+      });
+      std::sort(ends.high.begin(), ends.high.end(), [&](auto a, auto b) {
+        return along(a) < along(b);
+      });
+      return ends;
+    }
+
+    /**
+     * Pairs the nodes beyond one end if the two sides are mirror images
+     * there: equal numbers of nodes, and the k-th of side B on the normal
+     * line of the k-th of side A, not behind it. Otherwise no pair.
+     */
+    std::vector<ContactNode<2>>
+    mirror_pairs(const std::vector<const SideNode<2> *> &nodes_a,
+                 const std::vector<const SideNode<2> *> &nodes_b,
+                 const JointLine                        &line,
+                 const double                            tolerance,
+                 const unsigned int                      joint)
+    {
+      if (nodes_a.empty() || nodes_a.size() != nodes_b.size())
+        return {};
+      std::vector<ContactNode<2>> pairs;
+      for (unsigned int k = 0; k < nodes_a.size(); ++k)
+        {
+          const dealii::Tensor<1, 2> offset =
+            nodes_b[k]->position - nodes_a[k]->position;
+          const double gap = offset * line.normal;
+          if (std::abs(offset * line.tangent) > tolerance || gap < -tolerance)
+            return {};
+          ContactNode<2> pair = make_contact_node(*nodes_a[k], joint);
+          pair.normal         = line.normal;
+          pair.weight         = std::max(0., nodes_a[k]->normal_sum * line.normal);
+          pair.initial_gap    = std::max(0., gap);
+          pair.dofs_b         = nodes_b[k]->dofs;
           pairs.push_back(pair);
         }
       return pairs;
     }
 
-    template std::vector<ContactNode<2>>
-    pair_joint_nodes(const Fem::FeSpace<2> &,
-                     const dealii::types::boundary_id,
-                     const dealii::types::boundary_id,
-                     const unsigned int,
-                     PairingSummary *);
-    template std::vector<ContactNode<2>>
-    pair_nodes_with_plane(const Fem::FeSpace<2> &,
-                          const dealii::types::boundary_id,
-                          const dealii::Point<2> &,
-                          const dealii::Tensor<1, 2> &,
-                          const unsigned int);
-  } // namespace Contact
-} // namespace FloorBlock
+    /** The nodes of both sides that have no coincident partner, paired where they mirror each other. */
+    template <int dim>
+    std::vector<ContactNode<dim>>
+    pair_beyond_common_part(const std::vector<SideNode<dim>> &nodes_a,
+                            const std::vector<bool>          &taken_a,
+                            const std::vector<SideNode<dim>> &nodes_b,
+                            const std::vector<bool>          &taken_b,
+                            const double                      tolerance,
+                            const std::string                &joint_name,
+                            const unsigned int                joint,
+                            PairingSummary                   &summary)
+    {
+      if constexpr (dim != 2)
+        {
+          for (unsigned int k = 0; k < nodes_a.size(); ++k)
+            if (!taken_a[k])
+              throw InputError(joint_name + ": node at " +
+                               describe(nodes_a[k].position) +
+                               " has no coincident partner");
+          for (unsigned int k = 0; k < nodes_b.size(); ++k)
+            if (!taken_b[k])
+              throw InputError(joint_name + ": node at " +
+                               describe(nodes_b[k].position) +
+                               " has no coincident partner");
+          return {};
+        }
+      else
+        {
+          std::vector<SideNode<2>> common;
+          for (unsigned int k = 0; k < nodes_a.size(); ++k)
+            if (taken_a[k])
+              common.push_back(nodes_a[k]);
+          const JointLine line = joint_line(common);
+          const EndNodes  ends_a =
+            split_by_end(nodes_a, taken_a, line, tolerance, joint_name);
+          const EndNodes ends_b =
+            split_by_end(nodes_b, taken_b, line, tolerance, joint_name);
+          std::vector<ContactNode<2>> pairs;
+          for (const auto &[end_a, end_b] :
+               {std::make_pair(&ends_a.low, &ends_b.low),
+                std::make_pair(&ends_a.high, &ends_b.high)})
+            {
+              const std::vector<ContactNode<2>> mirrored =
+                mirror_pairs(*end_a, *end_b, line, tolerance, joint);
+              pairs.insert(pairs.end(), mirrored.begin(), mirrored.end());
+              summary.n_mirrored += mirrored.size();
+              if (mirrored.empty())
+                {
+                  summary.n_free_a += end_a->size();
+                  summary.n_free_b += end_b->size();
+                }
+            }
+          return pairs;
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<ContactNode<dim>>
+  pair_joint_nodes(const Fem::FeSpace<dim>         &space,
+                   const dealii::types::boundary_id side_a,
+                   const dealii::types::boundary_id side_b,
+                   const unsigned int               joint_index,
+                   PairingSummary                  *summary)
+  {
+    const std::vector<SideNode<dim>> nodes_a = collect_side(space, side_a);
+    const std::vector<SideNode<dim>> nodes_b = collect_side(space, side_b);
+    const std::string joint_name =
+      "joint " + std::to_string(side_a) + "/" + std::to_string(side_b);
+    const double tolerance =
+      position_tolerance_factor * space.minimal_cell_diameter();
+    std::vector<ContactNode<dim>> pairs;
+    std::vector<bool>             taken_a(nodes_a.size(), false);
+    std::vector<bool>             taken_b(nodes_b.size(), false);
+    for (unsigned int a = 0; a < nodes_a.size(); ++a)
+      for (unsigned int b = 0; b < nodes_b.size() && !taken_a[a]; ++b)
+        if (!taken_b[b] &&
+            nodes_a[a].position.distance(nodes_b[b].position) < tolerance)
+          {
+            ContactNode<dim> pair = make_contact_node(nodes_a[a], joint_index);
+            pair.dofs_b           = nodes_b[b].dofs;
+            pairs.push_back(pair);
+            taken_a[a] = true;
+            taken_b[b] = true;
+          }
+    PairingSummary counts;
+    counts.n_coincident = pairs.size();
+    if (pairs.empty())
+      throw InputError(joint_name + ": node at " +
+                       describe(nodes_a.front().position) +
+                       " has no coincident partner (the meshes of the two "
+                       "sides do not match)");
+    const std::vector<ContactNode<dim>> beyond =
+      pair_beyond_common_part(nodes_a,
+                              taken_a,
+                              nodes_b,
+                              taken_b,
+                              tolerance,
+                              joint_name,
+                              joint_index,
+                              counts);
+    pairs.insert(pairs.end(), beyond.begin(), beyond.end());
+    if (summary != nullptr)
+      *summary = counts;
+    return pairs;
+  }
+
+  template <int dim>
+  std::vector<ContactNode<dim>>
+  pair_nodes_with_plane(const Fem::FeSpace<dim>         &space,
+                        const dealii::types::boundary_id side,
+                        const dealii::Point<dim>        &plane_point,
+                        const dealii::Tensor<1, dim>    &plane_normal,
+                        const unsigned int               joint_index)
+  {
+    std::vector<ContactNode<dim>> pairs;
+    for (const auto &node : collect_side(space, side))
+      {
+        ContactNode<dim> pair = make_contact_node(node, joint_index);
+        pair.normal           = plane_normal / plane_normal.norm();
+        pair.initial_gap      = (plane_point - node.position) * pair.normal;
+        pairs.push_back(pair);
+      }
+    return pairs;
+  }
+
+  template std::vector<ContactNode<2>>
+  pair_joint_nodes(const Fem::FeSpace<2> &,
+                   const dealii::types::boundary_id,
+                   const dealii::types::boundary_id,
+                   const unsigned int,
+                   PairingSummary *);
+  template std::vector<ContactNode<2>>
+  pair_nodes_with_plane(const Fem::FeSpace<2> &,
+                        const dealii::types::boundary_id,
+                        const dealii::Point<2> &,
+                        const dealii::Tensor<1, 2> &,
+                        const unsigned int);
+} // namespace FloorBlock::Contact

@@ -5,96 +5,93 @@
 #include <limits>
 #include <map>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  NewtonReport
+  solve_newton(const NewtonSettings  &settings,
+               const double           reference_force,
+               const NewtonCallbacks &callbacks,
+               const ReferenceForce   reference_kind)
   {
-    NewtonReport
-    solve_newton(const NewtonSettings  &settings,
-                 const double           reference_force,
-                 const NewtonCallbacks &callbacks,
-                 const ReferenceForce   reference_kind)
-    {
-      NewtonReport  report;
-      NewtonIterate current = callbacks.assemble();
-      const double  first_residual =
-        reference_kind == ReferenceForce::given_or_first_residual ?
-           current.residual_norm :
-           0.;
-      // A zero load and zero first residual means nothing to do; the
-      // smallest normal double keeps the ratio finite.
-      const double reference = std::max({reference_force,
-                                         first_residual,
-                                         std::numeric_limits<double>::min()});
-      std::map<std::uint64_t, unsigned int> revisits;
-      report.counts            = current.counts;
-      report.relative_residual = current.residual_norm / reference;
+    NewtonReport  report;
+    NewtonIterate current = callbacks.assemble();
+    const double  first_residual =
+      reference_kind == ReferenceForce::given_or_first_residual ?
+         current.residual_norm :
+         0.;
+    // A zero load and zero first residual means nothing to do; the
+    // smallest normal double keeps the ratio finite.
+    const double reference = std::max({reference_force,
+                                       first_residual,
+                                       std::numeric_limits<double>::min()});
+    std::map<std::uint64_t, unsigned int> revisits;
+    report.counts            = current.counts;
+    report.relative_residual = current.residual_norm / reference;
 
-      for (unsigned int iteration = 1; iteration <= settings.max_iterations;
-           ++iteration)
-        {
-          report.n_iterations = iteration;
-          std::string message;
-          if (!callbacks.solve_update(message))
-            {
-              report.failure_reason = "linear solver failed: " + message;
-              return report;
-            }
-          const NewtonIterate previous = current;
-          double              step     = 1.;
-          bool                accepted = false;
-          for (unsigned int search = 0;
-               search <= settings.max_line_search_steps && !accepted;
-               ++search)
-            {
-              callbacks.set_step(step);
-              current  = callbacks.assemble();
-              accepted = std::isfinite(current.residual_norm) &&
-                         current.residual_norm <=
-                           (1. - settings.sufficient_decrease * step) *
-                             previous.residual_norm;
-              if (!accepted)
-                step *= settings.line_search_reduction;
-            }
-          if (!accepted)
-            {
-              // No descent along the update: the set changes non-smoothly;
-              // take the full semi-smooth Newton step.
-              callbacks.set_step(1.);
-              current = callbacks.assemble();
-            }
-          report.counts            = current.counts;
-          report.relative_residual = current.residual_norm / reference;
-          if (!std::isfinite(current.residual_norm))
-            {
-              report.failure_reason = "non-finite residual";
-              return report;
-            }
-          const bool set_stable =
-            current.set_signature == previous.set_signature;
-          if (set_stable && report.relative_residual <= settings.relative_tolerance)
-            {
-              report.converged = true;
-              return report;
-            }
-          if (set_stable && callbacks.round_off_floor &&
-              report.relative_residual <=
-                settings.max_round_off_relief * settings.relative_tolerance &&
-              current.residual_norm <= callbacks.round_off_floor())
-            {
-              report.converged                  = true;
-              report.stopped_at_round_off_floor = true;
-              return report;
-            }
-          if (!set_stable &&
-              ++revisits[current.set_signature] > settings.cycling_limit)
-            {
-              report.failure_reason = "active-set cycling";
-              return report;
-            }
-        }
-      report.failure_reason = "no convergence within the iteration limit";
-      return report;
-    }
-  } // namespace Contact
-} // namespace FloorBlock
+    for (unsigned int iteration = 1; iteration <= settings.max_iterations;
+         ++iteration)
+      {
+        report.n_iterations = iteration;
+        std::string message;
+        if (!callbacks.solve_update(message))
+          {
+            report.failure_reason = "linear solver failed: " + message;
+            return report;
+          }
+        const NewtonIterate previous = current;
+        double              step     = 1.;
+        bool                accepted = false;
+        for (unsigned int search = 0;
+             search <= settings.max_line_search_steps && !accepted;
+             ++search)
+          {
+            callbacks.set_step(step);
+            current  = callbacks.assemble();
+            accepted = std::isfinite(current.residual_norm) &&
+                       current.residual_norm <=
+                         (1. - settings.sufficient_decrease * step) *
+                           previous.residual_norm;
+            if (!accepted)
+              step *= settings.line_search_reduction;
+          }
+        if (!accepted)
+          {
+            // No descent along the update: the set changes non-smoothly;
+            // take the full semi-smooth Newton step.
+            callbacks.set_step(1.);
+            current = callbacks.assemble();
+          }
+        report.counts            = current.counts;
+        report.relative_residual = current.residual_norm / reference;
+        if (!std::isfinite(current.residual_norm))
+          {
+            report.failure_reason = "non-finite residual";
+            return report;
+          }
+        const bool set_stable =
+          current.set_signature == previous.set_signature;
+        if (set_stable && report.relative_residual <= settings.relative_tolerance)
+          {
+            report.converged = true;
+            return report;
+          }
+        if (set_stable && callbacks.round_off_floor &&
+            report.relative_residual <=
+              settings.max_round_off_relief * settings.relative_tolerance &&
+            current.residual_norm <= callbacks.round_off_floor())
+          {
+            report.converged                  = true;
+            report.stopped_at_round_off_floor = true;
+            return report;
+          }
+        if (!set_stable &&
+            ++revisits[current.set_signature] > settings.cycling_limit)
+          {
+            report.failure_reason = "active-set cycling";
+            return report;
+          }
+      }
+    report.failure_reason = "no convergence within the iteration limit";
+    return report;
+  }
+} // namespace FloorBlock::Contact

@@ -13,140 +13,137 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
+  /** @brief State of one joint node, for profiles along the joint. */
+  struct JointNodeSample
   {
-    /** @brief State of one joint node, for profiles along the joint. */
-    struct JointNodeSample
-    {
-      /** Distance along the joint from its first node (m). */
-      double arc_position = 0.;
-      dealii::Point<2> position;
-      double           normal_traction     = 0.; ///< Pa, compression > 0
-      double           tangential_traction = 0.; ///< Pa, along the tangent (-n_y, n_x)
-      double           gap                 = 0.; ///< m
-      JointState       state               = JointState::open;
-    };
+    /** Distance along the joint from its first node (m). */
+    double arc_position = 0.;
+    dealii::Point<2> position;
+    double           normal_traction     = 0.; ///< Pa, compression > 0
+    double           tangential_traction = 0.; ///< Pa, along the tangent (-n_y, n_x)
+    double           gap                 = 0.; ///< m
+    JointState       state               = JointState::open;
+  };
 
-    /** @brief Post-processed forces of one joint (2D: per metre out of plane). */
-    struct JointReport
-    {
-      std::string name;
-      /** Integrated normal traction, the FEM "Q" of a vertical joint (N/m). */
-      double normal_force = 0.;
-      /** Integrated shear traction along the tangent (-n_y, n_x) (N/m). */
-      double shear_force = 0.;
-      /** Length of the closed part (m); area = length x b. */
-      double closed_length = 0.;
-      /** Largest nodal normal traction (Pa) and where (m). */
-      double           peak_normal_stress = 0.;
-      dealii::Point<2> peak_position;
-      /** Largest normal traction averaged over ContactSolverSettings::averaging_length (Pa). */
-      double averaged_peak_normal_stress = 0.;
-      double averaging_length            = 0.;
-      /** normal_force / closed_length, 0 when open (Pa). */
-      double      mean_normal_stress = 0.;
-      StateCounts counts;
-      std::vector<JointNodeSample> profile;
-    };
+  /** @brief Post-processed forces of one joint (2D: per metre out of plane). */
+  struct JointReport
+  {
+    std::string name;
+    /** Integrated normal traction, the FEM "Q" of a vertical joint (N/m). */
+    double normal_force = 0.;
+    /** Integrated shear traction along the tangent (-n_y, n_x) (N/m). */
+    double shear_force = 0.;
+    /** Length of the closed part (m); area = length x b. */
+    double closed_length = 0.;
+    /** Largest nodal normal traction (Pa) and where (m). */
+    double           peak_normal_stress = 0.;
+    dealii::Point<2> peak_position;
+    /** Largest normal traction averaged over ContactSolverSettings::averaging_length (Pa). */
+    double averaged_peak_normal_stress = 0.;
+    double averaging_length            = 0.;
+    /** normal_force / closed_length, 0 when open (Pa). */
+    double      mean_normal_stress = 0.;
+    StateCounts counts;
+    std::vector<JointNodeSample> profile;
+  };
 
-    /** @brief Global equilibrium check of one converged state (2D, N/m). */
-    struct ForceBalance
-    {
-      dealii::Tensor<1, 2> applied_load;
-      /** Dirichlet reactions plus the forces on rigid obstacles (N/m). */
-      dealii::Tensor<1, 2> support_reaction;
-      /** |applied + reaction| / (|applied| + sum of |nodal reactions|) (-). */
-      double relative_imbalance = 0.;
-    };
+  /** @brief Global equilibrium check of one converged state (2D, N/m). */
+  struct ForceBalance
+  {
+    dealii::Tensor<1, 2> applied_load;
+    /** Dirichlet reactions plus the forces on rigid obstacles (N/m). */
+    dealii::Tensor<1, 2> support_reaction;
+    /** |applied + reaction| / (|applied| + sum of |nodal reactions|) (-). */
+    double relative_imbalance = 0.;
+  };
 
-    /** Loading stage of the chapter's path. */
-    enum class LoadStage
-    {
-      gravity,
-      support_pressure,
-      uplift
-    };
+  /** Loading stage of the chapter's path. */
+  enum class LoadStage
+  {
+    gravity,
+    support_pressure,
+    uplift
+  };
 
-    /** @brief One converged increment. */
-    struct IncrementResult
-    {
-      LoadStage    stage = LoadStage::gravity;
-      /** Fraction of the stage's load reached (-). */
-      double       stage_factor        = 0.;
-      /**
-       * Of the start that converged; a discarded extrapolated start's
-       * iterations count in SolveResult::n_failed_newton_iterations.
-       */
-      unsigned int n_newton_iterations = 0;
-      /**
-       * Rigid law: the increment was solved from a penalty start
-       * (ContactSolver::solve_from_penalty_start), whose iterations are
-       * included in n_newton_iterations.
-       */
-      bool started_from_penalty = false;
-      /** Failed attempts (cutbacks) before this increment converged. */
-      unsigned int n_cutbacks        = 0;
-      double       relative_residual = 0.;
-      /** Newton stopped on the round-off floor of the residual (see NewtonIterate). */
-      bool         round_off_limited = false;
-      StateCounts  counts;
-      ForceBalance balance;
-      std::vector<JointReport>                                      joints;
-      std::map<dealii::types::material_id, Fem::RigidMotion<2>> motions;
-      double wall_time = 0.; ///< s
-    };
-
-    /** @brief All converged increments plus timing. */
-    struct SolveResult
-    {
-      std::vector<IncrementResult> increments;
-      /** Wall time per TimerOutput section ("Contact: assemble", ...) (s). */
-      std::map<std::string, double> wall_times;
-      unsigned int                  n_dofs         = 0;
-      unsigned int                  n_contact_pairs = 0;
-      /** Linear solves of all Newton iterations, failed increments included. */
-      unsigned int n_linear_solves = 0;
-      /** Numeric LU factorisations among them (direct solver only). */
-      unsigned int n_factorizations = 0;
-      /** GMRES iterations on stored or fresh LU factors (direct solver only). */
-      unsigned int n_krylov_iterations = 0;
-      /** Direct solutions accepted above the residual tolerance (ill-conditioned matrix). */
-      unsigned int n_solves_above_tolerance = 0;
-      /** Newton iterations of failed attempts (cut back or retried), not in any increment. */
-      unsigned int n_failed_newton_iterations = 0;
-    };
-
+  /** @brief One converged increment. */
+  struct IncrementResult
+  {
+    LoadStage    stage = LoadStage::gravity;
+    /** Fraction of the stage's load reached (-). */
+    double       stage_factor        = 0.;
     /**
-     * @brief The loading path could not be followed even after cutbacks.
-     * Carries what was tried and the last converged increment; the solver's
-     * solution() still holds that state.
+     * Of the start that converged; a discarded extrapolated start's
+     * iterations count in SolveResult::n_failed_newton_iterations.
      */
-    class ContactSolveFailure : public std::runtime_error
-    {
-    public:
-      ContactSolveFailure(const std::string              &message,
-                          std::vector<std::string>        attempts,
-                          std::optional<IncrementResult>  last_converged,
-                          const StateCounts              &last_iterate_counts)
-        : std::runtime_error(message)
-        , attempts(std::move(attempts))
-        , last_converged(std::move(last_converged))
-        , last_iterate_counts(last_iterate_counts)
-      {}
+    unsigned int n_newton_iterations = 0;
+    /**
+     * Rigid law: the increment was solved from a penalty start
+     * (ContactSolver::solve_from_penalty_start), whose iterations are
+     * included in n_newton_iterations.
+     */
+    bool started_from_penalty = false;
+    /** Failed attempts (cutbacks) before this increment converged. */
+    unsigned int n_cutbacks        = 0;
+    double       relative_residual = 0.;
+    /** Newton stopped on the round-off floor of the residual (see NewtonIterate). */
+    bool         round_off_limited = false;
+    StateCounts  counts;
+    ForceBalance balance;
+    std::vector<JointReport>                                      joints;
+    std::map<dealii::types::material_id, Fem::RigidMotion<2>> motions;
+    double wall_time = 0.; ///< s
+  };
 
-      /** One line per failed attempt: stage, factor, reason. */
-      std::vector<std::string> attempts;
-      std::optional<IncrementResult> last_converged;
-      /** Open/stick/slip counts of the last Newton iterate tried. */
-      StateCounts last_iterate_counts;
-      /**
-       * Everything up to the failure: every converged increment, the
-       * counters (including the failed attempts' Newton iterations) and the
-       * wall times; filled by ContactSolver::run().
-       */
-      SolveResult partial_result;
-    };
-  } // namespace Contact
-} // namespace FloorBlock
+  /** @brief All converged increments plus timing. */
+  struct SolveResult
+  {
+    std::vector<IncrementResult> increments;
+    /** Wall time per TimerOutput section ("Contact: assemble", ...) (s). */
+    std::map<std::string, double> wall_times;
+    unsigned int                  n_dofs         = 0;
+    unsigned int                  n_contact_pairs = 0;
+    /** Linear solves of all Newton iterations, failed increments included. */
+    unsigned int n_linear_solves = 0;
+    /** Numeric LU factorisations among them (direct solver only). */
+    unsigned int n_factorizations = 0;
+    /** GMRES iterations on stored or fresh LU factors (direct solver only). */
+    unsigned int n_krylov_iterations = 0;
+    /** Direct solutions accepted above the residual tolerance (ill-conditioned matrix). */
+    unsigned int n_solves_above_tolerance = 0;
+    /** Newton iterations of failed attempts (cut back or retried), not in any increment. */
+    unsigned int n_failed_newton_iterations = 0;
+  };
+
+  /**
+   * @brief The loading path could not be followed even after cutbacks.
+   * Carries what was tried and the last converged increment; the solver's
+   * solution() still holds that state.
+   */
+  class ContactSolveFailure : public std::runtime_error
+  {
+  public:
+    ContactSolveFailure(const std::string              &message,
+                        std::vector<std::string>        attempts,
+                        std::optional<IncrementResult>  last_converged,
+                        const StateCounts              &last_iterate_counts)
+      : std::runtime_error(message)
+      , attempts(std::move(attempts))
+      , last_converged(std::move(last_converged))
+      , last_iterate_counts(last_iterate_counts)
+    {}
+
+    /** One line per failed attempt: stage, factor, reason. */
+    std::vector<std::string> attempts;
+    std::optional<IncrementResult> last_converged;
+    /** Open/stick/slip counts of the last Newton iterate tried. */
+    StateCounts last_iterate_counts;
+    /**
+     * Everything up to the failure: every converged increment, the
+     * counters (including the failed attempts' Newton iterations) and the
+     * wall times; filled by ContactSolver::run().
+     */
+    SolveResult partial_result;
+  };
+} // namespace FloorBlock::Contact

@@ -1,28 +1,25 @@
 #pragma once
 
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-namespace FloorBlock
+namespace FloorBlock::Contact
 {
-  namespace Contact
-  {
-    /**
-     * @brief Displacement (m) of a moved support point at fraction
-     * @p stage_factor (0..1) of the uplift stage.
-     *
-     * Translations, the parabola and the slope scale linearly with the factor; the tilt
-     * is an exact rotation by factor x angle about the pivot, so rigid
-     * rotations stay strain-free.
-     * @param[in] settings Uplift mode and magnitude.
-     * @param[in] stage_factor Fraction of the stage reached (-).
-     * @param[in] position Reference position (m).
-     */
-    dealii::Tensor<1, 2>
-    uplift_displacement(const UpliftSettings  &settings,
-                        const double           stage_factor,
-                        const dealii::Point<2> &position);
-  } // namespace Contact
-} // namespace FloorBlock
+  /**
+   * @brief Displacement (m) of a moved support point at fraction
+   * @p stage_factor (0..1) of the uplift stage.
+   *
+   * Translations, the parabola and the slope scale linearly with the factor; the tilt
+   * is an exact rotation by factor x angle about the pivot, so rigid
+   * rotations stay strain-free.
+   * @param[in] settings Uplift mode and magnitude.
+   * @param[in] stage_factor Fraction of the stage reached (-).
+   * @param[in] position Reference position (m).
+   */
+  dealii::Tensor<1, 2>
+  uplift_displacement(const UpliftSettings  &settings,
+                      const double           stage_factor,
+                      const dealii::Point<2> &position);
+} // namespace FloorBlock::Contact

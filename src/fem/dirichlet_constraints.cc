@@ -4,82 +4,79 @@
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  namespace
   {
-    namespace
-    {
-      /** Adapts a displacement lambda to deal.II's Function interface. */
-      template <int dim>
-      class DisplacementFunction : public dealii::Function<dim>
-      {
-      public:
-        explicit DisplacementFunction(
-          const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-                     &displacement,
-          const bool homogeneous)
-          : dealii::Function<dim>(dim)
-          , displacement(displacement)
-          , homogeneous(homogeneous)
-        {}
-
-        double
-        value(const dealii::Point<dim> &point,
-              const unsigned int        component) const override
-        {
-          return homogeneous ? 0. : displacement(point)[component];
-        }
-
-      private:
-        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-                   &displacement;
-        const bool homogeneous;
-      };
-    } // namespace
-
+    /** Adapts a displacement lambda to deal.II's Function interface. */
     template <int dim>
-    dealii::AffineConstraints<double>
-    make_constraints(const FeSpace<dim>                         &space,
-                     const std::vector<DirichletCondition<dim>> &conditions,
-                     const bool                                  homogeneous,
-                     dealii::IndexSet                           &dirichlet_dofs)
+    class DisplacementFunction : public dealii::Function<dim>
     {
-      dealii::AffineConstraints<double> constraints;
-      constraints.reinit(space.locally_relevant_dofs());
-      constraints.merge(space.hanging_node_constraints());
-      dealii::AffineConstraints<double> dirichlet;
-      dirichlet.reinit(space.locally_relevant_dofs());
-      for (const auto &condition : conditions)
-        {
-          const DisplacementFunction<dim> function(condition.displacement,
-                                                   homogeneous);
-          const std::vector<bool> mask(condition.constrained_components.begin(),
-                                       condition.constrained_components.end());
-          dealii::VectorTools::interpolate_boundary_values(
-            space.mapping(),
-            space.dof_handler(),
-            condition.boundary_id,
-            function,
-            dirichlet,
-            dealii::ComponentMask(mask));
-        }
-      dirichlet.close();
-      dirichlet_dofs = dealii::IndexSet(space.dof_handler().n_dofs());
-      for (const auto &line : dirichlet.get_lines())
-        dirichlet_dofs.add_index(line.index);
-      // Dirichlet values win where a hanging node also sits on a support.
-      constraints.merge(
-        dirichlet,
-        dealii::AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
-      constraints.close();
-      return constraints;
-    }
+    public:
+      explicit DisplacementFunction(
+        const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+                   &displacement,
+        const bool homogeneous)
+        : dealii::Function<dim>(dim)
+        , displacement(displacement)
+        , homogeneous(homogeneous)
+      {}
 
-    template dealii::AffineConstraints<double>
-    make_constraints(const FeSpace<2> &,
-                     const std::vector<DirichletCondition<2>> &,
-                     const bool,
-                     dealii::IndexSet &);
-  } // namespace Fem
-} // namespace FloorBlock
+      double
+      value(const dealii::Point<dim> &point,
+            const unsigned int        component) const override
+      {
+        return homogeneous ? 0. : displacement(point)[component];
+      }
+
+    private:
+      const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+                 &displacement;
+      const bool homogeneous;
+    };
+  } // namespace
+
+  template <int dim>
+  dealii::AffineConstraints<double>
+  make_constraints(const FeSpace<dim>                         &space,
+                   const std::vector<DirichletCondition<dim>> &conditions,
+                   const bool                                  homogeneous,
+                   dealii::IndexSet                           &dirichlet_dofs)
+  {
+    dealii::AffineConstraints<double> constraints;
+    constraints.reinit(space.locally_relevant_dofs());
+    constraints.merge(space.hanging_node_constraints());
+    dealii::AffineConstraints<double> dirichlet;
+    dirichlet.reinit(space.locally_relevant_dofs());
+    for (const auto &condition : conditions)
+      {
+        const DisplacementFunction<dim> function(condition.displacement,
+                                                 homogeneous);
+        const std::vector<bool> mask(condition.constrained_components.begin(),
+                                     condition.constrained_components.end());
+        dealii::VectorTools::interpolate_boundary_values(
+          space.mapping(),
+          space.dof_handler(),
+          condition.boundary_id,
+          function,
+          dirichlet,
+          dealii::ComponentMask(mask));
+      }
+    dirichlet.close();
+    dirichlet_dofs = dealii::IndexSet(space.dof_handler().n_dofs());
+    for (const auto &line : dirichlet.get_lines())
+      dirichlet_dofs.add_index(line.index);
+    // Dirichlet values win where a hanging node also sits on a support.
+    constraints.merge(
+      dirichlet,
+      dealii::AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
+    constraints.close();
+    return constraints;
+  }
+
+  template dealii::AffineConstraints<double>
+  make_constraints(const FeSpace<2> &,
+                   const std::vector<DirichletCondition<2>> &,
+                   const bool,
+                   dealii::IndexSet &);
+} // namespace FloorBlock::Fem

@@ -11,41 +11,38 @@
 #include <functional>
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  /**
+   * @brief A prescribed displacement on one boundary id.
+   *
+   * Only the components flagged in @p constrained_components are fixed;
+   * @p displacement gives their values (m) as a function of the reference
+   * position (m).
+   */
+  template <int dim>
+  struct DirichletCondition
   {
-    /**
-     * @brief A prescribed displacement on one boundary id.
-     *
-     * Only the components flagged in @p constrained_components are fixed;
-     * @p displacement gives their values (m) as a function of the reference
-     * position (m).
-     */
-    template <int dim>
-    struct DirichletCondition
-    {
-      dealii::types::boundary_id boundary_id;
-      std::array<bool, dim>      constrained_components;
-      std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-        displacement;
-    };
+    dealii::types::boundary_id boundary_id;
+    std::array<bool, dim>      constrained_components;
+    std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
+      displacement;
+  };
 
-    /**
-     * @brief Hanging-node constraints merged with the Dirichlet conditions.
-     * @param[in] space The FE space.
-     * @param[in] conditions Prescribed displacements.
-     * @param[in] homogeneous If true, all prescribed values are zero (the
-     *   constraints of a Newton update).
-     * @param[out] dirichlet_dofs The DoFs fixed by @p conditions (not the
-     *   hanging ones): the supports whose reactions are reported.
-     * @return Closed constraints.
-     */
-    template <int dim>
-    dealii::AffineConstraints<double>
-    make_constraints(const FeSpace<dim>                        &space,
-                     const std::vector<DirichletCondition<dim>> &conditions,
-                     const bool                                 homogeneous,
-                     dealii::IndexSet                          &dirichlet_dofs);
-  } // namespace Fem
-} // namespace FloorBlock
+  /**
+   * @brief Hanging-node constraints merged with the Dirichlet conditions.
+   * @param[in] space The FE space.
+   * @param[in] conditions Prescribed displacements.
+   * @param[in] homogeneous If true, all prescribed values are zero (the
+   *   constraints of a Newton update).
+   * @param[out] dirichlet_dofs The DoFs fixed by @p conditions (not the
+   *   hanging ones): the supports whose reactions are reported.
+   * @return Closed constraints.
+   */
+  template <int dim>
+  dealii::AffineConstraints<double>
+  make_constraints(const FeSpace<dim>                        &space,
+                   const std::vector<DirichletCondition<dim>> &conditions,
+                   const bool                                 homogeneous,
+                   dealii::IndexSet                          &dirichlet_dofs);
+} // namespace FloorBlock::Fem

@@ -10,70 +10,67 @@
 
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  /**
+   * @brief The displacement space: vector-valued FE_Q of a given degree on
+   * a triangulation that may consist of several bodies (blocks with
+   * duplicated vertices on the joints), its DoF numbering, mapping,
+   * quadrature and hanging-node constraints.
+   *
+   * The index sets are the locally owned/relevant ones so that a
+   * distributed run is one step away; today everything runs on one rank.
+   */
+  template <int dim>
+  class FeSpace
   {
+  public:
     /**
-     * @brief The displacement space: vector-valued FE_Q of a given degree on
-     * a triangulation that may consist of several bodies (blocks with
-     * duplicated vertices on the joints), its DoF numbering, mapping,
-     * quadrature and hanging-node constraints.
-     *
-     * The index sets are the locally owned/relevant ones so that a
-     * distributed run is one step away; today everything runs on one rank.
+     * @param[in] triangulation The mesh; must outlive this object.
+     * @param[in] degree Polynomial degree, 1 or 2.
      */
-    template <int dim>
-    class FeSpace
-    {
-    public:
-      /**
-       * @param[in] triangulation The mesh; must outlive this object.
-       * @param[in] degree Polynomial degree, 1 or 2.
-       */
-      FeSpace(const dealii::Triangulation<dim> &triangulation,
-              const unsigned int                degree);
+    FeSpace(const dealii::Triangulation<dim> &triangulation,
+            const unsigned int                degree);
 
-      const dealii::DoFHandler<dim> &
-      dof_handler() const;
-      const dealii::FiniteElement<dim> &
-      fe() const;
-      const dealii::Mapping<dim> &
-      mapping() const;
-      /** @brief Cell quadrature, exact for the stiffness matrix on affine cells. */
-      const dealii::Quadrature<dim> &
-      cell_quadrature() const;
-      /** @brief Face quadrature, same order. */
-      const dealii::Quadrature<dim - 1> &
-      face_quadrature() const;
-      const dealii::IndexSet &
-      locally_owned_dofs() const;
-      const dealii::IndexSet &
-      locally_relevant_dofs() const;
-      /** @brief Hanging-node constraints only (closed). */
-      const dealii::AffineConstraints<double> &
-      hanging_node_constraints() const;
-      /** @brief Rigid translations per component, for ML AMG. */
-      const std::vector<std::vector<bool>> &
-      constant_modes() const;
-      unsigned int
-      degree() const;
-      /** @brief Smallest cell diameter (m). */
-      double
-      minimal_cell_diameter() const;
+    const dealii::DoFHandler<dim> &
+    dof_handler() const;
+    const dealii::FiniteElement<dim> &
+    fe() const;
+    const dealii::Mapping<dim> &
+    mapping() const;
+    /** @brief Cell quadrature, exact for the stiffness matrix on affine cells. */
+    const dealii::Quadrature<dim> &
+    cell_quadrature() const;
+    /** @brief Face quadrature, same order. */
+    const dealii::Quadrature<dim - 1> &
+    face_quadrature() const;
+    const dealii::IndexSet &
+    locally_owned_dofs() const;
+    const dealii::IndexSet &
+    locally_relevant_dofs() const;
+    /** @brief Hanging-node constraints only (closed). */
+    const dealii::AffineConstraints<double> &
+    hanging_node_constraints() const;
+    /** @brief Rigid translations per component, for ML AMG. */
+    const std::vector<std::vector<bool>> &
+    constant_modes() const;
+    unsigned int
+    degree() const;
+    /** @brief Smallest cell diameter (m). */
+    double
+    minimal_cell_diameter() const;
 
-    private:
-      const unsigned int                fe_degree;
-      const dealii::FESystem<dim>       finite_element;
-      const dealii::MappingQ<dim>       mapping_q;
-      const dealii::QGauss<dim>         cell_gauss;
-      const dealii::QGauss<dim - 1>     face_gauss;
-      dealii::DoFHandler<dim>           dofs;
-      dealii::IndexSet                  owned;
-      dealii::IndexSet                  relevant;
-      dealii::AffineConstraints<double> hanging;
-      std::vector<std::vector<bool>>    modes;
-      double                            min_diameter;
-    };
-  } // namespace Fem
-} // namespace FloorBlock
+  private:
+    const unsigned int                fe_degree;
+    const dealii::FESystem<dim>       finite_element;
+    const dealii::MappingQ<dim>       mapping_q;
+    const dealii::QGauss<dim>         cell_gauss;
+    const dealii::QGauss<dim - 1>     face_gauss;
+    dealii::DoFHandler<dim>           dofs;
+    dealii::IndexSet                  owned;
+    dealii::IndexSet                  relevant;
+    dealii::AffineConstraints<double> hanging;
+    std::vector<std::vector<bool>>    modes;
+    double                            min_diameter;
+  };
+} // namespace FloorBlock::Fem

@@ -5,70 +5,67 @@
 
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  std::map<dealii::types::material_id, RigidMotion<2>>
+  fit_rigid_motions(const FeSpace<2>                            &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
-    std::map<dealii::types::material_id, RigidMotion<2>>
-    fit_rigid_motions(const FeSpace<2>                            &space,
-                      const dealii::TrilinosWrappers::MPI::Vector &solution)
+    constexpr int dim = 2;
+    // Integrals over each body: area, first moments of position and
+    // displacement, the moment x cross u and the polar moment |x|^2.
+    struct Moments
     {
-      constexpr int dim = 2;
-      // Integrals over each body: area, first moments of position and
-      // displacement, the moment x cross u and the polar moment |x|^2.
-      struct Moments
+      double                 area = 0.;
+      dealii::Tensor<1, dim> position;
+      dealii::Tensor<1, dim> displacement;
+      double                 cross  = 0.;
+      double                 radius = 0.;
+    };
+    std::map<dealii::types::material_id, Moments> bodies;
+
+    dealii::FEValues<dim> fe_values(space.mapping(),
+                                    space.fe(),
+                                    space.cell_quadrature(),
+                                    dealii::update_values |
+                                      dealii::update_quadrature_points |
+                                      dealii::update_JxW_values);
+    const dealii::FEValuesExtractors::Vector displacement(0);
+    std::vector<dealii::Tensor<1, dim>>      values(
+      space.cell_quadrature().size());
+    for (const auto &cell : space.dof_handler().active_cell_iterators())
       {
-        double                 area = 0.;
-        dealii::Tensor<1, dim> position;
-        dealii::Tensor<1, dim> displacement;
-        double                 cross  = 0.;
-        double                 radius = 0.;
-      };
-      std::map<dealii::types::material_id, Moments> bodies;
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_values(solution, values);
+        Moments &body = bodies[cell->material_id()];
+        for (unsigned int q = 0; q < values.size(); ++q)
+          {
+            const dealii::Point<dim> &x = fe_values.quadrature_point(q);
+            const double              w = fe_values.JxW(q);
+            body.area += w;
+            body.position += w * x;
+            body.displacement += w * values[q];
+            body.cross += w * (x[0] * values[q][1] - x[1] * values[q][0]);
+            body.radius += w * x.norm_square();
+          }
+      }
 
-      dealii::FEValues<dim> fe_values(space.mapping(),
-                                      space.fe(),
-                                      space.cell_quadrature(),
-                                      dealii::update_values |
-                                        dealii::update_quadrature_points |
-                                        dealii::update_JxW_values);
-      const dealii::FEValuesExtractors::Vector displacement(0);
-      std::vector<dealii::Tensor<1, dim>>      values(
-        space.cell_quadrature().size());
-      for (const auto &cell : space.dof_handler().active_cell_iterators())
-        {
-          fe_values.reinit(cell);
-          fe_values[displacement].get_function_values(solution, values);
-          Moments &body = bodies[cell->material_id()];
-          for (unsigned int q = 0; q < values.size(); ++q)
-            {
-              const dealii::Point<dim> &x = fe_values.quadrature_point(q);
-              const double              w = fe_values.JxW(q);
-              body.area += w;
-              body.position += w * x;
-              body.displacement += w * values[q];
-              body.cross += w * (x[0] * values[q][1] - x[1] * values[q][0]);
-              body.radius += w * x.norm_square();
-            }
-        }
-
-      std::map<dealii::types::material_id, RigidMotion<dim>> motions;
-      for (const auto &[material, body] : bodies)
-        {
-          const dealii::Tensor<1, dim> centroid = body.position / body.area;
-          RigidMotion<dim>             motion;
-          motion.translation = body.displacement / body.area;
-          // About the centroid: int r x u = int x x u - c x int u, and
-          // int |r|^2 = int |x|^2 - A |c|^2.
-          const double moment =
-            body.cross - (centroid[0] * body.displacement[1] -
-                          centroid[1] * body.displacement[0]);
-          const double inertia =
-            body.radius - body.area * centroid.norm_square();
-          motion.rotation   = inertia > 0. ? moment / inertia : 0.;
-          motions[material] = motion;
-        }
-      return motions;
-    }
-  } // namespace Fem
-} // namespace FloorBlock
+    std::map<dealii::types::material_id, RigidMotion<dim>> motions;
+    for (const auto &[material, body] : bodies)
+      {
+        const dealii::Tensor<1, dim> centroid = body.position / body.area;
+        RigidMotion<dim>             motion;
+        motion.translation = body.displacement / body.area;
+        // About the centroid: int r x u = int x x u - c x int u, and
+        // int |r|^2 = int |x|^2 - A |c|^2.
+        const double moment =
+          body.cross - (centroid[0] * body.displacement[1] -
+                        centroid[1] * body.displacement[0]);
+        const double inertia =
+          body.radius - body.area * centroid.norm_square();
+        motion.rotation   = inertia > 0. ? moment / inertia : 0.;
+        motions[material] = motion;
+      }
+    return motions;
+  }
+} // namespace FloorBlock::Fem

@@ -7,33 +7,30 @@
 
 #include <map>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  /** @brief Best-fit rigid motion of one body. */
+  template <int dim>
+  struct RigidMotion
   {
-    /** @brief Best-fit rigid motion of one body. */
-    template <int dim>
-    struct RigidMotion
-    {
-      /** Area-weighted mean displacement of the body (m). */
-      dealii::Tensor<1, dim> translation;
-      /** Rotation about the body's centroid, counter-clockwise (rad, 2D). */
-      double rotation = 0.;
-    };
+    /** Area-weighted mean displacement of the body (m). */
+    dealii::Tensor<1, dim> translation;
+    /** Rotation about the body's centroid, counter-clockwise (rad, 2D). */
+    double rotation = 0.;
+  };
 
-    /**
-     * @brief Least-squares rigid motion of each material id, integrated over
-     * the body's area (cell quadrature): translation is the mean
-     * displacement, rotation \f$\theta = \int r \times u / \int |r|^2\f$
-     * with \f$r\f$ the position relative to the centroid (small rotations).
-     * Integrals, not sums over vertices: a graded mesh would otherwise
-     * weight its finely meshed corners more than the rest of the body.
-     * @param[in] space FE space (2D).
-     * @param[in] solution Displacement (m).
-     * @return One entry per material id present in the mesh.
-     */
-    std::map<dealii::types::material_id, RigidMotion<2>>
-    fit_rigid_motions(const FeSpace<2>                            &space,
-                      const dealii::TrilinosWrappers::MPI::Vector &solution);
-  } // namespace Fem
-} // namespace FloorBlock
+  /**
+   * @brief Least-squares rigid motion of each material id, integrated over
+   * the body's area (cell quadrature): translation is the mean
+   * displacement, rotation \f$\theta = \int r \times u / \int |r|^2\f$
+   * with \f$r\f$ the position relative to the centroid (small rotations).
+   * Integrals, not sums over vertices: a graded mesh would otherwise
+   * weight its finely meshed corners more than the rest of the body.
+   * @param[in] space FE space (2D).
+   * @param[in] solution Displacement (m).
+   * @return One entry per material id present in the mesh.
+   */
+  std::map<dealii::types::material_id, RigidMotion<2>>
+  fit_rigid_motions(const FeSpace<2>                            &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution);
+} // namespace FloorBlock::Fem

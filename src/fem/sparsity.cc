@@ -5,37 +5,34 @@
 
 #include <mpi.h>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  template <int dim>
+  void
+  make_sparsity(
+    const FeSpace<dim>                      &space,
+    const dealii::AffineConstraints<double> &constraints,
+    const std::vector<std::vector<dealii::types::global_dof_index>>
+                                              &coupled_groups,
+    dealii::TrilinosWrappers::SparsityPattern &pattern)
   {
-    template <int dim>
-    void
-    make_sparsity(
-      const FeSpace<dim>                      &space,
-      const dealii::AffineConstraints<double> &constraints,
-      const std::vector<std::vector<dealii::types::global_dof_index>>
-                                                &coupled_groups,
-      dealii::TrilinosWrappers::SparsityPattern &pattern)
-    {
-      dealii::DynamicSparsityPattern dynamic(space.locally_relevant_dofs());
-      dealii::DoFTools::make_sparsity_pattern(space.dof_handler(),
-                                              dynamic,
-                                              constraints,
-                                              false);
-      for (const auto &group : coupled_groups)
-        constraints.add_entries_local_to_global(group, dynamic, false);
-      pattern.reinit(space.locally_owned_dofs(),
-                     space.locally_owned_dofs(),
-                     dynamic,
-                     space.dof_handler().get_communicator());
-      pattern.compress();
-    }
+    dealii::DynamicSparsityPattern dynamic(space.locally_relevant_dofs());
+    dealii::DoFTools::make_sparsity_pattern(space.dof_handler(),
+                                            dynamic,
+                                            constraints,
+                                            false);
+    for (const auto &group : coupled_groups)
+      constraints.add_entries_local_to_global(group, dynamic, false);
+    pattern.reinit(space.locally_owned_dofs(),
+                   space.locally_owned_dofs(),
+                   dynamic,
+                   space.dof_handler().get_communicator());
+    pattern.compress();
+  }
 
-    template void
-    make_sparsity(const FeSpace<2> &,
-                  const dealii::AffineConstraints<double> &,
-                  const std::vector<std::vector<dealii::types::global_dof_index>> &,
-                  dealii::TrilinosWrappers::SparsityPattern &);
-  } // namespace Fem
-} // namespace FloorBlock
+  template void
+  make_sparsity(const FeSpace<2> &,
+                const dealii::AffineConstraints<double> &,
+                const std::vector<std::vector<dealii::types::global_dof_index>> &,
+                dealii::TrilinosWrappers::SparsityPattern &);
+} // namespace FloorBlock::Fem

@@ -11,145 +11,142 @@
 #include <iomanip>
 #include <sstream>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
+  namespace
   {
-    namespace
+    /** Value of the contact_state field away from contact nodes. */
+    constexpr double no_contact_node = -1.;
+
+    /** Stress fields evaluated from the displacement gradient per cell. */
+    class StressPostprocessor : public dealii::DataPostprocessor<2>
     {
-      /** Value of the contact_state field away from contact nodes. */
-      constexpr double no_contact_node = -1.;
+    public:
+      explicit StressPostprocessor(const ElasticModel<2> &model)
+        : model(model)
+      {}
 
-      /** Stress fields evaluated from the displacement gradient per cell. */
-      class StressPostprocessor : public dealii::DataPostprocessor<2>
+      void
+      evaluate_vector_field(
+        const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<dealii::Vector<double>> &computed) const override
       {
-      public:
-        explicit StressPostprocessor(const ElasticModel<2> &model)
-          : model(model)
-        {}
-
-        void
-        evaluate_vector_field(
-          const dealii::DataPostprocessorInputs::Vector<2> &inputs,
-          std::vector<dealii::Vector<double>> &computed) const override
-        {
-          const auto cell = inputs.template get_cell<2>();
-          const Material::ElasticLaw<2> &law =
-            model.laws.at(cell->material_id());
-          for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-            {
-              dealii::Tensor<2, 2> gradient;
-              for (unsigned int c = 0; c < 2; ++c)
-                gradient[c] = inputs.solution_gradients[q][c];
-              const dealii::SymmetricTensor<2, 2> strain =
-                dealii::symmetrize(gradient);
-              const dealii::SymmetricTensor<2, 2> stress = law.stress(strain);
-              const double out_of_plane = law.out_of_plane_stress(strain);
-              const double centre = (stress[0][0] + stress[1][1]) / 2.;
-              const double radius = std::sqrt(
-                std::pow((stress[0][0] - stress[1][1]) / 2., 2) +
-                stress[0][1] * stress[0][1]);
-              const double principal_max = centre + radius;
-              const double principal_min = centre - radius;
-              // von Mises of the full 3D plane-strain stress state.
-              const double von_mises = std::sqrt(
-                0.5 * (std::pow(principal_max - principal_min, 2) +
-                       std::pow(principal_min - out_of_plane, 2) +
-                       std::pow(out_of_plane - principal_max, 2)));
-              computed[q](0) = stress[0][0];
-              computed[q](1) = stress[1][1];
-              computed[q](2) = stress[0][1];
-              computed[q](3) = out_of_plane;
-              computed[q](4) = von_mises;
-              computed[q](5) = principal_max;
-              computed[q](6) = principal_min;
-            }
-        }
-
-        std::vector<std::string>
-        get_names() const override
-        {
-          return {"stress_xx",
-                  "stress_yy",
-                  "stress_xy",
-                  "stress_zz",
-                  "von_mises",
-                  "principal_stress_max",
-                  "principal_stress_min"};
-        }
-
-        dealii::UpdateFlags
-        get_needed_update_flags() const override
-        {
-          return dealii::update_gradients;
-        }
-
-      private:
-        const ElasticModel<2> &model;
-      };
-    } // namespace
-
-    void
-    write_vtu_increment(const FeSpace<2>                            &space,
-                        const ElasticModel<2>                       &model,
-                        const dealii::TrilinosWrappers::MPI::Vector &solution,
-                        const std::vector<dealii::types::global_dof_index> &state_dofs,
-                        const std::vector<double>                   &states,
-                        const std::string                           &directory,
-                        std::vector<std::pair<double, std::string>> &records)
-    {
-      std::filesystem::create_directories(directory);
-      const auto &dof_handler = space.dof_handler();
-      dealii::Vector<double> displacement(solution.size());
-      for (unsigned int i = 0; i < displacement.size(); ++i)
-        displacement(i) = solution(i);
-      dealii::Vector<double> contact_state(dof_handler.n_dofs());
-      contact_state = no_contact_node;
-      for (unsigned int p = 0; p < state_dofs.size(); ++p)
-        contact_state(state_dofs[p]) = states[p];
-      dealii::Vector<float> material(
-        dof_handler.get_triangulation().n_active_cells());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        material(cell->active_cell_index()) = cell->material_id();
-
-      dealii::DataOut<2> data_out;
-      data_out.attach_dof_handler(dof_handler);
-      const std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
-        vector_kind(2,
-                    dealii::DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(displacement,
-                               std::vector<std::string>(2, "displacement"),
-                               dealii::DataOut<2>::type_dof_data,
-                               vector_kind);
-      data_out.add_data_vector(contact_state,
-                               std::vector<std::string>{"contact_state",
-                                                        "contact_state_unused"});
-      const StressPostprocessor stress(model);
-      data_out.add_data_vector(displacement, stress);
-      data_out.add_data_vector(material, "material_id");
-      data_out.build_patches(space.mapping(), space.degree());
-      // deal.II defaults to best_compression, which took a quarter of the
-      // default scene's run time in zlib; best_speed files are about 10 %
-      // larger and written several times faster.
-      dealii::DataOutBase::VtkFlags flags;
-      flags.compression_level =
-        dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
-      data_out.set_flags(flags);
-
-      std::ostringstream name;
-      name << "solution-" << std::setw(4) << std::setfill('0') << records.size()
-           << ".vtu";
-      const std::string path = directory + "/" + name.str();
-      const std::string temporary = temporary_name_for(path);
-      {
-        std::ofstream file(temporary);
-        data_out.write_vtu(file);
+        const auto cell = inputs.template get_cell<2>();
+        const Material::ElasticLaw<2> &law =
+          model.laws.at(cell->material_id());
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            dealii::Tensor<2, 2> gradient;
+            for (unsigned int c = 0; c < 2; ++c)
+              gradient[c] = inputs.solution_gradients[q][c];
+            const dealii::SymmetricTensor<2, 2> strain =
+              dealii::symmetrize(gradient);
+            const dealii::SymmetricTensor<2, 2> stress = law.stress(strain);
+            const double out_of_plane = law.out_of_plane_stress(strain);
+            const double centre = (stress[0][0] + stress[1][1]) / 2.;
+            const double radius = std::sqrt(
+              std::pow((stress[0][0] - stress[1][1]) / 2., 2) +
+              stress[0][1] * stress[0][1]);
+            const double principal_max = centre + radius;
+            const double principal_min = centre - radius;
+            // von Mises of the full 3D plane-strain stress state.
+            const double von_mises = std::sqrt(
+              0.5 * (std::pow(principal_max - principal_min, 2) +
+                     std::pow(principal_min - out_of_plane, 2) +
+                     std::pow(out_of_plane - principal_max, 2)));
+            computed[q](0) = stress[0][0];
+            computed[q](1) = stress[1][1];
+            computed[q](2) = stress[0][1];
+            computed[q](3) = out_of_plane;
+            computed[q](4) = von_mises;
+            computed[q](5) = principal_max;
+            computed[q](6) = principal_min;
+          }
       }
-      commit_temporary_file(temporary, path);
-      records.emplace_back(static_cast<double>(records.size()), name.str());
-      std::ostringstream pvd;
-      dealii::DataOutBase::write_pvd_record(pvd, records);
-      write_file_atomically(directory + "/solution.pvd", pvd.str());
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"stress_xx",
+                "stress_yy",
+                "stress_xy",
+                "stress_zz",
+                "von_mises",
+                "principal_stress_max",
+                "principal_stress_min"};
+      }
+
+      dealii::UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return dealii::update_gradients;
+      }
+
+    private:
+      const ElasticModel<2> &model;
+    };
+  } // namespace
+
+  void
+  write_vtu_increment(const FeSpace<2>                            &space,
+                      const ElasticModel<2>                       &model,
+                      const dealii::TrilinosWrappers::MPI::Vector &solution,
+                      const std::vector<dealii::types::global_dof_index> &state_dofs,
+                      const std::vector<double>                   &states,
+                      const std::string                           &directory,
+                      std::vector<std::pair<double, std::string>> &records)
+  {
+    std::filesystem::create_directories(directory);
+    const auto &dof_handler = space.dof_handler();
+    dealii::Vector<double> displacement(solution.size());
+    for (unsigned int i = 0; i < displacement.size(); ++i)
+      displacement(i) = solution(i);
+    dealii::Vector<double> contact_state(dof_handler.n_dofs());
+    contact_state = no_contact_node;
+    for (unsigned int p = 0; p < state_dofs.size(); ++p)
+      contact_state(state_dofs[p]) = states[p];
+    dealii::Vector<float> material(
+      dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      material(cell->active_cell_index()) = cell->material_id();
+
+    dealii::DataOut<2> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
+      vector_kind(2,
+                  dealii::DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(displacement,
+                             std::vector<std::string>(2, "displacement"),
+                             dealii::DataOut<2>::type_dof_data,
+                             vector_kind);
+    data_out.add_data_vector(contact_state,
+                             std::vector<std::string>{"contact_state",
+                                                      "contact_state_unused"});
+    const StressPostprocessor stress(model);
+    data_out.add_data_vector(displacement, stress);
+    data_out.add_data_vector(material, "material_id");
+    data_out.build_patches(space.mapping(), space.degree());
+    // deal.II defaults to best_compression, which took a quarter of the
+    // default scene's run time in zlib; best_speed files are about 10 %
+    // larger and written several times faster.
+    dealii::DataOutBase::VtkFlags flags;
+    flags.compression_level =
+      dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
+    data_out.set_flags(flags);
+
+    std::ostringstream name;
+    name << "solution-" << std::setw(4) << std::setfill('0') << records.size()
+         << ".vtu";
+    const std::string path = directory + "/" + name.str();
+    const std::string temporary = temporary_name_for(path);
+    {
+      std::ofstream file(temporary);
+      data_out.write_vtu(file);
     }
-  } // namespace Fem
-} // namespace FloorBlock
+    commit_temporary_file(temporary, path);
+    records.emplace_back(static_cast<double>(records.size()), name.str());
+    std::ostringstream pvd;
+    dealii::DataOutBase::write_pvd_record(pvd, records);
+    write_file_atomically(directory + "/solution.pvd", pvd.str());
+  }
+} // namespace FloorBlock::Fem

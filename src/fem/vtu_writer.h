@@ -9,34 +9,31 @@
 #include <utility>
 #include <vector>
 
-namespace FloorBlock
+namespace FloorBlock::Fem
 {
-  namespace Fem
-  {
-    /**
-     * @brief Writes one increment as `<directory>/solution-NNNN.vtu` and
-     * rewrites `<directory>/solution.pvd` listing all increments so far.
-     *
-     * Fields: displacement (m), stress components incl. the plane-strain
-     * out-of-plane stress (Pa), von Mises stress (Pa), in-plane principal
-     * stresses (Pa), material id, and a nodal debug field contact_state
-     * (-1 no contact node, 0 open, 1 stick, 2 slip).
-     *
-     * @param[in] space FE space.
-     * @param[in] model Elastic laws per material id.
-     * @param[in] solution Displacement (m).
-     * @param[in] state_dofs x-DoF of each contact node.
-     * @param[in] states State value of each contact node.
-     * @param[in] directory Output folder (created if missing).
-     * @param[in,out] records (index, file name) of the increments written.
-     */
-    void
-    write_vtu_increment(const FeSpace<2>                            &space,
-                        const ElasticModel<2>                       &model,
-                        const dealii::TrilinosWrappers::MPI::Vector &solution,
-                        const std::vector<dealii::types::global_dof_index> &state_dofs,
-                        const std::vector<double>                   &states,
-                        const std::string                           &directory,
-                        std::vector<std::pair<double, std::string>> &records);
-  } // namespace Fem
-} // namespace FloorBlock
+  /**
+   * @brief Writes one increment as `<directory>/solution-NNNN.vtu` and
+   * rewrites `<directory>/solution.pvd` listing all increments so far.
+   *
+   * Fields: displacement (m), stress components incl. the plane-strain
+   * out-of-plane stress (Pa), von Mises stress (Pa), in-plane principal
+   * stresses (Pa), material id, and a nodal debug field contact_state
+   * (-1 no contact node, 0 open, 1 stick, 2 slip).
+   *
+   * @param[in] space FE space.
+   * @param[in] model Elastic laws per material id.
+   * @param[in] solution Displacement (m).
+   * @param[in] state_dofs x-DoF of each contact node.
+   * @param[in] states State value of each contact node.
+   * @param[in] directory Output folder (created if missing).
+   * @param[in,out] records (index, file name) of the increments written.
+   */
+  void
+  write_vtu_increment(const FeSpace<2>                            &space,
+                      const ElasticModel<2>                       &model,
+                      const dealii::TrilinosWrappers::MPI::Vector &solution,
+                      const std::vector<dealii::types::global_dof_index> &state_dofs,
+                      const std::vector<double>                   &states,
+                      const std::string                           &directory,
+                      std::vector<std::pair<double, std::string>> &records);
+} // namespace FloorBlock::Fem

@@ -58,7 +58,7 @@ namespace FloorBlock::Output
       "iterations, {} cutbacks, {}.\n\n",
       scene.scene_name, numbering_note, scene.geometry.n_blocks,
       scene.geometry.block_width, scene.geometry.block_height,
-      scene.bedding.shape == Parameters::BeddingShape::planar ?
+      scene.bedding.shape == Geometry::BeddingShape::planar ?
         fmt::format("planar {:.1f} deg",
                     Units::radians_to_degrees(scene.bedding.inclination)) :
         fmt::format("y = x^2/{}", scene.bedding.curvature),
@@ -68,7 +68,7 @@ namespace FloorBlock::Output
       fmt::join(scene.loading.loaded_blocks_from_face, ","),
       scene.geometry.support_width, scene.loading.floor_lift,
       report.converged() ? "reached" : "not reached",
-      scene.joints.law == Parameters::JointLaw::rigid ? "rigid" : "compliant",
+      scene.joints.law == Contact::JointLawKind::rigid ? "rigid" : "compliant",
       report.model, report.model_choice, report.status, report.status_text,
       result.n_dofs, result.increments.size(), report.n_newton_iterations,
       report.n_cutbacks, force_balance_text(report.force_balance));

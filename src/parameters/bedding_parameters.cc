@@ -53,11 +53,11 @@ namespace FloorBlock::Parameters
   BeddingParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Bedding");
-    shape = prm.get("Shape") == "planar" ? BeddingShape::planar :
-                                           BeddingShape::parabolic;
-    uplift_reading = prm.get("Floor uplift reading") == "lifted" ?
-                       FloorUpliftReading::lifted :
-                       FloorUpliftReading::inclined;
+    shape = prm.get("Shape") == "planar" ? Geometry::BeddingShape::planar :
+                                           Geometry::BeddingShape::parabolic;
+    floor_uplift = prm.get("Floor uplift reading") == "lifted" ?
+                     Geometry::FloorUplift::lifted_flat_bedding :
+                     Geometry::FloorUplift::inclined_bedding;
     inclination = Units::degrees_to_radians(prm.get_double("Inclination"));
     curvature   = prm.get_double("Curvature");
     rigid_base  = prm.get("Base") == "rigid";

@@ -55,7 +55,8 @@ namespace FloorBlock::Parameters
     tensile_strength = prm.get_double("Tensile strength");
     normal_stiffness = prm.get_double("Normal stiffness");
     shear_stiffness  = prm.get_double("Shear stiffness");
-    law = prm.get("Law") == "rigid" ? JointLaw::rigid : JointLaw::compliant;
+    law = prm.get("Law") == "rigid" ? Contact::JointLawKind::rigid :
+                                      Contact::JointLawKind::compliant;
     prm.leave_subsection();
   }
 } // namespace FloorBlock::Parameters

@@ -20,7 +20,7 @@ namespace FloorBlock::Parameters
                            const JointParameters &  joints,
                            const LoadingParameters &loading)
     {
-      if (joints.law == JointLaw::rigid)
+      if (joints.law == Contact::JointLawKind::rigid)
         return "Joints/Law = rigid: rigid blocks stand on the joint "
                "springs kn, ks of the compliant law";
       if (bedding.rigid_base)
@@ -30,8 +30,9 @@ namespace FloorBlock::Parameters
         return "Bedding/Frame dip > 0: the rigid model's gravity is "
                "vertical in its frame";
       const bool level_top =
-        bedding.uplift_reading == FloorUpliftReading::lifted ||
-        (bedding.shape == BeddingShape::planar && bedding.inclination == 0.);
+        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
+        (bedding.shape == Geometry::BeddingShape::planar &&
+         bedding.inclination == 0.);
       if (loading.support_load_direction ==
             SupportLoadDirection::top_normal &&
           !level_top)

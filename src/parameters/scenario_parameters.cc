@@ -49,8 +49,8 @@ namespace FloorBlock::Parameters
 
     // The rigid half-plane is the plane y = 0 of the mesh.
     const bool flat_bedding =
-      bedding.uplift_reading == FloorUpliftReading::lifted ||
-      (bedding.shape == BeddingShape::planar && bedding.inclination == 0.);
+      bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
+      (bedding.shape == Geometry::BeddingShape::planar && bedding.inclination == 0.);
     if (bedding.rigid_base && !flat_bedding)
       throw InputError("Bedding/Base", "rigid",
                        "needs a flat bedding in the mesh: Bedding/Floor "

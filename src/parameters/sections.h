@@ -1,5 +1,9 @@
 #pragma once
 
+#include <contact/joint_law_kind.h>
+#include <geometry/bedding_kinds.h>
+#include <solver/solver_kinds.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -31,24 +35,11 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  enum class BeddingShape
-  {
-    planar,
-    parabolic
-  };
-
-  /** The chapter's two readings of "floor uplift" (src/geometry/README.md). */
-  enum class FloorUpliftReading
-  {
-    inclined, ///< the bedding is already inclined; blocks stand on the profile
-    lifted    ///< a flat bedding is lifted with the profile by the FEM
-  };
-
   /** Subsection "Bedding": the failed bedding plane the blocks slide on. */
   struct BeddingParameters
   {
-    BeddingShape shape;
-    FloorUpliftReading uplift_reading;
+    Geometry::BeddingShape shape;
+    Geometry::FloorUplift floor_uplift;
     double       inclination; ///< rad, planar; positive when rising away from the face
     double       curvature;   ///< k (m) in y = x^2/k, parabolic
     bool         rigid_base;  ///< rigid half-plane instead of the elastic base
@@ -80,12 +71,6 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
-  enum class JointLaw
-  {
-    compliant,
-    rigid
-  };
-
   /** Subsection "Joints": vertical fractures and the bedding plane. */
   struct JointParameters
   {
@@ -95,7 +80,7 @@ namespace FloorBlock::Parameters
     double   tensile_strength;        ///< Pa
     double   normal_stiffness;        ///< kn (Pa/m)
     double   shear_stiffness;         ///< ks (Pa/m)
-    JointLaw law;
+    Contact::JointLawKind law;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -152,20 +137,6 @@ namespace FloorBlock::Parameters
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
-  enum class LinearSolverChoice
-  {
-    automatic,
-    direct,
-    iterative
-  };
-
-  enum class DirectSolverChoice
-  {
-    automatic,
-    klu,
-    umfpack
-  };
-
   /** Subsection "Solver": the contact FEM's numerics. */
   struct SolverParameters
   {
@@ -174,10 +145,10 @@ namespace FloorBlock::Parameters
     bool               gravity_with_support_load;
     unsigned int       n_support_steps;
     unsigned int       n_uplift_steps;
-    LinearSolverChoice linear_solver;
+    Solver::LinearSolverKind linear_solver;
     unsigned int       max_direct_dofs;
     unsigned int       max_reuse_iterations; ///< GMRES on stored LU factors
-    DirectSolverChoice direct_solver;
+    Solver::DirectSolverKind direct_solver;
     double             newton_tolerance; ///< relative to the load norm
     unsigned int       max_newton_iterations;
     unsigned int       max_cutbacks;

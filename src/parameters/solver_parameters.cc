@@ -92,15 +92,15 @@ namespace FloorBlock::Parameters
     n_support_steps = prm.get_integer("Support load steps");
     n_uplift_steps  = prm.get_integer("Uplift steps");
     const std::string solver = prm.get("Linear solver");
-    linear_solver = solver == "direct"    ? LinearSolverChoice::direct :
-                    solver == "iterative" ? LinearSolverChoice::iterative :
-                                            LinearSolverChoice::automatic;
+    linear_solver = solver == "direct"    ? Solver::LinearSolverKind::direct :
+                    solver == "iterative" ? Solver::LinearSolverKind::iterative :
+                                            Solver::LinearSolverKind::automatic;
     max_direct_dofs       = prm.get_integer("Max direct DoFs");
     max_reuse_iterations  = prm.get_integer("Factorization reuse iterations");
     const std::string lu  = prm.get("Direct solver");
-    direct_solver = lu == "KLU"     ? DirectSolverChoice::klu :
-                    lu == "UMFPACK" ? DirectSolverChoice::umfpack :
-                                      DirectSolverChoice::automatic;
+    direct_solver = lu == "KLU"     ? Solver::DirectSolverKind::klu :
+                    lu == "UMFPACK" ? Solver::DirectSolverKind::umfpack :
+                                      Solver::DirectSolverKind::automatic;
     newton_tolerance      = prm.get_double("Newton tolerance");
     max_newton_iterations = prm.get_integer("Max Newton iterations");
     max_cutbacks          = prm.get_integer("Max cutbacks");

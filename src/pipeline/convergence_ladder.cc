@@ -8,7 +8,7 @@
 #include <geometry/refinement_manifolds.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_out.h>
@@ -309,7 +309,7 @@ namespace FloorBlock::Pipeline
     {
       std::vector<Convergence::JointSides> sides;
       for (const auto &joint :
-           Scene::make_floor_scene(Scene::floor_scene_settings(scene)).joints)
+           Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)).joints)
         if (!joint.against_rigid_plane)
           sides.push_back({joint.side_a, joint.side_b});
       return sides;

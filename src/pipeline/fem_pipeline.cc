@@ -8,7 +8,7 @@
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/grid/tria.h>
@@ -112,7 +112,7 @@ namespace FloorBlock::Pipeline
     outcome.mesh = mesh;
     Contact::ContactSolver solver(
       triangulation,
-      Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
+      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
       Scene::contact_solver_settings(scene,
                                      write_vtu ? folder.path_of("vtu") : ""));
     std::string status_text = "every loading increment converged";
@@ -152,51 +152,5 @@ namespace FloorBlock::Pipeline
                       Output::fem_json(outcome.result, outcome.report));
     folder.write("joints.csv", Output::joints_csv(
                                  outcome.result, outcome.report.support_width));
-  }
-
-  std::string
-  fem_summary_text(const FemOutcome &outcome)
-  {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
-    const Output::FemReport &report = outcome.report;
-    const bool               meshed = report.mesh.has_value();
-    // A failed solve keeps only its last converged increment (fem.json
-    // "failure"): say so instead of passing it off as the whole run.
-    const std::string increments =
-      report.failure ?
-        fmt::format("{} converged increment(s) kept with {} Newton "
-                    "iterations (failed attempts not counted), {} cutbacks",
-                    outcome.result.increments.size(),
-                    report.n_newton_iterations, report.n_cutbacks) :
-        fmt::format("{} increments, {} Newton iterations, {} cutbacks",
-                    outcome.result.increments.size(),
-                    report.n_newton_iterations, report.n_cutbacks);
-    std::string text = fmt::format(
-      "{}: {} ({}), {}{} DoFs, {}, {}\n", report.model, report.status,
-      report.status_text,
-      meshed ? fmt::format("{} cells, ", outcome.mesh.n_cells) : "",
-      outcome.result.n_dofs, increments,
-      Output::force_balance_text(report.force_balance));
-    text += fmt::format("  {:<12} {:>12} {:>14} {:>12} {:>14} {:>10}\n",
-                        "joint", "N (kN/m)", "contact (mm)",
-                        "peak (MPa)", "averaged (MPa)", "state");
-    if (!outcome.result.increments.empty())
-      for (const auto &joint : outcome.result.increments.back().joints)
-        text += fmt::format(
-          "  {:<12} {:>12.1f} {:>14.1f} {:>12.2f} {:>14.2f} {:>10}\n",
-          joint.name, joint.normal_force / kN, joint.closed_length * 1e3,
-          joint.peak_normal_stress / MPa,
-          joint.averaged_peak_normal_stress / MPa,
-          Output::state_summary(joint.counts));
-    std::string times =
-      meshed ? fmt::format("mesh {:.3f} s", outcome.mesh.wall_time) : "";
-    for (const auto &[section, seconds] : outcome.result.wall_times)
-      times += fmt::format("{}{} {:.3f} s", times.empty() ? "" : ", ",
-                           section, seconds);
-    text += "  " + times + "\n";
-    if (report.joint_overlap && report.joint_overlap->large)
-      text += "  warning: " + report.joint_overlap->text + "\n";
-    return text;
   }
 } // namespace FloorBlock::Pipeline

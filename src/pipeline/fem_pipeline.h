@@ -83,8 +83,4 @@ namespace FloorBlock::Pipeline
   /** @brief fem.json and joints.csv of a solve, into @p folder. */
   void
   write_fem_files(const FemOutcome &outcome, const Output::ResultFolder &folder);
-
-  /** @brief Terminal summary: one line per joint, the state, and times. */
-  std::string
-  fem_summary_text(const FemOutcome &outcome);
 } // namespace FloorBlock::Pipeline

@@ -11,7 +11,7 @@ namespace FloorBlock::Pipeline
   namespace
   {
     std::string
-    failure_text(const RigidBlocks::SolveResult &result)
+    failure_text(const RigidBlocks::RigidSolveResult &result)
     {
       std::string text = RigidBlocks::to_string(result.status) + ": " +
                          result.message;
@@ -28,7 +28,7 @@ namespace FloorBlock::Pipeline
                     const Output::ResultFolder &          folder)
   {
     const RigidBlocks::Model model(Scene::rigid_model_description(scene));
-    const RigidBlocks::SolveResult rigid = model.solve();
+    const RigidBlocks::RigidSolveResult rigid = model.solve();
 
     FemOutcome outcome;
     outcome.converged = rigid.status == RigidBlocks::SolveStatus::converged;

@@ -58,7 +58,7 @@ namespace FloorBlock::Pipeline
       settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
       settings.poissons_ratio = scene.verify.hertz_poissons_ratio;
       settings.mesh_level     = scene.verify.hertz_mesh_level;
-      settings.law                 = Scene::joint_law_kind(scene);
+      settings.law                 = scene.joints.law;
       settings.compliant_stiffness = scene.joints.normal_stiffness;
       settings.fe_degree           = scene.solver.fe_degree;
 
@@ -80,7 +80,7 @@ namespace FloorBlock::Pipeline
     {
       Verification::PatchSettings settings;
       settings.pressure  = scene.verify.patch_pressure;
-      settings.law       = Scene::joint_law_kind(scene);
+      settings.law       = scene.joints.law;
       settings.fe_degree = scene.solver.fe_degree;
       const Verification::PatchResult result =
         Verification::run_patch_verification(settings);
@@ -121,7 +121,7 @@ namespace FloorBlock::Pipeline
                          "> 0 deg for verify incline");
       settings.normal_stiffness = scene.joints.normal_stiffness;
       settings.shear_stiffness  = scene.joints.shear_stiffness;
-      settings.law              = Scene::joint_law_kind(scene);
+      settings.law              = scene.joints.law;
       const double friction = std::tan(settings.friction_angle);
       const double margin   = scene.verify.incline_margin;
       settings.incline = std::atan((1. - margin) * friction);
@@ -157,7 +157,7 @@ namespace FloorBlock::Pipeline
     {
       Verification::TwoBlocksSettings settings;
       settings.cells_per_metre  = scene.verify.two_blocks_cells_per_metre;
-      settings.law              = Scene::joint_law_kind(scene);
+      settings.law              = scene.joints.law;
       settings.joint_stiffness  = scene.joints.normal_stiffness;
       settings.lateral_pressure = scene.verify.two_blocks_lateral_pressure;
       const Verification::TwoBlocksResult result =

@@ -20,7 +20,7 @@ namespace FloorBlock::RigidBlocks
     }
 
     Contact::JointReport
-    contact_joint(const JointReport   &joint,
+    contact_joint(const RigidJointReport   &joint,
                   const JointGeometry &geometry,
                   const double         averaging_length)
     {
@@ -136,7 +136,7 @@ namespace FloorBlock::RigidBlocks
   } // namespace
 
   Contact::SolveResult
-  to_contact_result(const SolveResult &rigid,
+  to_contact_result(const RigidSolveResult &rigid,
                     const Model       &model,
                     const double       averaging_length)
   {

@@ -43,7 +43,7 @@ namespace FloorBlock::RigidBlocks
    * @param[in] averaging_length Window of the averaged peak (m).
    */
   Contact::SolveResult
-  to_contact_result(const SolveResult &rigid,
+  to_contact_result(const RigidSolveResult &rigid,
                     const Model       &model,
                     const double       averaging_length);
 } // namespace FloorBlock::RigidBlocks

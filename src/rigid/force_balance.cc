@@ -10,7 +10,7 @@ namespace FloorBlock::RigidBlocks
 {
   double
   relative_imbalance(const JointSet                 &joint_set,
-                     const std::vector<JointReport> &reports,
+                     const std::vector<RigidJointReport> &reports,
                      const std::vector<BlockLoads>  &loads,
                      const double                    gravity_factor,
                      const double                    support_factor,

@@ -10,7 +10,7 @@ namespace FloorBlock::RigidBlocks
 {
   /**
    * @brief Largest relative imbalance of a block, recomputed from the joint
-   * resultants (JointReport::force_on_side_b, moment_on_side_b) and the
+   * resultants (RigidJointReport::force_on_side_b, moment_on_side_b) and the
    * applied loads, independently of the Newton residual.
    *
    * For every block: applied force + contact forces of its joints (as side
@@ -23,7 +23,7 @@ namespace FloorBlock::RigidBlocks
    */
   double
   relative_imbalance(const JointSet                 &joint_set,
-                     const std::vector<JointReport> &reports,
+                     const std::vector<RigidJointReport> &reports,
                      const std::vector<BlockLoads>  &loads,
                      const double                    gravity_factor,
                      const double                    support_factor,

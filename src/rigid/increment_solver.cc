@@ -89,7 +89,7 @@ namespace FloorBlock::RigidBlocks
       const std::vector<JointGeometry> &joints = joint_set.joints();
       for (unsigned int j = 0; j < joints.size(); ++j)
         {
-          const Contact::JointParameters &constants =
+          const Contact::JointConstants &constants =
             joint_set.law(joints[j]).parameters();
           const double friction = std::tan(constants.friction_angle);
           for (unsigned int p = 0; p < responses[j].size(); ++p)

@@ -6,7 +6,7 @@ namespace FloorBlock::RigidBlocks
   namespace
   {
     /**
-     * Shear traction in the chapter's sense (see JointReport::shear_force).
+     * Shear traction in the chapter's sense (see RigidJointReport::shear_force).
      * The law's tangential traction t_t is the tangential force per length
      * on side A (B receives -t_t). Vertical joint: A is block j, the
      * chapter counts the downward force on it, -t_t.e_y. Bedding: B is
@@ -45,12 +45,12 @@ namespace FloorBlock::RigidBlocks
       return inside > outside ? length * inside / (inside - outside) : 0.;
     }
 
-    JointReport
+    RigidJointReport
     report_joint(const JointGeometry                          &joint,
                  const std::vector<Contact::JointResponse<2>> &responses,
                  const bool                                    with_profile)
     {
-      JointReport report;
+      RigidJointReport report;
       report.name   = joint.name;
       report.kind   = joint.kind;
       report.number = joint.number;
@@ -96,12 +96,12 @@ namespace FloorBlock::RigidBlocks
     }
   } // namespace
 
-  std::vector<JointReport>
+  std::vector<RigidJointReport>
   make_joint_reports(const JointSet       &joint_set,
                      const JointResponses &responses,
                      const bool            with_profiles)
   {
-    std::vector<JointReport> reports;
+    std::vector<RigidJointReport> reports;
     for (unsigned int j = 0; j < joint_set.joints().size(); ++j)
       reports.push_back(
         report_joint(joint_set.joints()[j], responses[j], with_profiles));

@@ -12,7 +12,7 @@ namespace FloorBlock::RigidBlocks
    * length, peak and mean traction, state counts and resultants.
    * @param[in] with_profiles Also keep the point values.
    */
-  std::vector<JointReport>
+  std::vector<RigidJointReport>
   make_joint_reports(const JointSet       &joint_set,
                      const JointResponses &responses,
                      const bool            with_profiles);

@@ -61,7 +61,7 @@ namespace FloorBlock::RigidBlocks
       JointHistories           histories;
       /** Uplift factor of the committed state (-). */
       double      uplift = 0.;
-      SolveResult result;
+      RigidSolveResult result;
     };
   } // namespace
 
@@ -83,7 +83,7 @@ namespace FloorBlock::RigidBlocks
     return block_load_list;
   }
 
-  std::vector<JointReport>
+  std::vector<RigidJointReport>
   Model::evaluate_prescribed(const std::vector<BlockMotion> &motions,
                              const double                    uplift_factor) const
   {
@@ -92,7 +92,7 @@ namespace FloorBlock::RigidBlocks
     return make_joint_reports(joints, responses, true);
   }
 
-  SolveResult
+  RigidSolveResult
   Model::solve() const
   {
     const auto start = std::chrono::steady_clock::now();
@@ -168,7 +168,7 @@ namespace FloorBlock::RigidBlocks
                 // drop the previous.
                 if (!settings.profiles_of_every_increment &&
                     !path.result.increments.empty())
-                  for (JointReport &joint : path.result.increments.back().joints)
+                  for (RigidJointReport &joint : path.result.increments.back().joints)
                     joint.profile.clear();
                 path.result.increments.push_back(std::move(increment));
                 continue;

@@ -37,7 +37,7 @@ namespace FloorBlock::RigidBlocks
      * on failure the increments reached so far, a status and a message
      * (never NaN/inf values).
      */
-    SolveResult
+    RigidSolveResult
     solve() const;
 
     /**
@@ -47,7 +47,7 @@ namespace FloorBlock::RigidBlocks
      * @param[in] motions One motion per block, index i - 1.
      * @param[in] uplift_factor Fraction of the prescribed base uplift (-).
      */
-    std::vector<JointReport>
+    std::vector<RigidJointReport>
     evaluate_prescribed(const std::vector<BlockMotion> &motions,
                         const double                    uplift_factor) const;
 

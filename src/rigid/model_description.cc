@@ -26,7 +26,7 @@ namespace FloorBlock::RigidBlocks
 
     /** Joint constants: kn, ks > 0 (a rigid body needs springs), phi in [0, 90 deg). */
     void
-    validate_joint(const Contact::JointParameters &joint,
+    validate_joint(const Contact::JointConstants &joint,
                    const std::string              &section)
     {
       require(std::isfinite(joint.normal_stiffness) &&

@@ -2,7 +2,7 @@
 
 #include <contact/joint_law.h>
 #include <contact/newton_driver.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <geometry/assembly_description.h>
 
 #include <vector>
@@ -90,9 +90,9 @@ namespace FloorBlock::RigidBlocks
      */
     double support_load_position = 0.5;
     /** kn, ks, friction angle phi_h, cohesion, tension of the bedding. */
-    Contact::JointParameters bedding_joint;
+    Contact::JointConstants bedding_joint;
     /** kn, ks, friction angle phi_v, cohesion, tension of vertical joints. */
-    Contact::JointParameters vertical_joint;
+    Contact::JointConstants vertical_joint;
     /** Prescribed motion of the (rigid) base in the uplift stage. */
     Contact::UpliftSettings uplift;
     /** Increments of the gravity, support-load and uplift stages. */

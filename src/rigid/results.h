@@ -23,7 +23,7 @@ namespace FloorBlock::RigidBlocks
     dealii::Point<2> position;
     /** Normal traction, compression positive (Pa). */
     double normal_traction = 0.;
-    /** Shear traction in the sense of JointReport::shear_force (Pa). */
+    /** Shear traction in the sense of RigidJointReport::shear_force (Pa). */
     double shear_traction = 0.;
     /** Normal gap, negative in overlap (m). */
     double gap = 0.;
@@ -34,7 +34,7 @@ namespace FloorBlock::RigidBlocks
    * @brief Integrated state of one joint (chapter numbering), per metre of
    * face.
    */
-  struct JointReport
+  struct RigidJointReport
   {
     std::string  name;
     JointKind    kind   = JointKind::vertical;
@@ -82,7 +82,7 @@ namespace FloorBlock::RigidBlocks
     double relative_residual = 0.;
     Contact::StateCounts counts;
     /** Joints: vertical 1..n, then bedding 1..n. */
-    std::vector<JointReport> joints;
+    std::vector<RigidJointReport> joints;
     /** Block motions, index i - 1. */
     std::vector<BlockMotion> motions;
     /**
@@ -115,7 +115,7 @@ namespace FloorBlock::RigidBlocks
   to_string(const SolveStatus status);
 
   /** @brief Everything a solve produced. */
-  struct SolveResult
+  struct RigidSolveResult
   {
     SolveStatus status = SolveStatus::converged;
     /** Why the solve stopped early; empty when converged. */

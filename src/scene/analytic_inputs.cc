@@ -28,7 +28,7 @@ namespace FloorBlock::Scene
     for (const unsigned int block : loaded)
       chain.support_load[block - 1] = load_per_loaded_block;
 
-    if (scene.bedding.shape == Parameters::BeddingShape::parabolic)
+    if (scene.bedding.shape == Geometry::BeddingShape::parabolic)
       chain.inclination = Analytic::parabolic_inclinations(
         geometry.n_blocks, geometry.block_width, scene.bedding.curvature);
     return chain;

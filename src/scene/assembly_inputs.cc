@@ -12,16 +12,10 @@ namespace FloorBlock::Scene
     description.face_block_width = scene.geometry.face_block_width;
     description.base_thickness   = scene.geometry.base_thickness;
     description.rigid_base       = scene.bedding.rigid_base;
-    description.bedding_shape =
-      scene.bedding.shape == Parameters::BeddingShape::planar ?
-        Geometry::BeddingShape::planar :
-        Geometry::BeddingShape::parabolic;
+    description.bedding_shape    = scene.bedding.shape;
     description.inclination = scene.bedding.inclination;
     description.curvature   = scene.bedding.curvature;
-    description.floor_uplift =
-      scene.bedding.uplift_reading == Parameters::FloorUpliftReading::lifted ?
-        Geometry::FloorUplift::lifted_flat_bedding :
-        Geometry::FloorUplift::inclined_bedding;
+    description.floor_uplift = scene.bedding.floor_uplift;
     description.corner_rounding_radius = scene.geometry.corner_rounding_radius;
     description.mesh_corner_size       = scene.mesh.corner_size;
     description.mesh_far_size          = scene.mesh.far_size;

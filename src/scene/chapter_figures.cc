@@ -30,13 +30,13 @@ namespace FloorBlock::Scene
       const bool follows_profile =
         variant.loading.uplift_mode == Parameters::UpliftMode::parabola ||
         variant.loading.uplift_mode == Parameters::UpliftMode::slope;
-      if (variant.bedding.uplift_reading !=
-            Parameters::FloorUpliftReading::lifted ||
+      if (variant.bedding.floor_uplift !=
+            Geometry::FloorUplift::lifted_flat_bedding ||
           !follows_profile)
         return;
       const double chain_length =
         variant.geometry.n_blocks * variant.geometry.block_width;
-      if (variant.bedding.shape == Parameters::BeddingShape::parabolic)
+      if (variant.bedding.shape == Geometry::BeddingShape::parabolic)
         {
           variant.loading.uplift_mode = Parameters::UpliftMode::parabola;
           variant.loading.floor_lift =
@@ -58,8 +58,8 @@ namespace FloorBlock::Scene
              const double                          vertical_friction_degree)
     {
       variant.bedding.shape = curvature > 0 ?
-                                Parameters::BeddingShape::parabolic :
-                                Parameters::BeddingShape::planar;
+                                Geometry::BeddingShape::parabolic :
+                                Geometry::BeddingShape::planar;
       if (curvature > 0)
         variant.bedding.curvature = curvature;
       follow_figure_floor(variant);

@@ -8,11 +8,11 @@ namespace FloorBlock::Scene
 {
   namespace
   {
-    Contact::JointParameters
-    joint_parameters(const Parameters::JointParameters &joints,
+    Contact::JointConstants
+    joint_constants(const Parameters::JointParameters &joints,
                      const double                       friction_angle)
     {
-      Contact::JointParameters parameters;
+      Contact::JointConstants parameters;
       parameters.normal_stiffness = joints.normal_stiffness;
       parameters.shear_stiffness  = joints.shear_stiffness;
       parameters.friction_angle   = friction_angle;
@@ -25,7 +25,7 @@ namespace FloorBlock::Scene
     double
     bedding_chord_angle(const Parameters::ScenarioParameters &scene)
     {
-      if (scene.bedding.shape == Parameters::BeddingShape::planar)
+      if (scene.bedding.shape == Geometry::BeddingShape::planar)
         return scene.bedding.inclination;
       const double chain_length =
         scene.geometry.n_blocks * scene.geometry.block_width;
@@ -35,9 +35,9 @@ namespace FloorBlock::Scene
     double
     bedding_height(const Parameters::ScenarioParameters &scene, const double x)
     {
-      if (scene.bedding.uplift_reading == Parameters::FloorUpliftReading::lifted)
+      if (scene.bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding)
         return 0.;
-      if (scene.bedding.shape == Parameters::BeddingShape::planar)
+      if (scene.bedding.shape == Geometry::BeddingShape::planar)
         return x * std::tan(scene.bedding.inclination);
       return x * x / scene.bedding.curvature;
     }
@@ -53,31 +53,31 @@ namespace FloorBlock::Scene
       switch (scene.loading.uplift_mode)
         {
           case Parameters::UpliftMode::vertical:
-            uplift.mode = Contact::UpliftMode::vertical_translation;
+            uplift.mode = Contact::UpliftMotion::vertical_translation;
             break;
           case Parameters::UpliftMode::dip_toward_face:
-            uplift.mode      = Contact::UpliftMode::dip_translation;
+            uplift.mode      = Contact::UpliftMotion::dip_translation;
             uplift.dip_angle = bedding_chord_angle(scene) + M_PI;
             break;
           case Parameters::UpliftMode::dip_away_from_face:
-            uplift.mode      = Contact::UpliftMode::dip_translation;
+            uplift.mode      = Contact::UpliftMotion::dip_translation;
             uplift.dip_angle = bedding_chord_angle(scene);
             break;
           case Parameters::UpliftMode::tilt:
             // Clockwise about the free end: the face end (dx = -nL) rises.
-            uplift.mode      = Contact::UpliftMode::tilt;
+            uplift.mode      = Contact::UpliftMotion::tilt;
             uplift.magnitude = -std::asin(std::min(1.0, lift / chain_length));
             uplift.pivot_x   = chain_length;
             uplift.pivot_y   = bedding_height(scene, chain_length);
             break;
           case Parameters::UpliftMode::parabola:
-            uplift.mode = Contact::UpliftMode::parabola;
+            uplift.mode = Contact::UpliftMotion::parabola;
             // u_y = x^2/k reaches `lift` at x = nL; no lift, no bending.
             uplift.magnitude =
               lift > 0 ? chain_length * chain_length / lift : 0.;
             break;
           case Parameters::UpliftMode::slope:
-            uplift.mode      = Contact::UpliftMode::slope;
+            uplift.mode      = Contact::UpliftMotion::slope;
             uplift.magnitude = lift / chain_length;
             break;
         }
@@ -85,8 +85,8 @@ namespace FloorBlock::Scene
     }
   } // namespace
 
-  FloorSceneSettings
-  floor_scene_settings(const Parameters::ScenarioParameters &scene)
+  FloorProblemSettings
+  floor_problem_settings(const Parameters::ScenarioParameters &scene)
   {
     const Analytic::BlockChain     chain = block_chain(scene);
     // The pressure acts on the floor-surface id of a block, which is the
@@ -113,15 +113,15 @@ namespace FloorBlock::Scene
 
     // Aggregate initialisation in member order: the elastic law is an
     // immutable value (const members) and cannot be assigned afterwards.
-    FloorSceneSettings settings{
+    FloorProblemSettings settings{
       scene.geometry.n_blocks,
       Material::ElasticLaw<2>::from_bulk_shear(scene.material.bulk_modulus,
                                                scene.material.shear_modulus),
       scene.material.density,
       scene.loading.gravity,
-      joint_law_kind(scene),
-      joint_parameters(scene.joints, scene.joints.vertical_friction_angle),
-      joint_parameters(scene.joints, scene.joints.bedding_friction_angle),
+      scene.joints.law,
+      joint_constants(scene.joints, scene.joints.vertical_friction_angle),
+      joint_constants(scene.joints, scene.joints.bedding_friction_angle),
       support_pressures,
       scene.loading.support_load_direction ==
         Parameters::SupportLoadDirection::vertical,
@@ -138,14 +138,6 @@ namespace FloorBlock::Scene
     return settings;
   }
 
-  Contact::JointLawKind
-  joint_law_kind(const Parameters::ScenarioParameters &scene)
-  {
-    return scene.joints.law == Parameters::JointLaw::rigid ?
-             Contact::JointLawKind::rigid :
-             Contact::JointLawKind::compliant;
-  }
-
   Contact::ContactSolverSettings
   contact_solver_settings(const Parameters::ScenarioParameters &scene,
                           const std::string &                   vtu_folder)
@@ -155,20 +147,10 @@ namespace FloorBlock::Scene
     settings.fe_degree                 = solver.fe_degree;
     settings.newton.relative_tolerance = solver.newton_tolerance;
     settings.newton.max_iterations     = solver.max_newton_iterations;
-    settings.linear.kind =
-      solver.linear_solver == Parameters::LinearSolverChoice::direct ?
-        Solver::LinearSolverKind::direct :
-      solver.linear_solver == Parameters::LinearSolverChoice::iterative ?
-        Solver::LinearSolverKind::iterative :
-        Solver::LinearSolverKind::automatic;
+    settings.linear.kind            = solver.linear_solver;
     settings.linear.max_direct_dofs = solver.max_direct_dofs;
     settings.linear.max_reuse_iterations = solver.max_reuse_iterations;
-    settings.linear.direct_solver =
-      solver.direct_solver == Parameters::DirectSolverChoice::klu ?
-        Solver::DirectSolverKind::klu :
-      solver.direct_solver == Parameters::DirectSolverChoice::umfpack ?
-        Solver::DirectSolverKind::umfpack :
-        Solver::DirectSolverKind::automatic;
+    settings.linear.direct_solver   = solver.direct_solver;
     settings.max_cutbacks           = solver.max_cutbacks;
     settings.averaging_length       = solver.averaging_length;
     settings.rigid_penalty_factor   = solver.rigid_penalty_factor;

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <parameters/scenario_parameters.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 
 #include <string>
 
@@ -23,12 +23,8 @@ namespace FloorBlock::Scene
    * - parabola: the base bends into u_y = lift (x/nL)^2, i.e. y = x^2/k
    *   with k = (nL)^2/lift.
    */
-  FloorSceneSettings
-  floor_scene_settings(const Parameters::ScenarioParameters &scene);
-
-  /** @brief The contact law of Joints/Law. */
-  Contact::JointLawKind
-  joint_law_kind(const Parameters::ScenarioParameters &scene);
+  FloorProblemSettings
+  floor_problem_settings(const Parameters::ScenarioParameters &scene);
 
   /** @brief Numerical settings; VTU files go to @p vtu_folder if not empty. */
   Contact::ContactSolverSettings

@@ -8,7 +8,7 @@ namespace FloorBlock::Scene
   /**
    * @brief The rigid-block model of a scene, built from the same inputs as
    * the contact FEM: the Gmsh assembly's geometry (assembly_description()),
-   * and from floor_scene_settings() the density, gravity, joint constants
+   * and from floor_problem_settings() the density, gravity, joint constants
    * of the vertical joints and the bedding, uplift and load steps; the
    * support loads are the closed forms' P_i per metre (block_chain()), the
    * FEM's pressure P_i / L times L, vertical, at the block centre.

@@ -11,146 +11,143 @@
 #include <algorithm>
 #include <cmath>
 
-namespace FloorBlock
+namespace FloorBlock::Verification
 {
-  namespace Verification
+  namespace
   {
-    namespace
+    constexpr dealii::types::material_id cylinder = 1;
+    constexpr dealii::types::boundary_id curved_surface  = 1;
+    constexpr dealii::types::boundary_id symmetry_plane  = 2;
+    constexpr dealii::types::boundary_id loaded_cut      = 3;
+    constexpr dealii::types::manifold_id circle_manifold = 0;
+    constexpr dealii::types::manifold_id cell_manifold   = 1;
+    /** Refinement zone: cells closer to the contact point than this many half-widths plus their diameter. */
+    constexpr double refinement_zone_half_widths = 1.5;
+    /** Global refinements before the local ones, so the arc is resolved. */
+    constexpr unsigned int n_global_refinements = 2;
+    /** Geometric tolerance of face classification, relative to R. */
+    constexpr double face_tolerance = 1e-8;
+
+    void
+    make_quarter_cylinder(const double              radius,
+                          const double              half_width,
+                          const unsigned int        mesh_level,
+                          dealii::Triangulation<2> &mesh)
     {
-      constexpr dealii::types::material_id cylinder = 1;
-      constexpr dealii::types::boundary_id curved_surface  = 1;
-      constexpr dealii::types::boundary_id symmetry_plane  = 2;
-      constexpr dealii::types::boundary_id loaded_cut      = 3;
-      constexpr dealii::types::manifold_id circle_manifold = 0;
-      constexpr dealii::types::manifold_id cell_manifold   = 1;
-      /** Refinement zone: cells closer to the contact point than this many half-widths plus their diameter. */
-      constexpr double refinement_zone_half_widths = 1.5;
-      /** Global refinements before the local ones, so the arc is resolved. */
-      constexpr unsigned int n_global_refinements = 2;
-      /** Geometric tolerance of face classification, relative to R. */
-      constexpr double face_tolerance = 1e-8;
-
-      void
-      make_quarter_cylinder(const double              radius,
-                            const double              half_width,
-                            const unsigned int        mesh_level,
-                            dealii::Triangulation<2> &mesh)
-      {
-        using namespace dealii;
-        GridGenerator::quarter_hyper_ball(mesh, Point<2>(), radius);
-        // First quadrant -> below the centre, right of the axis, touching
-        // y = 0 at the origin: rotate by -90 degrees, lift by R.
-        GridTools::rotate(-M_PI / 2., mesh);
-        GridTools::shift(Tensor<1, 2>({0., radius}), mesh);
-        const Point<2> centre(0., radius);
-        mesh.reset_all_manifolds();
-        mesh.set_all_manifold_ids(cell_manifold);
-        for (const auto &cell : mesh.active_cell_iterators())
-          {
-            cell->set_material_id(cylinder);
-            for (const auto &face : cell->face_iterators())
-              {
-                if (!face->at_boundary())
-                  continue;
-                const Point<2> middle = face->center();
-                if (std::abs(middle[0]) < face_tolerance * radius)
-                  face->set_boundary_id(symmetry_plane);
-                else if (std::abs(middle[1] - radius) < face_tolerance * radius)
-                  face->set_boundary_id(loaded_cut);
-                else
-                  {
-                    face->set_boundary_id(curved_surface);
-                    face->set_manifold_id(circle_manifold);
-                  }
-              }
-          }
-        mesh.set_manifold(circle_manifold, SphericalManifold<2>(centre));
-        TransfiniteInterpolationManifold<2> transfinite;
-        transfinite.initialize(mesh);
-        mesh.set_manifold(cell_manifold, transfinite);
-        mesh.refine_global(n_global_refinements);
-        for (unsigned int level = 0; level < mesh_level; ++level)
-          {
-            for (const auto &cell : mesh.active_cell_iterators())
-              if (cell->center().norm() <
-                  refinement_zone_half_widths * half_width + cell->diameter())
-                cell->set_refine_flag();
-            mesh.execute_coarsening_and_refinement();
-          }
-      }
-    } // namespace
-
-    HertzResult
-    run_hertz_verification(const HertzSettings &settings)
-    {
-      const Material::ElasticLaw<2> law = Material::ElasticLaw<2>::from_youngs_poisson(
-        settings.youngs_modulus, settings.poissons_ratio);
-      // Rigid flat: the contact modulus is the cylinder's plane-strain
-      // modulus, 1/E* = (1 - nu^2)/E.
-      const Analytic::HertzLineContact closed_form =
-        Analytic::hertz_line_contact(settings.line_load,
-                                     settings.radius,
-                                     law.plane_strain_modulus());
-      if (closed_form.status != Analytic::Status::ok)
-        throw InputError("verify hertz: " +
-                         Analytic::describe(closed_form.status));
-      HertzResult result;
-      result.half_width_exact    = closed_form.half_width;
-      result.peak_pressure_exact = closed_form.peak_pressure;
-
-      dealii::Triangulation<2> mesh;
-      make_quarter_cylinder(settings.radius,
-                            result.half_width_exact,
-                            settings.mesh_level,
-                            mesh);
-      Contact::SceneDefinition<2> scene;
-      scene.model.laws.emplace(cylinder, law);
-      // Half model: P/2 spread over the cut of length R.
-      scene.model.pressures[loaded_cut] =
-        settings.line_load / (2. * settings.radius);
-      Contact::SupportDefinition<2> symmetry;
-      symmetry.boundary_id            = symmetry_plane;
-      symmetry.constrained_components = {{true, false}};
-      scene.supports                  = {symmetry};
-      Contact::JointDefinition<2> contact;
-      contact.name                        = "hertz";
-      contact.side_a                      = curved_surface;
-      contact.law                         = settings.law;
-      contact.parameters.normal_stiffness = settings.compliant_stiffness;
-      contact.parameters.shear_stiffness  = settings.compliant_stiffness;
-      contact.against_rigid_plane         = true;
-      contact.plane_point                 = dealii::Point<2>();
-      contact.plane_normal                = dealii::Tensor<1, 2>({0., -1.});
-      scene.joints                        = {contact};
-      scene.steps                         = {0, 1, 0};
-
-      Contact::ContactSolverSettings numerics;
-      numerics.fe_degree   = settings.fe_degree;
-      numerics.linear.kind = Solver::LinearSolverKind::direct;
-      Contact::ContactSolver      solver(mesh, scene, numerics);
-      const Contact::SolveResult  solved = solver.run();
-      const Contact::JointReport &report =
-        solved.increments.back().joints.at(0);
-      result.n_dofs = solved.n_dofs;
-      for (const Contact::IncrementResult &increment : solved.increments)
-        result.n_newton_iterations += increment.n_newton_iterations;
-      result.contact_force = 2. * report.normal_force;
-      double last_closed = 0., first_open = settings.radius;
-      for (const auto &sample : report.profile)
+      using namespace dealii;
+      GridGenerator::quarter_hyper_ball(mesh, Point<2>(), radius);
+      // First quadrant -> below the centre, right of the axis, touching
+      // y = 0 at the origin: rotate by -90 degrees, lift by R.
+      GridTools::rotate(-M_PI / 2., mesh);
+      GridTools::shift(Tensor<1, 2>({0., radius}), mesh);
+      const Point<2> centre(0., radius);
+      mesh.reset_all_manifolds();
+      mesh.set_all_manifold_ids(cell_manifold);
+      for (const auto &cell : mesh.active_cell_iterators())
         {
-          const double x = sample.position[0];
-          if (sample.state != Contact::JointState::open)
-            last_closed = std::max(last_closed, x);
-          result.peak_pressure_computed =
-            std::max(result.peak_pressure_computed, sample.normal_traction);
+          cell->set_material_id(cylinder);
+          for (const auto &face : cell->face_iterators())
+            {
+              if (!face->at_boundary())
+                continue;
+              const Point<2> middle = face->center();
+              if (std::abs(middle[0]) < face_tolerance * radius)
+                face->set_boundary_id(symmetry_plane);
+              else if (std::abs(middle[1] - radius) < face_tolerance * radius)
+                face->set_boundary_id(loaded_cut);
+              else
+                {
+                  face->set_boundary_id(curved_surface);
+                  face->set_manifold_id(circle_manifold);
+                }
+            }
         }
-      for (const auto &sample : report.profile)
-        if (sample.state == Contact::JointState::open &&
-            sample.position[0] > last_closed)
-          first_open = std::min(first_open, sample.position[0]);
-      result.half_width_computed = (last_closed + first_open) / 2.;
-      result.contact_cell_size   = first_open - last_closed;
-      return result;
+      mesh.set_manifold(circle_manifold, SphericalManifold<2>(centre));
+      TransfiniteInterpolationManifold<2> transfinite;
+      transfinite.initialize(mesh);
+      mesh.set_manifold(cell_manifold, transfinite);
+      mesh.refine_global(n_global_refinements);
+      for (unsigned int level = 0; level < mesh_level; ++level)
+        {
+          for (const auto &cell : mesh.active_cell_iterators())
+            if (cell->center().norm() <
+                refinement_zone_half_widths * half_width + cell->diameter())
+              cell->set_refine_flag();
+          mesh.execute_coarsening_and_refinement();
+        }
     }
-  } // namespace Verification
-} // namespace FloorBlock
+  } // namespace
+
+  HertzResult
+  run_hertz_verification(const HertzSettings &settings)
+  {
+    const Material::ElasticLaw<2> law = Material::ElasticLaw<2>::from_youngs_poisson(
+      settings.youngs_modulus, settings.poissons_ratio);
+    // Rigid flat: the contact modulus is the cylinder's plane-strain
+    // modulus, 1/E* = (1 - nu^2)/E.
+    const Analytic::HertzLineContact closed_form =
+      Analytic::hertz_line_contact(settings.line_load,
+                                   settings.radius,
+                                   law.plane_strain_modulus());
+    if (closed_form.status != Analytic::Status::ok)
+      throw InputError("verify hertz: " +
+                       Analytic::describe(closed_form.status));
+    HertzResult result;
+    result.half_width_exact    = closed_form.half_width;
+    result.peak_pressure_exact = closed_form.peak_pressure;
+
+    dealii::Triangulation<2> mesh;
+    make_quarter_cylinder(settings.radius,
+                          result.half_width_exact,
+                          settings.mesh_level,
+                          mesh);
+    Contact::ContactProblem<2> scene;
+    scene.model.laws.emplace(cylinder, law);
+    // Half model: P/2 spread over the cut of length R.
+    scene.model.pressures[loaded_cut] =
+      settings.line_load / (2. * settings.radius);
+    Contact::SupportDefinition<2> symmetry;
+    symmetry.boundary_id            = symmetry_plane;
+    symmetry.constrained_components = {{true, false}};
+    scene.supports                  = {symmetry};
+    Contact::JointDefinition<2> contact;
+    contact.name                        = "hertz";
+    contact.side_a                      = curved_surface;
+    contact.law                         = settings.law;
+    contact.parameters.normal_stiffness = settings.compliant_stiffness;
+    contact.parameters.shear_stiffness  = settings.compliant_stiffness;
+    contact.against_rigid_plane         = true;
+    contact.plane_point                 = dealii::Point<2>();
+    contact.plane_normal                = dealii::Tensor<1, 2>({0., -1.});
+    scene.joints                        = {contact};
+    scene.steps                         = {0, 1, 0};
+
+    Contact::ContactSolverSettings numerics;
+    numerics.fe_degree   = settings.fe_degree;
+    numerics.linear.kind = Solver::LinearSolverKind::direct;
+    Contact::ContactSolver      solver(mesh, scene, numerics);
+    const Contact::SolveResult  solved = solver.run();
+    const Contact::JointReport &report =
+      solved.increments.back().joints.at(0);
+    result.n_dofs = solved.n_dofs;
+    for (const Contact::IncrementResult &increment : solved.increments)
+      result.n_newton_iterations += increment.n_newton_iterations;
+    result.contact_force = 2. * report.normal_force;
+    double last_closed = 0., first_open = settings.radius;
+    for (const auto &sample : report.profile)
+      {
+        const double x = sample.position[0];
+        if (sample.state != Contact::JointState::open)
+          last_closed = std::max(last_closed, x);
+        result.peak_pressure_computed =
+          std::max(result.peak_pressure_computed, sample.normal_traction);
+      }
+    for (const auto &sample : report.profile)
+      if (sample.state == Contact::JointState::open &&
+          sample.position[0] > last_closed)
+        first_open = std::min(first_open, sample.position[0]);
+    result.half_width_computed = (last_closed + first_open) / 2.;
+    result.contact_cell_size   = first_open - last_closed;
+    return result;
+  }
+} // namespace FloorBlock::Verification

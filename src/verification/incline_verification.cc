@@ -7,81 +7,78 @@
 
 #include <cmath>
 
-namespace FloorBlock
+namespace FloorBlock::Verification
 {
-  namespace Verification
+  namespace
   {
-    namespace
-    {
-      constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
-                                           block_top = 12;
-      constexpr dealii::types::boundary_id base_sides = 20, base_top = 21,
-                                           base_bottom = 22;
-      constexpr dealii::types::material_id block = 1, base = 2;
-      constexpr double density              = 2500.; // kg/m^3
-      constexpr double gravity_acceleration = 9.81;  // m/s^2
-      constexpr double block_width = 1., block_height = 0.5; // m
-      constexpr double base_depth  = 0.5;                     // m
+    constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
+                                         block_top = 12;
+    constexpr dealii::types::boundary_id base_sides = 20, base_top = 21,
+                                         base_bottom = 22;
+    constexpr dealii::types::material_id block = 1, base = 2;
+    constexpr double density              = 2500.; // kg/m^3
+    constexpr double gravity_acceleration = 9.81;  // m/s^2
+    constexpr double block_width = 1., block_height = 0.5; // m
+    constexpr double base_depth  = 0.5;                     // m
 
-      Contact::SceneDefinition<2>
-      incline_scene(const InclineSettings &settings)
+    Contact::ContactProblem<2>
+    incline_scene(const InclineSettings &settings)
+    {
+      Contact::ContactProblem<2> scene;
+      scene.model.laws.emplace(block, table_rock());
+      scene.model.laws.emplace(base, table_rock());
+      scene.model.densities[block] = density;
+      scene.model.gravity[0] = gravity_acceleration * std::sin(settings.incline);
+      scene.model.gravity[1] = -gravity_acceleration * std::cos(settings.incline);
+      scene.supports = {fixed_support(base_bottom, true, true)};
+      Contact::JointDefinition<2> joint;
+      joint.name                        = "bedding";
+      joint.side_a                      = base_top;
+      joint.side_b                      = block_bottom;
+      joint.law                         = settings.law;
+      joint.parameters.normal_stiffness = settings.normal_stiffness;
+      joint.parameters.shear_stiffness  = settings.shear_stiffness;
+      joint.parameters.friction_angle   = settings.friction_angle;
+      scene.joints                      = {joint};
+      scene.steps                       = {1, 0, 0};
+      return scene;
+    }
+  } // namespace
+
+  InclineResult
+  run_incline_verification(const InclineSettings &settings)
+  {
+    dealii::Triangulation<2> mesh;
+    make_block_assembly({{0., block_width, 0., block_height, 8, 4, block,
+                          block_sides, block_sides, block_bottom, block_top},
+                         {0., block_width, -base_depth, 0., 8, 4, base,
+                          base_sides, base_sides, base_bottom, base_top}},
+                        mesh);
+    InclineResult result;
+    result.weight =
+      density * gravity_acceleration * block_width * block_height;
+    Contact::ContactSolver solver(mesh,
+                                  incline_scene(settings),
+                                  verification_settings());
+    try
       {
-        Contact::SceneDefinition<2> scene;
-        scene.model.laws.emplace(block, table_rock());
-        scene.model.laws.emplace(base, table_rock());
-        scene.model.densities[block] = density;
-        scene.model.gravity[0] = gravity_acceleration * std::sin(settings.incline);
-        scene.model.gravity[1] = -gravity_acceleration * std::cos(settings.incline);
-        scene.supports = {fixed_support(base_bottom, true, true)};
-        Contact::JointDefinition<2> joint;
-        joint.name                        = "bedding";
-        joint.side_a                      = base_top;
-        joint.side_b                      = block_bottom;
-        joint.law                         = settings.law;
-        joint.parameters.normal_stiffness = settings.normal_stiffness;
-        joint.parameters.shear_stiffness  = settings.shear_stiffness;
-        joint.parameters.friction_angle   = settings.friction_angle;
-        scene.joints                      = {joint};
-        scene.steps                       = {1, 0, 0};
-        return scene;
+        result.stuck = solver.run().increments.back();
       }
-    } // namespace
+    catch (const Contact::ContactSolveFailure &failure)
+      {
+        result.slipped             = true;
+        result.last_iterate_counts = failure.last_iterate_counts;
+        result.n_failed_attempts   = failure.attempts.size();
+        result.had_converged_state = failure.last_converged.has_value();
+      }
+    return result;
+  }
 
-    InclineResult
-    run_incline_verification(const InclineSettings &settings)
-    {
-      dealii::Triangulation<2> mesh;
-      make_block_assembly({{0., block_width, 0., block_height, 8, 4, block,
-                            block_sides, block_sides, block_bottom, block_top},
-                           {0., block_width, -base_depth, 0., 8, 4, base,
-                            base_sides, base_sides, base_bottom, base_top}},
-                          mesh);
-      InclineResult result;
-      result.weight =
-        density * gravity_acceleration * block_width * block_height;
-      Contact::ContactSolver solver(mesh,
-                                    incline_scene(settings),
-                                    verification_settings());
-      try
-        {
-          result.stuck = solver.run().increments.back();
-        }
-      catch (const Contact::ContactSolveFailure &failure)
-        {
-          result.slipped             = true;
-          result.last_iterate_counts = failure.last_iterate_counts;
-          result.n_failed_attempts   = failure.attempts.size();
-          result.had_converged_state = failure.last_converged.has_value();
-        }
-      return result;
-    }
-
-    bool
-    slips(const InclineResult &result)
-    {
-      return result.slipped && result.last_iterate_counts.n_stick == 0 &&
-             result.last_iterate_counts.n_closed() > 0 &&
-             !result.had_converged_state;
-    }
-  } // namespace Verification
-} // namespace FloorBlock
+  bool
+  slips(const InclineResult &result)
+  {
+    return result.slipped && result.last_iterate_counts.n_stick == 0 &&
+           result.last_iterate_counts.n_closed() > 0 &&
+           !result.had_converged_state;
+  }
+} // namespace FloorBlock::Verification

@@ -7,7 +7,7 @@
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 #include <solver/linear_solver.h>
 
 #include <sstream>
@@ -58,8 +58,8 @@ namespace FloorBlock::Benchmark
   LinearElasticSystem::LinearElasticSystem(
     const Parameters::ScenarioParameters &scene_parameters,
     const dealii::Triangulation<2>       &triangulation)
-    : scene(Scene::make_floor_scene(
-        Scene::floor_scene_settings(scene_parameters)))
+    : scene(Scene::make_floor_contact_problem(
+        Scene::floor_problem_settings(scene_parameters)))
     , settings(Scene::contact_solver_settings(scene_parameters, ""))
     , space(triangulation, settings.fe_degree)
   {

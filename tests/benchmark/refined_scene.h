@@ -2,7 +2,7 @@
 
 #include <contact/contact_node.h>
 #include <contact/joint_law.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
@@ -106,7 +106,7 @@ namespace FloorBlock::Benchmark
     system_residual() const;
 
   private:
-    const Contact::SceneDefinition<2>     scene;
+    const Contact::ContactProblem<2>     scene;
     const Contact::ContactSolverSettings  settings;
     const Fem::FeSpace<2>                 space;
     dealii::AffineConstraints<double>     constraints;

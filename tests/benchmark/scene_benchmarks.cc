@@ -6,7 +6,7 @@
 
 #include <contact/contact_solver.h>
 #include <scene/contact_inputs.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 #include <verification/hertz_verification.h>
 
 #include <benchmark/benchmark.h>
@@ -288,7 +288,7 @@ namespace FloorBlock::Benchmark
             {
               Contact::ContactSolver solver(
                 level.triangulation,
-                Scene::make_floor_scene(Scene::floor_scene_settings(scene)),
+                Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
                 Scene::contact_solver_settings(scene, ""));
               fill_solve_record(solver.run(), scene.geometry.n_blocks, record);
               record.converged = true;

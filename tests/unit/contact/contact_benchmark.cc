@@ -8,7 +8,7 @@
 #include <geometry/assembly_mesher.h>
 #include <geometry/bedding_manifold.h>
 #include <geometry/triangulation_reader.h>
-#include <scene/floor_scene.h>
+#include <scene/floor_contact_problem.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -38,7 +38,7 @@ main(int argc, char **argv)
   Geometry::attach_bedding_manifold(description, mesh);
   const double mesh_time = clock.wall_time();
 
-  Scene::FloorSceneSettings scene_settings;
+  Scene::FloorProblemSettings scene_settings;
   scene_settings.law = rigid ? Contact::JointLawKind::rigid :
                                Contact::JointLawKind::compliant;
   const double degree = M_PI / 180.;
@@ -50,8 +50,8 @@ main(int argc, char **argv)
   for (unsigned int block = 1; block <= 3; ++block)
     scene_settings.support_pressures[block] = support_force / 3.;
   scene_settings.uplift.mode      = lifted ?
-                                      Contact::UpliftMode::parabola :
-                                      Contact::UpliftMode::vertical_translation;
+                                      Contact::UpliftMotion::parabola :
+                                      Contact::UpliftMotion::vertical_translation;
   scene_settings.uplift.magnitude = lifted ? description.curvature : 0.01; // m
   scene_settings.steps            = {1, 2, 5};
 
@@ -66,7 +66,7 @@ main(int argc, char **argv)
   if (argc > 2 && std::string(argv[2]) != "-")
     settings.output_directory = argv[2];
   clock.restart();
-  Contact::ContactSolver solver(mesh, Scene::make_floor_scene(scene_settings), settings);
+  Contact::ContactSolver solver(mesh, Scene::make_floor_contact_problem(scene_settings), settings);
   const Contact::SolveResult result = solver.run();
   const double               solve_time = clock.wall_time();
 

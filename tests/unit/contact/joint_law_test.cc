@@ -18,7 +18,7 @@ namespace
   CoulombJoint<2>
   make_joint(const double cohesion = 0., const double tensile_strength = 0.)
   {
-    JointParameters parameters;
+    JointConstants parameters;
     parameters.normal_stiffness = normal_stiffness;
     parameters.shear_stiffness  = shear_stiffness;
     parameters.friction_angle   = friction_angle;

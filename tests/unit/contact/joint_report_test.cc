@@ -57,7 +57,7 @@ namespace
   CoulombJoint<2>
   make_law(const double stiffness, const double tensile_strength = 0.)
   {
-    JointParameters parameters;
+    JointConstants parameters;
     parameters.normal_stiffness = stiffness;
     parameters.shear_stiffness  = stiffness / 2.;
     parameters.friction_angle   = std::atan(0.6);

@@ -37,7 +37,7 @@ namespace
       {{0., 1., 0., 0.5, 4, 2, 1, block_sides, block_sides, block_bottom, block_top},
        {0., 1., -0.5, 0., 4, 2, 2, base_sides, base_sides, base_bottom, base_top}},
       mesh);
-    SceneDefinition<2> scene;
+    ContactProblem<2> scene;
     scene.model.laws.emplace(1, Testing::table_rock());
     scene.model.laws.emplace(2, Testing::table_rock());
     scene.model.densities[1] = density;
@@ -91,7 +91,7 @@ namespace
   TEST(Uplift, BlockFollowsVerticalTranslationOfTheBase)
   {
     UpliftSettings uplift;
-    uplift.mode      = UpliftMode::vertical_translation;
+    uplift.mode      = UpliftMotion::vertical_translation;
     uplift.magnitude = 2e-3; // m
     expect_rigid_follow(uplift);
   }
@@ -99,7 +99,7 @@ namespace
   TEST(Uplift, BlockFollowsDipTranslationOfTheBaseEitherWay)
   {
     UpliftSettings uplift;
-    uplift.mode      = UpliftMode::dip_translation;
+    uplift.mode      = UpliftMotion::dip_translation;
     uplift.dip_angle = 10. * M_PI / 180.;
     for (const double magnitude : {2e-3, -2e-3}) // m, up-dip and down-dip
       {
@@ -111,7 +111,7 @@ namespace
   TEST(Uplift, TiltIsAnExactRotation)
   {
     UpliftSettings uplift;
-    uplift.mode      = UpliftMode::tilt;
+    uplift.mode      = UpliftMotion::tilt;
     uplift.magnitude = 0.1; // rad
     uplift.pivot_x   = 1.;
     uplift.pivot_y   = 2.;
@@ -126,7 +126,7 @@ namespace
   TEST(Uplift, ParabolaIsFlatBehindTheVertex)
   {
     UpliftSettings uplift;
-    uplift.mode      = UpliftMode::parabola;
+    uplift.mode      = UpliftMotion::parabola;
     uplift.magnitude = 400.; // m, y = x^2/400
     EXPECT_NEAR(uplift_displacement(uplift, 0.5, dealii::Point<2>(6., 0.))[1],
                 0.5 * 36. / 400., 1e-15);
@@ -141,7 +141,7 @@ namespace
   TEST(LoadSteps, TenUpliftStepsAreTenIncrements)
   {
     UpliftSettings uplift;
-    uplift.mode                     = UpliftMode::vertical_translation;
+    uplift.mode                     = UpliftMotion::vertical_translation;
     uplift.magnitude                = 1e-3; // m
     constexpr unsigned int n_uplift = 10;
     const SolveResult result = solve_block_on_base(uplift, n_uplift);

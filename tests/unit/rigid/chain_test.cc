@@ -47,7 +47,7 @@ namespace FloorBlock::RigidBlocks
                               Testing::radians(dip_degrees),
                               Testing::radians(bedding_degrees),
                               Testing::radians(vertical_degrees));
-      description.uplift.mode      = Contact::UpliftMode::dip_translation;
+      description.uplift.mode      = Contact::UpliftMotion::dip_translation;
       description.uplift.dip_angle = Testing::radians(dip_degrees);
       // Negative magnitude: down the dip, towards the face.
       description.uplift.magnitude = -base_travel;
@@ -75,7 +75,7 @@ namespace FloorBlock::RigidBlocks
   TEST(RigidChain, FrictionlessVerticalJointsMatchSlipNoRotation)
   {
     const ModelDescription description = dragged_chain(0.);
-    const SolveResult      result      = Model(description).solve();
+    const RigidSolveResult      result      = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
     const IncrementReport &last = result.increments.back();
     const Analytic::ChainForces reference = closed_form(description, 0.);
@@ -83,7 +83,7 @@ namespace FloorBlock::RigidBlocks
     for (unsigned int number = 1; number <= n_blocks; ++number)
       {
         SCOPED_TRACE(number);
-        const JointReport &bedding =
+        const RigidJointReport &bedding =
           Testing::find_joint(last, JointKind::bedding, number);
         // Every closed bedding point is at the Coulomb limit...
         EXPECT_EQ(bedding.counts.n_stick, 0u);
@@ -107,7 +107,7 @@ namespace FloorBlock::RigidBlocks
   {
     constexpr double vertical_degrees = 10.;
     const ModelDescription description = dragged_chain(vertical_degrees);
-    const SolveResult      result      = Model(description).solve();
+    const RigidSolveResult      result      = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
     const IncrementReport &last = result.increments.back();
     const Analytic::ChainForces reference =
@@ -124,7 +124,7 @@ namespace FloorBlock::RigidBlocks
     for (unsigned int number = 1; number <= n_blocks; ++number)
       {
         SCOPED_TRACE(number);
-        const JointReport &joint =
+        const RigidJointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
         const double limit    = friction * joint.normal_force;
         const bool   at_limit =
@@ -152,7 +152,7 @@ namespace FloorBlock::RigidBlocks
     // The assumption that fails here: uniform base travel moves all blocks
     // alike, so near the face the vertical joints only see the elastic
     // differences of the bedding compression and stay below their limit.
-    const JointReport &face =
+    const RigidJointReport &face =
       Testing::find_joint(last, JointKind::vertical, n_blocks);
     EXPECT_LT(face.shear_force, 0.5 * friction * face.normal_force);
     // ... and the agreement above must have covered the free end.
@@ -179,7 +179,7 @@ namespace FloorBlock::RigidBlocks
     for (unsigned int number = 1; number <= n_blocks; ++number)
       {
         SCOPED_TRACE(number);
-        const JointReport &joint =
+        const RigidJointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
         const double normal =
           (weight + joint.shear_force - previous_shear) /

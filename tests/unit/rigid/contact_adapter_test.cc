@@ -25,7 +25,7 @@ namespace FloorBlock::RigidBlocks
     {
       ModelDescription     description;
       Model                model;
-      SolveResult          rigid;
+      RigidSolveResult          rigid;
       Contact::SolveResult contact;
     };
 
@@ -44,7 +44,7 @@ namespace FloorBlock::RigidBlocks
       static const AdaptedSolve solve = [] {
         const ModelDescription description = scene_with_all_profiles();
         const Model            model(description);
-        const SolveResult      rigid = model.solve();
+        const RigidSolveResult      rigid = model.solve();
         return AdaptedSolve{description,
                             model,
                             rigid,
@@ -70,7 +70,7 @@ namespace FloorBlock::RigidBlocks
         ASSERT_EQ(contact.joints.size(), rigid.joints.size());
         for (unsigned int j = 0; j < rigid.joints.size(); ++j)
           {
-            const JointReport          &from = rigid.joints[j];
+            const RigidJointReport          &from = rigid.joints[j];
             const Contact::JointReport &to   = contact.joints[j];
             EXPECT_EQ(to.name, from.name);
             EXPECT_EQ(to.normal_force, from.normal_force);
@@ -160,7 +160,7 @@ namespace FloorBlock::RigidBlocks
     const auto &contact_last          = solve.contact.increments.back();
     for (unsigned int j = 0; j < rigid_last.joints.size(); ++j)
       {
-        const JointReport          &from = rigid_last.joints[j];
+        const RigidJointReport          &from = rigid_last.joints[j];
         const Contact::JointReport &to   = contact_last.joints[j];
         EXPECT_EQ(to.peak_normal_stress, from.peak_normal_traction);
         EXPECT_LE(to.averaged_peak_normal_stress,

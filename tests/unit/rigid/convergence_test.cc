@@ -24,7 +24,7 @@ namespace FloorBlock::RigidBlocks
     constexpr double balance_tolerance = 1e-8;
 
     void
-    expect_converged_and_balanced(const SolveResult &result)
+    expect_converged_and_balanced(const RigidSolveResult &result)
     {
       ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
       ASSERT_FALSE(result.increments.empty());
@@ -33,11 +33,11 @@ namespace FloorBlock::RigidBlocks
     }
 
     void
-    print_increments(const SolveResult &result, const unsigned int n_blocks)
+    print_increments(const RigidSolveResult &result, const unsigned int n_blocks)
     {
       for (const IncrementReport &increment : result.increments)
         {
-          const JointReport &face =
+          const RigidJointReport &face =
             Testing::find_joint(increment, JointKind::vertical, n_blocks);
           std::printf("    g %.2f P %.2f u %.2f: newton %2u cutbacks %u "
                       "residual %.1e imbalance %.1e | face Q %.4e N/m "
@@ -79,7 +79,7 @@ namespace FloorBlock::RigidBlocks
   TEST(RigidConvergence, DefaultSceneConvergesBalancesAndIsFast)
   {
     const ModelDescription description = Testing::default_scene(5);
-    const SolveResult      result      = Model(description).solve();
+    const RigidSolveResult      result      = Model(description).solve();
     expect_converged_and_balanced(result);
     std::printf("  default scene (6 blocks, 400 points per joint): %zu "
                 "increments, wall time %.2f ms\n",
@@ -89,7 +89,7 @@ namespace FloorBlock::RigidBlocks
     // The uplift is a vertical translation: the blocks ride up with the base
     // and only the face joint slips (block 6 moves up along the fixed face
     // block), with Q tan(phi_v) of shear.
-    const JointReport &face = Testing::find_joint(result.increments.back(),
+    const RigidJointReport &face = Testing::find_joint(result.increments.back(),
                                                   JointKind::vertical,
                                                   6);
     EXPECT_GT(face.counts.n_slip, 0u);
@@ -103,7 +103,7 @@ namespace FloorBlock::RigidBlocks
     for (const unsigned int n_blocks : {1u, 20u})
       {
         SCOPED_TRACE(n_blocks);
-        const SolveResult result = Model(scene_with_blocks(n_blocks)).solve();
+        const RigidSolveResult result = Model(scene_with_blocks(n_blocks)).solve();
         expect_converged_and_balanced(result);
         std::printf("  %u blocks: wall time %.2f ms\n",
                     n_blocks,
@@ -113,21 +113,21 @@ namespace FloorBlock::RigidBlocks
   }
 
   /** Runs @p description with kn = @p stiffness and ks in Table 6.1 ratio. */
-  SolveResult
+  RigidSolveResult
   solve_with_stiffness(ModelDescription description, const double stiffness)
   {
     const double shear_ratio =
       Testing::table_shear_stiffness / Testing::table_normal_stiffness;
-    for (Contact::JointParameters *joint :
+    for (Contact::JointConstants *joint :
          {&description.bedding_joint, &description.vertical_joint})
       {
         joint->normal_stiffness = stiffness;
         joint->shear_stiffness  = shear_ratio * stiffness;
       }
-    const SolveResult result = Model(description).solve();
+    const RigidSolveResult result = Model(description).solve();
     if (!result.increments.empty())
       {
-        const JointReport &face = Testing::find_joint(
+        const RigidJointReport &face = Testing::find_joint(
           result.increments.back(), JointKind::vertical, 6);
         std::printf("  kn %.0e Pa/m: %s, face Q %.5e N/m, c %.4f m, newton "
                     "iterations in the last increment %u, %.2f ms\n",
@@ -175,9 +175,9 @@ namespace FloorBlock::RigidBlocks
       {
         ModelDescription description = Testing::lifted_parabola_scene(2);
         description.solver.n_points_per_joint = n_points;
-        const SolveResult result = Model(description).solve();
+        const RigidSolveResult result = Model(description).solve();
         expect_converged_and_balanced(result);
-        const JointReport &face = Testing::find_joint(result.increments.back(),
+        const RigidJointReport &face = Testing::find_joint(result.increments.back(),
                                                       JointKind::vertical,
                                                       6);
         forces.push_back(face.normal_force);
@@ -231,14 +231,14 @@ namespace FloorBlock::RigidBlocks
     // The other reading of floor uplift: a flat bedding bent into
     // y = x^2/400 under the loaded blocks.
     const ModelDescription description = Testing::lifted_parabola_scene(5);
-    const SolveResult      result      = Model(description).solve();
+    const RigidSolveResult      result      = Model(description).solve();
     expect_converged_and_balanced(result);
     std::printf("  lifted parabola (6 blocks, 400 points per joint): %zu "
                 "increments, wall time %.2f ms\n",
                 result.increments.size(),
                 1e3 * result.wall_time);
     print_increments(result, description.assembly.n_blocks);
-    const JointReport &face = Testing::find_joint(result.increments.back(),
+    const RigidJointReport &face = Testing::find_joint(result.increments.back(),
                                                   JointKind::vertical,
                                                   6);
     // The bent bedding rotates block 6 against the upright face block: the

@@ -17,7 +17,7 @@ namespace FloorBlock::RigidBlocks
   {
     constexpr double bedding_friction_degrees = 20.;
 
-    SolveResult
+    RigidSolveResult
     solve_on_incline(const double dip_degrees)
     {
       const ModelDescription description =
@@ -42,13 +42,13 @@ namespace FloorBlock::RigidBlocks
     for (const double dip_degrees : {5., 15., 19.9})
       {
         SCOPED_TRACE(dip_degrees);
-        const SolveResult result = solve_on_incline(dip_degrees);
+        const RigidSolveResult result = solve_on_incline(dip_degrees);
         ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
         ASSERT_EQ(result.increments.size(), 1u);
         const IncrementReport &increment = result.increments.back();
-        const JointReport     &bedding =
+        const RigidJointReport     &bedding =
           Testing::find_joint(increment, JointKind::bedding, 1);
-        const JointReport &face =
+        const RigidJointReport &face =
           Testing::find_joint(increment, JointKind::vertical, 1);
         const double dip = Testing::radians(dip_degrees);
         // Equilibrium along and across the bed; the Newton residual is below
@@ -72,7 +72,7 @@ namespace FloorBlock::RigidBlocks
     for (const double dip_degrees : {20.1, 25., 40.})
       {
         SCOPED_TRACE(dip_degrees);
-        const SolveResult result = solve_on_incline(dip_degrees);
+        const RigidSolveResult result = solve_on_incline(dip_degrees);
         EXPECT_EQ(result.status, SolveStatus::no_equilibrium)
           << result.message;
         EXPECT_EQ(result.failing_block, 1u);
@@ -92,7 +92,7 @@ namespace FloorBlock::RigidBlocks
                             Testing::radians(30.),
                             Testing::radians(bedding_friction_degrees),
                             Testing::radians(bedding_friction_degrees));
-    const SolveResult result = Model(description).solve();
+    const RigidSolveResult result = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
     EXPECT_GT(Testing::find_joint(result.increments.back(),
                                   JointKind::vertical,

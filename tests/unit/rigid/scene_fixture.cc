@@ -11,10 +11,10 @@ namespace FloorBlock::RigidBlocks::Testing
     return degrees * M_PI / 180.;
   }
 
-  Contact::JointParameters
+  Contact::JointConstants
   table_joint(const double friction_angle)
   {
-    Contact::JointParameters joint;
+    Contact::JointConstants joint;
     joint.normal_stiffness = table_normal_stiffness;
     joint.shear_stiffness  = table_shear_stiffness;
     joint.friction_angle   = friction_angle;
@@ -56,7 +56,7 @@ namespace FloorBlock::RigidBlocks::Testing
     for (unsigned int index = 0; index < n_loaded; ++index)
       description.support_line_loads[index] =
         support_tonnes * tonne * standard_gravity / (n_loaded * support_width);
-    description.uplift.mode      = Contact::UpliftMode::vertical_translation;
+    description.uplift.mode      = Contact::UpliftMotion::vertical_translation;
     description.uplift.magnitude = floor_lift;
     description.steps            = {1, 1, n_uplift};
     return description;
@@ -68,17 +68,17 @@ namespace FloorBlock::RigidBlocks::Testing
     ModelDescription description   = default_scene(n_uplift);
     description.assembly.floor_uplift =
       Geometry::FloorUplift::lifted_flat_bedding;
-    description.uplift.mode      = Contact::UpliftMode::parabola;
+    description.uplift.mode      = Contact::UpliftMotion::parabola;
     description.uplift.magnitude = description.assembly.curvature;
     return description;
   }
 
-  const JointReport &
+  const RigidJointReport &
   find_joint(const IncrementReport &increment,
              const JointKind        kind,
              const unsigned int     number)
   {
-    for (const JointReport &joint : increment.joints)
+    for (const RigidJointReport &joint : increment.joints)
       if (joint.kind == kind && joint.number == number)
         return joint;
     throw std::logic_error("no such joint in the increment");

@@ -18,7 +18,7 @@ namespace FloorBlock::RigidBlocks::Testing
   radians(const double degrees);
 
   /** @brief Table 6.1 joint (no cohesion, no tension) with friction angle phi (rad). */
-  Contact::JointParameters
+  Contact::JointConstants
   table_joint(const double friction_angle);
 
   /**
@@ -43,14 +43,14 @@ namespace FloorBlock::RigidBlocks::Testing
 
   /**
    * @brief The default scene read as a lifted flat bedding: the blocks stand
-   * on a flat base that is bent into y = x^2/400 (UpliftMode::parabola,
+   * on a flat base that is bent into y = x^2/400 (UpliftMotion::parabola,
    * vertex at the face) in @p n_uplift increments.
    */
   ModelDescription
   lifted_parabola_scene(const unsigned int n_uplift);
 
   /** @brief The report of joint @p number of @p kind in @p increment. */
-  const JointReport &
+  const RigidJointReport &
   find_joint(const IncrementReport &increment,
              const JointKind        kind,
              const unsigned int     number);

@@ -62,9 +62,9 @@ namespace FloorBlock::RigidBlocks
       BlockMotion motion;
       motion.rotation       = rotation;
       motion.translation[0] = rotation * (centroid_to_top - contact_length);
-      const std::vector<JointReport> reports =
+      const std::vector<RigidJointReport> reports =
         model.evaluate_prescribed({motion}, 0.);
-      const JointReport &face = reports[0];
+      const RigidJointReport &face = reports[0];
       EXPECT_EQ(face.kind, JointKind::vertical);
       EXPECT_EQ(face.number, 1u);
 
@@ -144,7 +144,7 @@ namespace FloorBlock::RigidBlocks
     // level. The bounds are the trapezoid error of Q (h^2/(4 c^2)) and
     // half of it for c, as in the prescribed test.
     const ModelDescription description = Testing::lifted_parabola_scene(5);
-    const SolveResult      result      = Model(description).solve();
+    const RigidSolveResult      result      = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
     const IncrementReport &last     = result.increments.back();
     const unsigned int     n_blocks = description.assembly.n_blocks;
@@ -155,7 +155,7 @@ namespace FloorBlock::RigidBlocks
     for (unsigned int number = 1; number <= n_blocks; ++number)
       {
         SCOPED_TRACE(number);
-        const JointReport &joint =
+        const RigidJointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
         if (!(joint.contact_length > 0. &&
               joint.contact_length < description.assembly.block_height))

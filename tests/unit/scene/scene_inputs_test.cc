@@ -4,7 +4,7 @@
 // from the scene entries.
 #include <analytic/block_chain.h>
 #include <common/units.h>
-#include <contact/scene.h>
+#include <contact/contact_problem.h>
 #include <geometry/assembly_description.h>
 #include <parameters/scenario_parameters.h>
 #include <scene/analytic_inputs.h>
@@ -151,11 +151,13 @@ namespace
 
   TEST(SceneInputs, ContactLawFollowsJointsLaw)
   {
-    EXPECT_EQ(Scene::joint_law_kind(
-                Parameters::read_defaults("scene_inputs_test", {"Joints/Law=rigid"})),
+    EXPECT_EQ(Scene::floor_problem_settings(
+                Parameters::read_defaults("scene_inputs_test", {"Joints/Law=rigid"}))
+                .law,
               Contact::JointLawKind::rigid);
-    EXPECT_EQ(Scene::joint_law_kind(Parameters::read_defaults(
-                "scene_inputs_test", {"Joints/Law=compliant"})),
+    EXPECT_EQ(Scene::floor_problem_settings(Parameters::read_defaults(
+                "scene_inputs_test", {"Joints/Law=compliant"}))
+                .law,
               Contact::JointLawKind::compliant);
   }
 } // namespace

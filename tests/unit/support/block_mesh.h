@@ -4,11 +4,8 @@
 // verification cases share it; tests keep their Testing:: names.
 #include <verification/block_assembly_mesh.h>
 
-namespace FloorBlock
+namespace FloorBlock::Testing
 {
-  namespace Testing
-  {
-    using Verification::BlockSpec;
-    using Verification::make_block_assembly;
-  } // namespace Testing
-} // namespace FloorBlock
+  using Verification::BlockSpec;
+  using Verification::make_block_assembly;
+} // namespace FloorBlock::Testing

@@ -4,17 +4,14 @@
 // cases share them; tests keep their Testing:: names.
 #include <verification/verification_setup.h>
 
-namespace FloorBlock
+namespace FloorBlock::Testing
 {
-  namespace Testing
-  {
-    using Verification::fixed_support;
-    using Verification::table_rock;
+  using Verification::fixed_support;
+  using Verification::table_rock;
 
-    inline Contact::ContactSolverSettings
-    test_settings(const unsigned int degree = 1)
-    {
-      return Verification::verification_settings(degree);
-    }
-  } // namespace Testing
-} // namespace FloorBlock
+  inline Contact::ContactSolverSettings
+  test_settings(const unsigned int degree = 1)
+  {
+    return Verification::verification_settings(degree);
+  }
+} // namespace FloorBlock::Testing
