@@ -176,14 +176,22 @@ TEST(ScenarioReference, RunDefaultScene)
   check_against_references({"run_default", "run params/default.prm"});
 }
 
-// Checked: fem.json and joints.csv of the rigid joint law (augmented
-// Lagrangian), scene tests/scenarios/hard_rigid_law.prm. Its path is the
+// Checked: fem.json and joints.csv of the rigid joint law (exact contact,
+// nodal multipliers), scene tests/scenarios/hard_rigid_law.prm. Its path is the
 // most sensitive to round-off (the top of this file).
 // The tool shall solve the rigid-law hard case to the stored numbers.
 TEST(ScenarioReference, SolveRigidLaw)
 {
   check_against_references(
     {"solve_hard_rigid_law", "solve tests/scenarios/hard_rigid_law.prm"});
+}
+
+// Checked: fem.json and joints.csv of the six-block benchmark scene S6
+// (params/s6.prm): rigid bedding moved up-dip, turned frame, exact contact.
+// The tool shall solve S6 to the stored numbers.
+TEST(ScenarioReference, SolveSixBlockBenchmark)
+{
+  check_against_references({"solve_s6", "solve params/s6.prm"});
 }
 
 // Checked: fem.json and joints.csv with 5 cm fillets at the block corners,
