@@ -65,10 +65,11 @@ namespace
   {
     const HertzResult rigid     = run_level(5, JointLawKind::rigid);
     const HertzResult compliant = run_level(5, JointLawKind::compliant);
-    // Issue's bound: kn = 1e14 Pa/m within 1 % of the rigid answer.
+    // kn = 1e14 Pa/m within 0.1 % of the exact (rigid) law: measured 0
+    // (half-width, same nodes) and 0.068 % (peak pressure) at level 5.
     EXPECT_NEAR(compliant.half_width_computed, rigid.half_width_computed,
-                0.01 * rigid.half_width_computed);
+                0.001 * rigid.half_width_computed);
     EXPECT_NEAR(compliant.peak_pressure_computed, rigid.peak_pressure_computed,
-                0.01 * rigid.peak_pressure_computed);
+                0.001 * rigid.peak_pressure_computed);
   }
 } // namespace
