@@ -169,16 +169,19 @@ namespace FloorBlock::Contact
     std::vector<bool> joint_is_exact;
     for (const auto &joint : problem.joints)
       joint_is_exact.push_back(joint.law == JointLawKind::rigid);
-    const unsigned int n_crosspoint_pairs =
-      remove_crosspoint_pairs(nodes, joint_is_exact);
+    const std::vector<bool> yields_at_crosspoint =
+      crosspoint_pairs(nodes, joint_is_exact);
+    const unsigned int n_crosspoint_pairs = std::count(
+      yields_at_crosspoint.begin(), yields_at_crosspoint.end(), true);
     if (n_crosspoint_pairs > 0)
       console << "  " << n_crosspoint_pairs
-              << " rigid-law pairs at crosspoints merged into their "
-                 "neighbours"
+              << " rigid-law pairs at crosspoints follow springs of the "
+                 "surface stiffness"
               << std::endl;
 
-    for (const auto &node : nodes)
+    for (unsigned int p = 0; p < nodes.size(); ++p)
       {
+        const ContactNode<2>     &node  = nodes[p];
         const JointDefinition<2> &joint = problem.joints[node.joint];
         if (joint.law == JointLawKind::compliant)
           {
@@ -202,12 +205,24 @@ namespace FloorBlock::Contact
           settings.rigid_penalty_factor * law.surface_stiffness;
         law.complementarity.tangential_parameter =
           law.complementarity.normal_parameter;
-        exact_laws.push_back(law);
-        pair_laws.push_back(nullptr);
-        JointConstants springs  = joint.parameters;
+        JointConstants springs   = joint.parameters;
         springs.normal_stiffness = law.complementarity.normal_parameter;
         springs.shear_stiffness  = law.complementarity.tangential_parameter;
         springs.tensile_strength = 0.;
+        if (yields_at_crosspoint[p])
+          {
+            // Springs of the surface stiffness E / h itself (not of the
+            // complementarity parameter, which must not change a result).
+            springs.normal_stiffness = law.surface_stiffness;
+            springs.shear_stiffness  = law.surface_stiffness;
+            penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+            pair_laws.push_back(penalty_laws.back().get());
+            penalty_pair_laws.push_back(pair_laws.back());
+            exact_laws.emplace_back();
+            continue;
+          }
+        exact_laws.push_back(law);
+        pair_laws.push_back(nullptr);
         penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
         penalty_pair_laws.push_back(penalty_laws.back().get());
       }
