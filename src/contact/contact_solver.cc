@@ -90,8 +90,6 @@ namespace FloorBlock::Contact
                              "process (a serial Triangulation); run cases "
                              "in parallel instead");
     dealii::TimerOutput::Scope scope(timer, "Contact: setup");
-    setup_contact();
-    dealii::IndexSet unused;
     std::vector<Fem::DirichletCondition<2>> zero_conditions;
     for (const auto &support : problem.supports)
       zero_conditions.push_back({support.boundary_id,
@@ -101,6 +99,8 @@ namespace FloorBlock::Contact
                                  }});
     homogeneous_constraints =
       Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
+    // After the supports: a node they hold is ground for the crosspoints.
+    setup_contact();
     Fem::make_sparsity(fe_space,
                        homogeneous_constraints,
                        pair_dof_groups(nodes),
@@ -170,7 +170,7 @@ namespace FloorBlock::Contact
     for (const auto &joint : problem.joints)
       joint_is_exact.push_back(joint.law == JointLawKind::rigid);
     const std::vector<bool> yields_at_crosspoint =
-      crosspoint_pairs(nodes, joint_is_exact);
+      crosspoint_pairs(nodes, joint_is_exact, dirichlet_dofs);
     const unsigned int n_crosspoint_pairs = std::count(
       yields_at_crosspoint.begin(), yields_at_crosspoint.end(), true);
     if (n_crosspoint_pairs > 0)

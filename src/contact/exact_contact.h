@@ -77,6 +77,8 @@ namespace FloorBlock::Contact
      * @param[in] constraints Homogeneous constraints of the displacement
      *   (Dirichlet and hanging nodes), over DoFs 0..n_u-1.
      * @param[in] n_displacement_dofs n_u.
+     * @p nodes and @p constraints are kept by reference: they must outlive
+     * this object and keep their addresses (ContactSolver owns all three).
      */
     ExactContact(
       const std::vector<ContactNode<dim>>                      &nodes,

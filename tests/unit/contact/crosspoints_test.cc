@@ -116,6 +116,13 @@ namespace
 
   using Indices = std::vector<unsigned int>;
 
+  /** No Dirichlet DoF among the 2 x 11 DoFs of the mesh nodes above. */
+  dealii::IndexSet
+  no_fixed_dofs()
+  {
+    return dealii::IndexSet(22);
+  }
+
   /**
    * Pins down the rigid-base corner: of the three pairs on the corner
    * nodes only the vertical joint's (joint 0, listed before the bedding)
@@ -126,7 +133,8 @@ namespace
   TEST(Crosspoints, BlockCornerOnRigidBaseMarksVerticalPair)
   {
     const std::vector<ContactNode<2>> nodes = block_corner_on_rigid_base();
-    const std::vector<bool> yields = crosspoint_pairs(nodes, {true, true, true});
+    const std::vector<bool> yields =
+      crosspoint_pairs(nodes, {true, true, true}, no_fixed_dofs());
     ASSERT_EQ(yields.size(), nodes.size());
     EXPECT_EQ(marked(yields), Indices({0}));
   }
@@ -137,24 +145,21 @@ namespace
    * of joint 1, base-b of joint 2): only the redundant vertical pair
    * yields, "the bedding keeps exact contact at the block corners". The
    * six constraints at the corner have rank four, so one pair (two
-   * constraints) is enough.
-   *
-   * DISABLED: crosspoint_pairs also marks the base-a pair of joint 1,
-   * because the base node is shared with the later bedding joint 2 (it
-   * keys mesh nodes, not corners): pairs {0, 4} instead of {0}, so block
-   * L's corner leaves the exact law on the bedding too; it does so even
-   * when the vertical joint is compliant and there is no redundancy at
-   * all. Reported, not fixed here.
+   * constraints) is enough. The base node is shared by the two bedding
+   * joints, which alone close no cycle: an earlier rule that keyed mesh
+   * nodes marked the base-a pair too ({0, 4}).
    */
-  TEST(Crosspoints, DISABLED_BlockCornerOnElasticBaseKeepsBothBeddingPairs)
+  TEST(Crosspoints, BlockCornerOnElasticBaseKeepsBothBeddingPairs)
   {
     const std::vector<ContactNode<2>> nodes = block_corner_on_elastic_base();
-    EXPECT_EQ(marked(crosspoint_pairs(nodes, {true, true, true})),
+    EXPECT_EQ(marked(
+                crosspoint_pairs(nodes, {true, true, true}, no_fixed_dofs())),
               Indices({0}));
     // With the vertical joint compliant the two bedding pairs base-a and
     // base-b act on different block nodes: no redundancy, nothing to
-    // mark (today: pair 4 is marked).
-    EXPECT_EQ(marked(crosspoint_pairs(nodes, {false, true, true})),
+    // mark.
+    EXPECT_EQ(marked(
+                crosspoint_pairs(nodes, {false, true, true}, no_fixed_dofs())),
               Indices());
   }
 
@@ -167,7 +172,8 @@ namespace
   TEST(Crosspoints, BlockCornerOnElasticBaseMarksVerticalPair)
   {
     const std::vector<ContactNode<2>> nodes = block_corner_on_elastic_base();
-    const std::vector<bool> yields = crosspoint_pairs(nodes, {true, true, true});
+    const std::vector<bool> yields =
+      crosspoint_pairs(nodes, {true, true, true}, no_fixed_dofs());
     ASSERT_EQ(yields.size(), nodes.size());
     EXPECT_TRUE(yields[0]);
     for (const unsigned int p : {1u, 2u, 3u, 5u, 6u})
@@ -186,46 +192,56 @@ namespace
     for (const auto &is_exact : std::vector<std::vector<bool>>{
            {false, true, true}, {true, false, false}})
       EXPECT_EQ(marked(crosspoint_pairs(block_corner_on_rigid_base(),
-                                        is_exact)),
+                                        is_exact,
+                                        no_fixed_dofs())),
                 Indices());
     EXPECT_EQ(marked(crosspoint_pairs(block_corner_on_elastic_base(),
-                                      {false, false, false})),
+                                      {false, false, false},
+                                      no_fixed_dofs())),
               Indices());
   }
 
   /**
-   * Pins down the obstacle pairs: a block corner against a rigid obstacle
-   * (joint 1, listed later) shares its node with an exact two-sided
-   * joint 0: the two-sided pair yields, the obstacle pairs stay exact.
-   * Listed the other way round (obstacle joint 0, two-sided joint 1) the
-   * obstacle pair yields. Obstacle pairs have no side-B node, so two
-   * obstacle joints whose side-A nodes differ make no crosspoint.
+   * Pins down the obstacle and fixed nodes as one ground vertex: a pair
+   * against the obstacle that shares a node with an exact two-sided pair
+   * closes no cycle by itself (the other block's corner is free: four
+   * independent constraints), so nothing yields, in either joint order;
+   * once the other corner is fixed by a support (both its DoFs Dirichlet,
+   * the face block's corner in S6) the two pairs tie one node to the
+   * ground twice and the earlier-listed pair yields; with one of the two
+   * DoFs fixed the node is no ground vertex.
    */
-  TEST(Crosspoints, ObstaclePairsSharingANode)
+  TEST(Crosspoints, ObstacleAndFixedNodesAreTheGround)
   {
-    EXPECT_EQ(
-      marked(crosspoint_pairs(
-        std::vector<ContactNode<2>>{
-          pair(0, {0., 0.}, 0.25, horizontal, corner_l, corner_r),
-          pair(0, {0., 0.5}, 0.5, horizontal, middle_l, middle_r),
-          obstacle_pair(1, {0., 0.}, 0.25, vertical, corner_r),
-          obstacle_pair(1, {0.5, 0.}, 0.25, vertical, bottom_r)},
-        {true, true})),
-      Indices({0}));
-    EXPECT_EQ(
-      marked(crosspoint_pairs(
-        std::vector<ContactNode<2>>{
-          obstacle_pair(0, {0.5, 0.}, 0.25, vertical, bottom_r),
-          obstacle_pair(0, {0., 0.}, 0.25, vertical, corner_r),
-          pair(1, {0., 0.}, 0.25, horizontal, corner_l, corner_r),
-          pair(1, {0., 0.5}, 0.5, horizontal, middle_l, middle_r)},
-        {true, true})),
-      Indices({1}));
+    const std::vector<ContactNode<2>> face_then_bedding{
+      pair(0, {0., 0.}, 0.25, horizontal, corner_l, corner_r),
+      pair(0, {0., 0.5}, 0.5, horizontal, middle_l, middle_r),
+      obstacle_pair(1, {0., 0.}, 0.25, vertical, corner_r),
+      obstacle_pair(1, {0.5, 0.}, 0.25, vertical, bottom_r)};
+    EXPECT_EQ(marked(crosspoint_pairs(face_then_bedding,
+                                      {true, true},
+                                      no_fixed_dofs())),
+              Indices());
     EXPECT_EQ(marked(crosspoint_pairs(
                 std::vector<ContactNode<2>>{
-                  obstacle_pair(0, {0., 0.}, 0.25, vertical, corner_l),
-                  obstacle_pair(1, {0., 0.}, 0.25, vertical, corner_r)},
-                {true, true})),
+                  obstacle_pair(0, {0.5, 0.}, 0.25, vertical, bottom_r),
+                  obstacle_pair(0, {0., 0.}, 0.25, vertical, corner_r),
+                  pair(1, {0., 0.}, 0.25, horizontal, corner_l, corner_r),
+                  pair(1, {0., 0.5}, 0.5, horizontal, middle_l, middle_r)},
+                {true, true},
+                no_fixed_dofs())),
               Indices());
+
+    dealii::IndexSet corner_l_fixed = no_fixed_dofs();
+    corner_l_fixed.add_index(dofs_of(corner_l)[0]);
+    EXPECT_EQ(marked(crosspoint_pairs(face_then_bedding,
+                                      {true, true},
+                                      corner_l_fixed)),
+              Indices());
+    corner_l_fixed.add_index(dofs_of(corner_l)[1]);
+    EXPECT_EQ(marked(crosspoint_pairs(face_then_bedding,
+                                      {true, true},
+                                      corner_l_fixed)),
+              Indices({0}));
   }
 } // namespace
