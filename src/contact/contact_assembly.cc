@@ -87,9 +87,22 @@ namespace FloorBlock::Contact
                   }
               }
           }
-        if (matrix != nullptr && residual != nullptr)
+        // The exact law's matrix also holds the multipliers' rows, so it
+        // is larger than the displacement residual; deal.II distributes a
+        // matrix and a vector together only if their sizes agree.
+        if (matrix != nullptr && residual != nullptr &&
+            matrix->m() == residual->size())
           constraints.distribute_local_to_global(
             local_matrix, local_residual, groups[p], *matrix, *residual);
+        else if (matrix != nullptr && residual != nullptr)
+          {
+            constraints.distribute_local_to_global(local_matrix,
+                                                   groups[p],
+                                                   *matrix);
+            constraints.distribute_local_to_global(local_residual,
+                                                   groups[p],
+                                                   *residual);
+          }
         else if (matrix != nullptr)
           constraints.distribute_local_to_global(local_matrix,
                                                  groups[p],

@@ -31,7 +31,8 @@ namespace FloorBlock::Contact
   /**
    * @brief Adds the pairs' internal forces \f$\pm w\,(−t_n n + t_t)\f$ to
    * @p residual and their tangents to @p matrix (either may be null),
-   * distributed with @p constraints.
+   * distributed with @p constraints. The matrix may be larger than the
+   * residual (the exact law's system, displacements and multipliers).
    */
   template <int dim>
   void

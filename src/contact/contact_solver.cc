@@ -192,7 +192,7 @@ namespace FloorBlock::Contact
           }
         // Exact law: the complementarity parameter per pair is a multiple
         // of the surface's own stiffness E / w, so that the multiplier and
-        // gap terms of the augmented multiplier weigh alike at every pair
+        // gap terms of the augmented multipliers weigh alike at every pair
         // whatever its cell size. It changes the Newton iterates, never
         // the converged answer.
         const double length = std::max(node.weight, smallest_cell);

@@ -33,8 +33,11 @@ namespace FloorBlock::Contact
    * @brief History and multipliers a pair carries into an evaluation.
    *
    * Compliant law: normal_base = 0 (the normal spring has no memory),
-   * tangential_base = shear traction at the last converged increment.
-   * Rigid law (augmented Lagrangian): the current multipliers.
+   * tangential_base = shear traction at the last converged increment. The
+   * exact (rigid) law keeps its multipliers in ExactContact and reads only
+   * reference_slip and intact here; normal_base is a pre-stress of the
+   * spring that no solver sets (the joint-report tests use it to build
+   * responses with a traction at zero gap).
    */
   template <int dim>
   struct JointHistory
@@ -79,9 +82,9 @@ namespace FloorBlock::Contact
 
   /**
    * @brief Coulomb joint with elastic normal and shear springs and a
-   * return mapping: the UDEC joint of the chapter's Table 6.1, and, with
-   * multipliers in the history, the augmented-Lagrangian form of rigid
-   * contact (Alart & Curnier 1991).
+   * return mapping: the UDEC joint of the chapter's Table 6.1; also the
+   * springs of the exact law's penalty start and crosspoints
+   * (ContactSolver).
    *
    * With jump \f$[u] = u_B - u_A + g_0 n\f$, gap \f$g = [u]\cdot n\f$,
    * slip \f$s = [u] - g n\f$:

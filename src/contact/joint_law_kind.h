@@ -11,6 +11,6 @@ namespace FloorBlock::Contact
   enum class JointLawKind
   {
     compliant, ///< UDEC joint: kn, ks springs with Coulomb slip
-    rigid      ///< exact non-penetration and Coulomb friction (augmented Lagrangian)
+    rigid      ///< exact non-penetration and Coulomb friction (ExactContact)
   };
 } // namespace FloorBlock::Contact

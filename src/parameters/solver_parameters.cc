@@ -68,10 +68,11 @@ namespace FloorBlock::Parameters
                       "normal stress is taken (the pointwise peak does not "
                       "converge at sharp corners). Units: m.");
     prm.declare_entry("Rigid penalty factor", "1", Double(1e-3, 1e6),
-                      "Rigid law: augmentation stiffness as this factor times "
-                      "E over the smallest cell diameter; larger values "
-                      "need fewer multiplier updates but the friction Newton "
-                      "diverged at 4 on the default scene. Units: none.");
+                      "Rigid law: the complementarity parameter of each joint "
+                      "node pair, this factor times E over the pair's length "
+                      "(at least the smallest cell diameter). It shapes the "
+                      "Newton iterates of the exact contact law, not its "
+                      "answer. Units: none.");
     prm.declare_entry("Error estimate", "refined solve",
                       Selection("refined solve|none"),
                       "How `run` estimates the discretisation error of each "
