@@ -143,7 +143,10 @@ namespace FloorBlock::Contact
     std::vector<const CoulombJoint<2> *>           pair_laws;
     /** Per pair: the exact law, empty for a compliant pair. */
     std::vector<std::optional<ExactPairLaw>>       exact_laws;
-    /** Rigid-law pairs as springs (kn = ks = c_n), for the penalty start. */
+    /**
+     * Owns the springs of rigid-law pairs: kn = ks = c_n for the penalty
+     * start, E/h for the pairs that yield at crosspoints.
+     */
     std::vector<std::unique_ptr<CoulombJoint<2>>> penalty_laws;
     /** pair_laws with the penalty springs in place of the exact law. */
     std::vector<const CoulombJoint<2> *>           penalty_pair_laws;

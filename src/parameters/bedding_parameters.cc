@@ -49,6 +49,13 @@ namespace FloorBlock::Parameters
     prm.leave_subsection();
   }
 
+  bool
+  BeddingParameters::flat_in_mesh() const
+  {
+    return floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
+           (shape == Geometry::BeddingShape::planar && inclination == 0.);
+  }
+
   void
   BeddingParameters::parse_parameters(ParameterHandler &prm)
   {

@@ -29,13 +29,9 @@ namespace FloorBlock::Parameters
       if (bedding.frame_dip != 0.)
         return "Bedding/Frame dip > 0: the rigid model's gravity is "
                "vertical in its frame";
-      const bool level_top =
-        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
-        (bedding.shape == Geometry::BeddingShape::planar &&
-         bedding.inclination == 0.);
       if (loading.support_load_direction ==
             SupportLoadDirection::top_normal &&
-          !level_top)
+          !bedding.flat_in_mesh())
         return "Loading/Support load direction = normal to block top on an "
                "inclined block top: the rigid model applies the support "
                "load vertically";

@@ -48,10 +48,7 @@ namespace FloorBlock::Parameters
                        "(rounded corners start with an open gap)");
 
     // The rigid half-plane is the plane y = 0 of the mesh.
-    const bool flat_bedding =
-      bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
-      (bedding.shape == Geometry::BeddingShape::planar && bedding.inclination == 0.);
-    if (bedding.rigid_base && !flat_bedding)
+    if (bedding.rigid_base && !bedding.flat_in_mesh())
       throw InputError("Bedding/Base", "rigid",
                        "needs a flat bedding in the mesh: Bedding/Floor "
                        "uplift reading = lifted, or Shape = planar with "

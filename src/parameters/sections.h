@@ -45,6 +45,13 @@ namespace FloorBlock::Parameters
     bool         rigid_base;  ///< rigid half-plane instead of the elastic base
     double       frame_dip;   ///< rad, dip of the frame's x axis below the horizontal
 
+    /**
+     * The bedding is the line y = 0 of the mesh (lifted reading, or a level
+     * planar bed), so the block tops are level too.
+     */
+    bool
+    flat_in_mesh() const;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
