@@ -160,7 +160,7 @@ namespace FloorBlock::Parameters
     unsigned int       max_newton_iterations;
     unsigned int       max_cutbacks;
     double             averaging_length; ///< m, for the averaged peak stress
-    double             rigid_penalty_factor;
+    double             complementarity_factor;
     /// Whether `run` repeats the solve one uniform ladder level finer and
     /// reports the differences as the discretisation error estimate.
     bool               estimate_error_by_refined_solve;

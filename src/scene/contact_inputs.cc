@@ -153,7 +153,7 @@ namespace FloorBlock::Scene
     settings.linear.direct_solver   = solver.direct_solver;
     settings.max_cutbacks           = solver.max_cutbacks;
     settings.averaging_length       = solver.averaging_length;
-    settings.rigid_penalty_factor   = solver.rigid_penalty_factor;
+    settings.complementarity_factor   = solver.complementarity_factor;
     settings.output_directory       = vtu_folder;
     return settings;
   }

@@ -57,8 +57,8 @@ main(int argc, char **argv)
 
   Contact::ContactSolverSettings settings;
   settings.verbose = true;
-  if (const char *factor = std::getenv("RIGID_PENALTY_FACTOR"))
-    settings.rigid_penalty_factor = std::atof(factor);
+  if (const char *factor = std::getenv("COMPLEMENTARITY_FACTOR"))
+    settings.complementarity_factor = std::atof(factor);
   if (const char *package = std::getenv("DIRECT_PACKAGE"))
     settings.linear.direct_package = package;
   if (const char *iterations = std::getenv("NEWTON_MAX_ITERATIONS"))
