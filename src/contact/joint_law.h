@@ -17,9 +17,9 @@ namespace FloorBlock::Contact
   /** @brief Material constants of a joint (SI units). */
   struct JointConstants
   {
-    /** Normal stiffness kn (Pa/m); for the rigid law the augmentation. */
+    /** Normal stiffness kn (Pa/m) of the compliant law's springs. */
     double normal_stiffness = 0.;
-    /** Shear stiffness ks (Pa/m); for the rigid law the augmentation. */
+    /** Shear stiffness ks (Pa/m) of the compliant law's springs. */
     double shear_stiffness = 0.;
     /** Friction angle (rad). */
     double friction_angle = 0.;

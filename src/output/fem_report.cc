@@ -77,6 +77,24 @@ namespace FloorBlock::Output
     }
   } // namespace
 
+  namespace
+  {
+    const char *
+    pair_state_name(const Contact::JointState state)
+    {
+      switch (state)
+        {
+          case Contact::JointState::open:
+            return "open";
+          case Contact::JointState::stick:
+            return "stick";
+          case Contact::JointState::slip:
+            return "slip";
+        }
+      return "";
+    }
+  } // namespace
+
   std::string
   state_summary(const Contact::StateCounts &counts)
   {
@@ -260,6 +278,40 @@ namespace FloorBlock::Output
             joint.peak_normal_stress, joint.averaged_peak_normal_stress,
             joint.mean_normal_stress, joint.counts.n_stick,
             joint.counts.n_slip, joint.counts.n_open);
+      }
+    return csv;
+  }
+
+  std::string
+  joint_profiles_csv(const Contact::SolveResult &result)
+  {
+    std::string csv = fmt::format(
+      "# {}\n# One row per node pair of a joint, in order along the joint; "
+      "normal traction > 0 in compression, shear along the joint tangent "
+      "(-n_y, n_x) of the pair's side-A normal n.\n"
+      "increment,stage,stage_factor,joint,node,x_m,y_m,arc_position_m,gap_m,"
+      "normal_traction_Pa,shear_traction_Pa,state\n",
+      numbering_note);
+    for (std::size_t k = 0; k < result.increments.size(); ++k)
+      {
+        const auto &increment = result.increments[k];
+        const bool  stage_end = k + 1 == result.increments.size() ||
+                               result.increments[k + 1].stage != increment.stage;
+        if (!stage_end)
+          continue;
+        for (const auto &joint : increment.joints)
+          for (std::size_t i = 0; i < joint.profile.size(); ++i)
+            {
+              const auto &sample = joint.profile[i];
+              csv += fmt::format(
+                "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
+                "{:.9e},{}\n",
+                k + 1, stage_name(increment.stage), increment.stage_factor,
+                joint.name, i, sample.position[0], sample.position[1],
+                sample.arc_position, sample.gap, sample.normal_traction,
+                sample.tangential_traction,
+                pair_state_name(sample.state));
+            }
       }
     return csv;
   }

@@ -121,6 +121,16 @@ namespace FloorBlock::Output
   joints_csv(const Contact::SolveResult &result, const double support_width);
 
   /**
+   * @brief joint_profiles.csv: one row per joint node pair at the last
+   * increment of every stage, in arc order along each joint: position,
+   * gap, nodal normal and shear traction, state. The contact-zone ends
+   * and the corner stress fields of the joint tables, node by node (every
+   * increment's state is in the VTU files).
+   */
+  std::string
+  joint_profiles_csv(const Contact::SolveResult &result);
+
+  /**
    * @brief The two bodies a joint separates, chapter numbering: [j, j+1] or
    * [n, "face"] for vertical joint j, [i, "base"] for the bedding under i.
    */

@@ -152,5 +152,7 @@ namespace FloorBlock::Pipeline
                       Output::fem_json(outcome.result, outcome.report));
     folder.write("joints.csv", Output::joints_csv(
                                  outcome.result, outcome.report.support_width));
+    folder.write("joint_profiles.csv",
+                 Output::joint_profiles_csv(outcome.result));
   }
 } // namespace FloorBlock::Pipeline

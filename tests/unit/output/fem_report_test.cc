@@ -47,3 +47,52 @@ namespace
       << text;
   }
 } // namespace
+
+namespace
+{
+  using namespace FloorBlock;
+
+  Contact::IncrementResult
+  increment_with_one_pair(const Contact::LoadStage stage,
+                          const double             traction)
+  {
+    Contact::IncrementResult increment;
+    increment.stage        = stage;
+    increment.stage_factor = 1.;
+    Contact::JointReport joint;
+    joint.name = "vertical 1";
+    Contact::JointNodeSample sample;
+    sample.position        = dealii::Point<2>(5., 0.25);
+    sample.arc_position    = 0.25;
+    sample.gap             = 0.;
+    sample.normal_traction = traction;
+    sample.state           = Contact::JointState::stick;
+    joint.profile.push_back(sample);
+    increment.joints.push_back(joint);
+    return increment;
+  }
+
+  // One block of rows per stage, from the stage's last increment; each row
+  // carries the pair's position, traction and state.
+  TEST(FemReport, JointProfilesAtTheEndOfEveryStage)
+  {
+    Contact::SolveResult result;
+    result.increments.push_back(
+      increment_with_one_pair(Contact::LoadStage::gravity, 1e5));
+    result.increments.push_back(
+      increment_with_one_pair(Contact::LoadStage::uplift, 2e5));
+    result.increments.push_back(
+      increment_with_one_pair(Contact::LoadStage::uplift, 3e5));
+    const std::string csv = Output::joint_profiles_csv(result);
+    EXPECT_NE(csv.find("increment,stage,stage_factor,joint,node,x_m,y_m,"
+                       "arc_position_m,gap_m,normal_traction_Pa,"
+                       "shear_traction_Pa,state\n"),
+              std::string::npos);
+    EXPECT_NE(csv.find("1,gravity,1.000000,vertical 1,0,5.000000000e+00,"
+                       "2.500000000e-01,2.500000000e-01,0.000000000e+00,"
+                       "1.000000000e+05,0.000000000e+00,stick\n"),
+              std::string::npos);
+    EXPECT_EQ(csv.find("2.000000000e+05"), std::string::npos);
+    EXPECT_NE(csv.find("3,uplift,1.000000,vertical 1,0,"), std::string::npos);
+  }
+} // namespace
