@@ -248,6 +248,7 @@ namespace FloorBlock::Contact
         // The tangent stays zero: the multipliers' Jacobian is assembled
         // here, not through the pair's law.
         response.closure_stiffness = pair.surface_stiffness;
+        response.exact_traction    = true;
       }
   }
 

@@ -74,6 +74,12 @@ namespace FloorBlock::Contact
      * the exact law; 0 when open.
      */
     double closure_stiffness = 0.;
+    /**
+     * The traction is an exact-contact multiplier (rigid law): at the end
+     * of a closed zone it falls like the square root of the distance to
+     * the end, not linearly as a spring's (make_joint_reports()).
+     */
+    bool exact_traction = false;
     /** Normal gap (m), negative = overlap. */
     double gap = 0.;
     /** Tangential relative displacement (m). */

@@ -90,6 +90,52 @@ namespace FloorBlock::Contact
     }
 
     /**
+     * Fraction of the segment from the closed node @p closed to its open
+     * neighbour @p open that is closed (see make_joint_reports()).
+     * Exact-law tractions fall like the square root of the distance to
+     * the end of the zone, so t_n^2 is linear there: extrapolated from
+     * @p closed and the next closed node beyond it to zero. Elsewhere
+     * (compliant springs: gap and traction linear along a degree-1 edge;
+     * a zone of one node) the zero of the linear interpolation of the
+     * contact indicator. NaN when neither applies.
+     */
+    double
+    closed_fraction(const std::vector<JointNodeSample> &profile,
+                    const std::vector<double>          &indicators,
+                    const unsigned int                  closed,
+                    const unsigned int                  open)
+    {
+      const bool         inward_up = closed > open;
+      const bool         has_next  = inward_up ? closed + 1 < profile.size() :
+                                                 closed > 0;
+      const unsigned int next      = inward_up ? closed + 1 : closed - 1;
+      const JointNodeSample &end_node = profile[closed];
+      if (end_node.exact_traction && has_next &&
+          profile[next].state != JointState::open &&
+          profile[next].exact_traction)
+        {
+          const double p_end  = std::max(0., end_node.normal_traction);
+          const double p_next = profile[next].normal_traction;
+          const double segment =
+            std::abs(profile[open].arc_position - end_node.arc_position);
+          if (p_next > p_end && segment > 0.)
+            {
+              const double spacing = std::abs(profile[next].arc_position -
+                                              end_node.arc_position);
+              const double beyond  = p_end * p_end * spacing /
+                                    (p_next * p_next - p_end * p_end);
+              return std::min(1., beyond / segment);
+            }
+        }
+      const double inside  = indicators[closed];
+      const double outside = indicators[open];
+      // Also false for a NaN indicator.
+      if (!(inside >= 0. && outside < 0.))
+        return std::numeric_limits<double>::quiet_NaN();
+      return inside / (inside - outside);
+    }
+
+    /**
      * Closed length with interpolated contact ends (see
      * make_joint_reports()): the closed nodes' weights, and on every
      * segment between a closed and an open node the interpolated closed
@@ -115,13 +161,15 @@ namespace FloorBlock::Contact
             continue;
           const double closed_share =
             first_closed ? shares[k].second : shares[k + 1].first;
-          const double segment = shares[k].second + shares[k + 1].first;
-          const double inside  = indicators[first_closed ? k : k + 1];
-          const double outside = indicators[first_closed ? k + 1 : k];
-          // Also false for a NaN indicator: keep the node measure.
-          if (!(inside >= 0. && outside < 0.))
+          const double segment  = shares[k].second + shares[k + 1].first;
+          const double fraction = closed_fraction(profile,
+                                                  indicators,
+                                                  first_closed ? k : k + 1,
+                                                  first_closed ? k + 1 : k);
+          // NaN: keep the node measure.
+          if (std::isnan(fraction))
             continue;
-          length += inside / (inside - outside) * segment - closed_share;
+          length += fraction * segment - closed_share;
         }
       return length;
     }
@@ -236,8 +284,9 @@ namespace FloorBlock::Contact
             sample.normal_traction = response.normal_traction;
             sample.tangential_traction =
               response.tangential_traction * tangent_of(nodes[p].normal);
-            sample.gap   = response.gap;
-            sample.state = response.state;
+            sample.gap            = response.gap;
+            sample.state          = response.state;
+            sample.exact_traction = response.exact_traction;
             report.profile.push_back(sample);
             weights.push_back(weight);
             indicators.push_back(

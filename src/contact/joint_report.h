@@ -57,7 +57,14 @@ namespace FloorBlock::Contact
    * own length for straight joints of degree 1 or 2). A segment between
    * two closed nodes counts whole, between two open ones not at all;
    * between a closed node c and an open node o it counts the fraction
-   * \f$\phi_c / (\phi_c - \phi_o)\f$ from c. All nodes closed: the sum
+   * \f$\phi_c / (\phi_c - \phi_o)\f$ from c (compliant law), or, for
+   * the exact law's tractions (JointResponse::exact_traction), which fall
+   * like the square root of the distance to the end, the distance at
+   * which \f$t_n^2\f$, extrapolated linearly from c and the next closed
+   * node c' beyond it, reaches zero: \f$t_c^2 |s_c - s_{c'}| / (t_{c'}^2 -
+   * t_c^2)\f$, at most the whole segment (needs \f$t_{c'} > t_c\f$;
+   * otherwise the indicator rule). Measured in src/contact/README.md
+   * ("Closed length"). All nodes closed: the sum
    * of the weights; all open: 0. Where the indicator does not change sign
    * across such a segment (a closed pair held in tension by an intact
    * tensile strength, \f$\phi_c < 0\f$) the segment keeps c's share, the

@@ -25,6 +25,8 @@ namespace FloorBlock::Contact
     double           tangential_traction = 0.; ///< Pa, along the tangent (-n_y, n_x)
     double           gap                 = 0.; ///< m
     JointState       state               = JointState::open;
+    /** JointResponse::exact_traction of the pair. */
+    bool exact_traction = false;
   };
 
   /** @brief Post-processed forces of one joint (2D: per metre out of plane). */

@@ -177,7 +177,7 @@ namespace FloorBlock::Parameters
     double       hertz_line_load;      ///< P (N/m)
     double       hertz_youngs_modulus; ///< E of the cylinder (Pa)
     double       hertz_poissons_ratio; ///< nu of the cylinder
-    unsigned int hertz_mesh_level;     ///< local refinements at the contact
+    unsigned int hertz_cells_per_half_width; ///< contact cell size a / N
     double       patch_pressure;       ///< patch test pressure (Pa)
     double       incline_margin;       ///< |tan(alpha)/mu - 1| either side
     double       two_blocks_lateral_pressure; ///< Pa

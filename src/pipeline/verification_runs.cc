@@ -57,7 +57,8 @@ namespace FloorBlock::Pipeline
       settings.line_load      = scene.verify.hertz_line_load;
       settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
       settings.poissons_ratio = scene.verify.hertz_poissons_ratio;
-      settings.mesh_level     = scene.verify.hertz_mesh_level;
+      settings.cells_per_half_width =
+        scene.verify.hertz_cells_per_half_width;
       settings.law                 = scene.joints.law;
       settings.compliant_stiffness = scene.joints.normal_stiffness;
       settings.fe_degree           = scene.solver.fe_degree;
@@ -70,7 +71,8 @@ namespace FloorBlock::Pipeline
                {"peak_pressure",
                 quantity(result.peak_pressure_computed,
                          result.peak_pressure_exact,
-                         Verification::hertz_peak_pressure_tolerance)}},
+                         Verification::hertz_peak_pressure_tolerance(
+                           result.half_width_exact, settings.radius))}},
               {{"contact_cell_size_m", result.contact_cell_size}},
               {{"n_dofs", result.n_dofs}}};
     }

@@ -71,9 +71,9 @@ namespace FloorBlock::Benchmark
             number_list<double>("--refinements", value_of("--refinements"));
         else if (!value_of("--laws").empty())
           options.joint_laws = law_list(value_of("--laws"));
-        else if (!value_of("--hertz_levels").empty())
-          options.hertz_levels = number_list<unsigned int>(
-            "--hertz_levels", value_of("--hertz_levels"));
+        else if (!value_of("--hertz_cells").empty())
+          options.hertz_cells_per_half_width = number_list<unsigned int>(
+            "--hertz_cells", value_of("--hertz_cells"));
         else if (!value_of("--level_time_limit").empty())
           options.level_time_limit = number_list<double>(
             "--level_time_limit", value_of("--level_time_limit"))[0];
@@ -98,7 +98,7 @@ namespace FloorBlock::Benchmark
            "  --refinements=0.5,1,2   divide Mesh/Corner size and Mesh/Far "
            "size by each\n"
            "  --laws=compliant,rigid  joint laws of the whole contact solve\n"
-           "  --hertz_levels=5,6,7    Hertz mesh levels\n"
+           "  --hertz_cells=16,32,64  Hertz contact cells per half-width\n"
            "  --level_time_limit=120  skip finer contact solves of a law "
            "after one took longer (s)\n";
   }

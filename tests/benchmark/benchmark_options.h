@@ -16,8 +16,8 @@ namespace FloorBlock::Benchmark
     std::vector<double> refinements = {0.5, 1., 2., 4., 8.};
     /** Joint laws of the whole contact solve. */
     std::vector<std::string> joint_laws = {"compliant", "rigid"};
-    /** HertzSettings::mesh_level of the Hertz runs. */
-    std::vector<unsigned int> hertz_levels = {5, 6, 7};
+    /** HertzSettings::cells_per_half_width of the Hertz runs. */
+    std::vector<unsigned int> hertz_cells_per_half_width = {16, 32, 64};
     /**
      * A law's contact solve on the next finer mesh is skipped once one
      * level took longer than this (wall, s).

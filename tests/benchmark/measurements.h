@@ -65,7 +65,7 @@ namespace FloorBlock::Benchmark
   /** @brief One Hertz verification run. */
   struct HertzRecord
   {
-    unsigned int mesh_level = 0;
+    unsigned int cells_per_half_width = 0;
     unsigned int n_dofs     = 0;
     unsigned int n_newton_iterations  = 0;
     StageTime    time;
@@ -78,7 +78,7 @@ namespace FloorBlock::Benchmark
   struct Records
   {
     std::map<double, LevelRecord>       levels; ///< by refinement
-    std::map<unsigned int, HertzRecord> hertz;  ///< by mesh level
+    std::map<unsigned int, HertzRecord> hertz;  ///< by cells per half-width
   };
 
   /** @brief The process-wide records (benchmarks run one after another). */

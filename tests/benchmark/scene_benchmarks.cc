@@ -311,14 +311,14 @@ namespace FloorBlock::Benchmark
     }
 
     void
-    hertz_benchmark(benchmark::State &state, const unsigned int mesh_level)
+    hertz_benchmark(benchmark::State &state, const unsigned int cells)
     {
       HertzRecord record;
-      record.mesh_level = mesh_level;
+      record.cells_per_half_width = cells;
       for (auto _ : state)
         {
           Verification::HertzSettings settings;
-          settings.mesh_level = mesh_level;
+          settings.cells_per_half_width = cells;
           const Stopwatch clock;
           try
             {
@@ -336,7 +336,7 @@ namespace FloorBlock::Benchmark
             }
           record.time = {clock.wall_seconds(), clock.cpu_seconds()};
         }
-      records().hertz[mesh_level] = record;
+      records().hertz[cells] = record;
       state.counters["dofs"]   = record.n_dofs;
       state.counters["newton"] = record.n_newton_iterations;
       state.counters["half_width_error_pct"] = 100. * record.half_width_error;
@@ -394,10 +394,10 @@ namespace FloorBlock::Benchmark
   void
   register_hertz_benchmarks(const BenchmarkOptions &options)
   {
-    for (const unsigned int level : options.hertz_levels)
+    for (const unsigned int cells : options.hertz_cells_per_half_width)
       benchmark::RegisterBenchmark(
-        ("hertz/level" + std::to_string(level)).c_str(),
-        [=](benchmark::State &state) { hertz_benchmark(state, level); })
+        ("hertz/cells" + std::to_string(cells)).c_str(),
+        [=](benchmark::State &state) { hertz_benchmark(state, cells); })
         ->Iterations(1)
         ->Unit(benchmark::kSecond)
         ->UseRealTime()

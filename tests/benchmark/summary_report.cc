@@ -283,18 +283,18 @@ namespace FloorBlock::Benchmark
         return "";
       std::string text =
         "\n### Hertz verification (run_hertz_verification, rigid law)\n\n"
-        "| mesh level | DoFs | Newton iterations | wall "
+        "| cells per half-width | DoFs | Newton iterations | wall "
         "(s) | CPU (s) | half-width error (%) | peak pressure error (%) |\n"
         "|---|---|---|---|---|---|---|\n";
-      for (const auto &[level, hertz] : all.hertz)
+      for (const auto &[cells, hertz] : all.hertz)
         text += hertz.failure.empty() ?
                   fmt::format("| {} | {} | {} | {:.2f} | {:.2f} | "
                               "{:+.2f} | {:+.2f} |\n",
-                              level, hertz.n_dofs, hertz.n_newton_iterations,
+                              cells, hertz.n_dofs, hertz.n_newton_iterations,
                               hertz.time.wall,
                               hertz.time.cpu, 100. * hertz.half_width_error,
                               100. * hertz.peak_pressure_error) :
-                  fmt::format("| {} | failed: {} |\n", level, hertz.failure);
+                  fmt::format("| {} | failed: {} |\n", cells, hertz.failure);
       return text;
     }
   } // namespace

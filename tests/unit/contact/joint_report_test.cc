@@ -242,6 +242,45 @@ namespace
     EXPECT_NEAR(report.closed_length, 0.40554723, 1e-8);
   }
 
+  // Exact-law tractions fall like the square root of the distance to the
+  // end: p = A sqrt(end - y) below the end, open above. t_n^2 is linear
+  // in y, so its extrapolation from the last two closed nodes finds the
+  // end exactly, wherever it lies between the nodes; the linear indicator
+  // rule would not (it needs the gap scale).
+  TEST(JointReport, ExactTractionEndsWhereItsSquareVanishes)
+  {
+    constexpr unsigned int n_cells = 10;
+    constexpr double       spacing = 0.1; // m
+    for (const double end : {0.4001, 0.437, 0.45, 0.4999})
+      {
+        std::vector<ContactNode<2>>   nodes;
+        std::vector<JointResponse<2>> responses;
+        for (unsigned int k = 0; k <= n_cells; ++k)
+          {
+            const double   height = k * spacing;
+            ContactNode<2> node;
+            node.position  = dealii::Point<2>(0., height);
+            node.normal[0] = 1.;
+            node.weight    = (k == 0 || k == n_cells) ? spacing / 2. : spacing;
+            nodes.push_back(node);
+            JointResponse<2> response;
+            response.exact_traction    = true;
+            response.closure_stiffness = 1e11;
+            if (height < end)
+              {
+                response.state           = JointState::stick;
+                response.normal_traction = 1e7 * std::sqrt(end - height);
+              }
+            else
+              response.gap = 1e-4 * std::pow(height - end, 1.5);
+            responses.push_back(response);
+          }
+        const JointReport report =
+          make_joint_reports(nodes, responses, {"joint"}, 0.05).at(0);
+        EXPECT_NEAR(report.closed_length, end, 1e-12) << "end " << end;
+      }
+  }
+
   TEST(JointReport, MidJointOpeningHasTwoInterpolatedEnds)
   {
     // g(y) = gap - slope |y - 0.5|: open for |y - 0.5| < gap / slope =

@@ -1,5 +1,7 @@
 // Hertz line contact: elastic cylinder on a rigid flat, plane strain,
-// frictionless, against Johnson (1985) eq. 4.43/4.45.
+// frictionless, against Johnson (1985) eq. 4.43/4.45. The mesh is sized
+// from the closed-form half-width a (HertzSettings::cells_per_half_width),
+// the half-width read off the joint report's closed length.
 #include <verification/hertz_verification.h>
 
 #include <gtest/gtest.h>
@@ -12,64 +14,112 @@ namespace
   using namespace FloorBlock::Contact;
   using namespace FloorBlock::Verification;
 
-  HertzResult
-  run_level(const unsigned int level, const JointLawKind law)
+  /** A load giving half-width ratio a/R on a cylinder of E, nu. */
+  HertzSettings
+  case_with_ratio(const double radius,
+                  const double youngs_modulus,
+                  const double poissons_ratio,
+                  const double ratio)
   {
+    // a^2 = 4 P R / (pi E*), E* = E / (1 - nu^2).
+    const double contact_modulus =
+      youngs_modulus / (1. - poissons_ratio * poissons_ratio);
+    const double half_width = ratio * radius;
     HertzSettings settings;
-    settings.mesh_level = level;
-    settings.law        = law;
+    settings.radius         = radius;
+    settings.youngs_modulus = youngs_modulus;
+    settings.poissons_ratio = poissons_ratio;
+    settings.line_load =
+      M_PI * contact_modulus * half_width * half_width / (4. * radius);
+    return settings;
+  }
+
+  HertzResult
+  run(const HertzSettings &settings)
+  {
     const HertzResult result = run_hertz_verification(settings);
-    std::cout << "level " << level << ": h " << result.contact_cell_size
-              << " m, a " << result.half_width_computed << " / "
-              << result.half_width_exact << " (" << 100. * result.half_width_error()
-              << " %), p0 " << result.peak_pressure_computed << " / "
-              << result.peak_pressure_exact << " ("
-              << 100. * result.peak_pressure_error() << " %), dofs "
-              << result.n_dofs << std::endl;
+    std::cout << "R " << settings.radius << " P " << settings.line_load
+              << " E " << settings.youngs_modulus << " nu "
+              << settings.poissons_ratio << " N "
+              << settings.cells_per_half_width << ": a/R "
+              << result.half_width_exact / settings.radius << ", a error "
+              << 100. * result.half_width_error() << " %, p0 error "
+              << 100. * result.peak_pressure_error() << " %, "
+              << result.n_dofs << " DoFs" << std::endl;
     return result;
   }
 
-  TEST(Hertz, RigidLawMatchesClosedFormAndConverges)
+  // The acceptance bounds of `verify hertz` (half-width 0.5 %, peak
+  // pressure 0.1 % + 0.3 (a/R)^2) on five cylinders spread over a/R from
+  // 0.001 to 0.1, with different radii, moduli and Poisson's ratios, at
+  // the default resolution. Measured: a within 0.25 %, p0 within 0.05 %
+  // up to a/R = 0.05 and -0.22 % at 0.1 (Hertz's own model error, next
+  // test).
+  TEST(Hertz, EveryRatioMeetsTheToleranceWithoutMeshSettings)
   {
-    const HertzResult coarse = run_level(5, JointLawKind::rigid);
-    const HertzResult medium = run_level(6, JointLawKind::rigid);
-    const HertzResult fine   = run_level(7, JointLawKind::rigid);
-    // The load is carried in full (vertical equilibrium of the half model).
-    EXPECT_NEAR(fine.contact_force, 2.0e7, 1e-6 * 2.0e7);
-    // Acceptance bounds of the issue (the CLI's): a within 2 %, p0 within
-    // 5 %. The nodal half-width is exact to half a contact cell, and the
-    // half-space assumption costs O((a/R)^2) = 0.3 % at a/R = 0.05.
-    EXPECT_LT(std::abs(fine.half_width_error()), hertz_half_width_tolerance);
-    EXPECT_LT(std::abs(fine.peak_pressure_error()),
-              hertz_peak_pressure_tolerance);
-    // The nodal contact edge resolves the true edge to one contact cell
-    // (the midpoint rule adds half a cell, the FE gap error at the edge up
-    // to another half), so the error must fall with the cell size.
-    EXPECT_LT(std::abs(medium.half_width_error()),
-              std::abs(coarse.half_width_error()));
-    EXPECT_LT(std::abs(fine.half_width_error()),
-              std::abs(medium.half_width_error()));
-    for (const HertzResult *result : {&coarse, &medium, &fine})
-      EXPECT_LT(std::abs(result->half_width_computed - result->half_width_exact),
-                result->contact_cell_size);
-    // The peak pressure is already at the model error (finite body,
-    // half-space assumption, ~0.3 %) on the coarse mesh, so it is only
-    // required to stay there rather than to keep falling.
-    EXPECT_LT(std::abs(coarse.peak_pressure_error()),
-              hertz_peak_pressure_tolerance);
-    EXPECT_LT(std::abs(medium.peak_pressure_error()),
-              hertz_peak_pressure_tolerance);
+    const HertzSettings cases[] = {case_with_ratio(1., 1e10, 0.3, 0.001),
+                                   case_with_ratio(1., 1.61e10, 0.2, 0.0087),
+                                   case_with_ratio(0.2, 5e10, 0.3, 0.02),
+                                   case_with_ratio(1., 1e10, 0.3, 0.048),
+                                   case_with_ratio(3., 2e9, 0.45, 0.1)};
+    for (const HertzSettings &settings : cases)
+      {
+        const HertzResult result = run(settings);
+        // The load is carried in full (vertical equilibrium of the half
+        // model).
+        EXPECT_NEAR(result.contact_force,
+                    settings.line_load,
+                    1e-6 * settings.line_load);
+        EXPECT_LT(std::abs(result.half_width_error()),
+                  hertz_half_width_tolerance);
+        EXPECT_LT(std::abs(result.peak_pressure_error()),
+                  hertz_peak_pressure_tolerance(result.half_width_exact,
+                                                settings.radius));
+        // The end lies within the cell between the last closed and the
+        // first open node.
+        EXPECT_LT(std::abs(result.half_width_computed -
+                           result.half_width_exact),
+                  result.contact_cell_size);
+      }
+  }
+
+  // What the peak-pressure allowance 0.3 (a/R)^2 stands for: at a/R = 0.1
+  // the disc's peak pressure differs from Hertz's half-space value by the
+  // same amount at 32 and 64 cells per half-width (measured -0.219 % and
+  // -0.221 %), so the difference is the closed form's, not the mesh's;
+  // at a/R = 0.001 the same model gives p0 within 0.05 %.
+  TEST(Hertz, PeakPressureDifferenceAtLargeRatioIsTheClosedFormsOwn)
+  {
+    HertzSettings settings = case_with_ratio(1., 1e10, 0.3, 0.1);
+    const HertzResult medium = run(settings);
+    settings.cells_per_half_width = 64;
+    const HertzResult fine = run(settings);
+    EXPECT_NEAR(medium.peak_pressure_error(), fine.peak_pressure_error(),
+                2e-4);
+    EXPECT_LT(fine.peak_pressure_error(), -1e-3);
+    EXPECT_GT(fine.peak_pressure_error(),
+              -hertz_model_error_coefficient * 0.1 * 0.1);
   }
 
   TEST(Hertz, StiffCompliantLawAgreesWithRigidLaw)
   {
-    const HertzResult rigid     = run_level(5, JointLawKind::rigid);
-    const HertzResult compliant = run_level(5, JointLawKind::compliant);
-    // kn = 1e14 Pa/m within 0.1 % of the exact (rigid) law: measured 0
-    // (half-width, same nodes) and 0.068 % (peak pressure) at level 5.
-    EXPECT_NEAR(compliant.half_width_computed, rigid.half_width_computed,
-                0.001 * rigid.half_width_computed);
+    HertzSettings settings;
+    settings.cells_per_half_width = 16;
+    const HertzResult rigid = run(settings);
+    settings.law            = JointLawKind::compliant;
+    const HertzResult compliant = run(settings);
+    // kn = 1e14 Pa/m within 0.1 % of the exact (rigid) law in the peak
+    // pressure (measured 0.07 %). The discrete contacts differ by at most
+    // one node at the end (measured: one; the stiff springs let the node
+    // just beyond a touch), and the reported half-widths by more (0.2 %
+    // against 2 % at 16 cells per half-width), because the end rules
+    // differ: the compliant law's linear gap puts a stiff joint's end next
+    // to its last closed node, the exact law's square-root traction
+    // between the nodes.
     EXPECT_NEAR(compliant.peak_pressure_computed, rigid.peak_pressure_computed,
                 0.001 * rigid.peak_pressure_computed);
+    EXPECT_LE(std::abs(compliant.last_closed_position -
+                       rigid.last_closed_position),
+              1.01 * rigid.contact_cell_size);
   }
 } // namespace
