@@ -42,21 +42,6 @@ namespace FloorBlock::Contact
     /** kn h / E above which a failure suggests the rigid law (-). */
     constexpr double ill_conditioned_joint_ratio = 3.;
 
-    const char *
-    stage_name(const LoadStage stage)
-    {
-      switch (stage)
-        {
-          case LoadStage::gravity:
-            return "gravity";
-          case LoadStage::support_pressure:
-            return "support pressure";
-          case LoadStage::uplift:
-            return "uplift";
-        }
-      return "";
-    }
-
     std::vector<JointState>
     states_of(const std::vector<JointResponse<2>> &responses)
     {
@@ -614,7 +599,7 @@ namespace FloorBlock::Contact
   }
 
   void
-  ContactSolver::run_stage(const LoadStage    stage,
+  ContactSolver::run_stage(const Loading::LoadStage    stage,
                            const unsigned int n_increments,
                            SolveResult       &result)
   {
@@ -635,15 +620,15 @@ namespace FloorBlock::Contact
         LoadFactors  factors = committed_factors;
         switch (stage)
           {
-            case LoadStage::gravity:
+            case Loading::LoadStage::gravity:
               factors = {target, 0., 0.};
               break;
-            case LoadStage::support_pressure:
+            case Loading::LoadStage::support_pressure:
               factors = {problem.steps.gravity_with_pressure ? target : 1.,
                          target,
                          0.};
               break;
-            case LoadStage::uplift:
+            case Loading::LoadStage::uplift:
               factors = {1., 1., target};
               break;
           }
@@ -657,7 +642,7 @@ namespace FloorBlock::Contact
         const auto record_failure = [&](const std::string &start) {
           n_failed_newton_iterations += increment.n_newton_iterations;
           std::ostringstream attempt;
-          attempt << stage_name(stage) << " factor " << target << " (step "
+          attempt << Loading::stage_name(stage) << " factor " << target << " (step "
                   << step << start << "): " << reason;
           failed_attempts.push_back(attempt.str());
           console << "  failed: " << attempt.str() << std::endl;
@@ -714,7 +699,7 @@ namespace FloorBlock::Contact
             n_failed          = 0;
             step              = std::min(nominal_step, 2. * step);
             increment.wall_time = clock.wall_time();
-            console << "  " << stage_name(stage) << " " << target
+            console << "  " << Loading::stage_name(stage) << " " << target
                     << ": newton " << increment.n_newton_iterations
                     << ", stick/slip/open " << increment.counts.n_stick
                     << "/" << increment.counts.n_slip << "/"
@@ -733,7 +718,7 @@ namespace FloorBlock::Contact
         if (++n_failed > settings.max_cutbacks)
           throw ContactSolveFailure(
             std::string("contact solve failed in stage '") +
-              stage_name(stage) + "' after " +
+              Loading::stage_name(stage) + "' after " +
               std::to_string(settings.max_cutbacks) + " cutbacks: " + reason +
               stiffness_hint,
             failed_attempts,
@@ -761,9 +746,9 @@ namespace FloorBlock::Contact
     try
       {
         if (!problem.steps.gravity_with_pressure)
-          run_stage(LoadStage::gravity, problem.steps.n_gravity, result);
-        run_stage(LoadStage::support_pressure, problem.steps.n_pressure, result);
-        run_stage(LoadStage::uplift, problem.steps.n_uplift, result);
+          run_stage(Loading::LoadStage::gravity, problem.steps.n_gravity, result);
+        run_stage(Loading::LoadStage::support_pressure, problem.steps.n_pressure, result);
+        run_stage(Loading::LoadStage::uplift, problem.steps.n_uplift, result);
       }
     catch (ContactSolveFailure &failure)
       {

@@ -89,7 +89,7 @@ namespace FloorBlock::Contact
     void
     add_statistics(SolveResult &result) const;
     void
-    run_stage(const LoadStage    stage,
+    run_stage(const Loading::LoadStage    stage,
               const unsigned int n_increments,
               SolveResult       &result);
     /** @p prediction: multiple of last_change added to the start (0: none). */

@@ -15,32 +15,17 @@ namespace FloorBlock::RigidBlocks
     /** Fraction of a stage treated as its end (-). */
     constexpr double stage_end_tolerance = 1e-12;
 
-    const char *
-    stage_name(const Contact::LoadStage stage)
-    {
-      switch (stage)
-        {
-          case Contact::LoadStage::gravity:
-            return "gravity";
-          case Contact::LoadStage::support_pressure:
-            return "support load";
-          case Contact::LoadStage::uplift:
-            return "uplift";
-        }
-      return "unknown";
-    }
-
     /** Factors at fraction @p target of @p stage (earlier stages complete). */
     LoadFactors
-    stage_factors(const Contact::LoadStage stage, const double target)
+    stage_factors(const Loading::LoadStage stage, const double target)
     {
       switch (stage)
         {
-          case Contact::LoadStage::gravity:
+          case Loading::LoadStage::gravity:
             return {target, 0., 0.};
-          case Contact::LoadStage::support_pressure:
+          case Loading::LoadStage::support_pressure:
             return {1., target, 0.};
-          case Contact::LoadStage::uplift:
+          case Loading::LoadStage::uplift:
             return {1., 1., target};
         }
       return {};
@@ -101,10 +86,10 @@ namespace FloorBlock::RigidBlocks
     path.histories = joints.virgin_histories();
     const RigidSolverSettings &settings = description.solver;
 
-    const std::vector<std::pair<Contact::LoadStage, unsigned int>> stages = {
-      {Contact::LoadStage::gravity, description.steps.n_gravity},
-      {Contact::LoadStage::support_pressure, description.steps.n_pressure},
-      {Contact::LoadStage::uplift, description.steps.n_uplift}};
+    const std::vector<std::pair<Loading::LoadStage, unsigned int>> stages = {
+      {Loading::LoadStage::gravity, description.steps.n_gravity},
+      {Loading::LoadStage::support_pressure, description.steps.n_pressure},
+      {Loading::LoadStage::uplift, description.steps.n_uplift}};
 
     for (const auto &[stage, n_increments] : stages)
       {
@@ -174,7 +159,7 @@ namespace FloorBlock::RigidBlocks
                 continue;
               }
             std::ostringstream attempt;
-            attempt << stage_name(stage) << " factor " << target << " (step "
+            attempt << Loading::stage_name(stage) << " factor " << target << " (step "
                     << step << "): " << outcome.newton.failure_reason
                     << " (relative residual "
                     << outcome.newton.relative_residual << " after "
@@ -185,7 +170,7 @@ namespace FloorBlock::RigidBlocks
                 path.result.status        = outcome.failure;
                 path.result.failing_block = outcome.failing_block;
                 path.result.message =
-                  std::string("stage '") + stage_name(stage) + "' failed after " +
+                  std::string("stage '") + Loading::stage_name(stage) + "' failed after " +
                   std::to_string(settings.max_cutbacks) +
                   " cutbacks: " + outcome.newton.failure_reason;
                 path.result.wall_time = seconds_since(start);
