@@ -9,6 +9,7 @@
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
+#include <loading/load_path.h>
 #include <solver/reused_factorization.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -76,25 +77,39 @@ namespace FloorBlock::Contact
     responses_at_solution() const;
 
   private:
-    struct LoadFactors
-    {
-      double gravity  = 0.;
-      double pressure = 0.;
-      double uplift   = 0.;
-    };
-
     void
     setup_contact();
     /** Wall times and solve counters of the run so far. */
     void
     add_statistics(SolveResult &result) const;
+    /**
+     * One increment of the load path: from the extrapolated state (if the
+     * predictor applies), else or then from the last converged state, and
+     * for the exact law finally from a penalty start; each start is tried
+     * only when the one before failed.
+     */
+    bool
+    solve_increment(const Loading::LoadState            &state,
+                    const Loading::FailedStartRecorder &record_failed_start,
+                    IncrementResult                     &increment,
+                    std::string                         &failure_reason);
+    /**
+     * Post-processes the converged @p increment into @p result, then makes
+     * it the committed state.
+     * @param[in] clock Started when the increment's first start began.
+     */
     void
-    run_stage(const Loading::LoadStage    stage,
-              const unsigned int n_increments,
-              SolveResult       &result);
+    commit_increment(const Loading::LoadState &state,
+                     const dealii::Timer      &clock,
+                     IncrementResult          &increment,
+                     SolveResult              &result);
+    /** Back to the committed state after the failed @p attempt. */
+    void
+    discard_attempt(const std::string     &attempt,
+                    const IncrementResult &increment);
     /** @p prediction: multiple of last_change added to the start (0: none). */
     bool
-    solve_load_state(const LoadFactors &factors,
+    solve_load_state(const Loading::LoadFactors &factors,
                      const double       prediction,
                      IncrementResult   &increment,
                      std::string       &failure_reason);
@@ -113,15 +128,15 @@ namespace FloorBlock::Contact
      * from that state (a fallback of the exact law).
      */
     bool
-    solve_from_penalty_start(const LoadFactors &factors,
+    solve_from_penalty_start(const Loading::LoadFactors &factors,
                              IncrementResult   &increment,
                              std::string       &failure_reason);
     Fem::ElasticModel<2>
-    scaled_model(const LoadFactors &factors) const;
+    scaled_model(const Loading::LoadFactors &factors) const;
     dealii::AffineConstraints<double>
     constraints_at(const double uplift_factor);
     double
-    load_norm(const LoadFactors &factors);
+    load_norm(const Loading::LoadFactors &factors);
     /** Sets the rigid obstacles' displacements for the uplift factor. */
     void
     move_obstacles(const double uplift_factor);
@@ -182,14 +197,11 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::MPI::Vector     newton_base;
     dealii::TrilinosWrappers::MPI::Vector     update;
     dealii::TrilinosWrappers::MPI::Vector     residual;
-    LoadFactors                               committed_factors;
-    /** Displacement change of the last converged increment (m) and the
-     *  stage-factor step it was taken over, for the predictor. */
+    /** Displacement change of the last converged increment (m), which
+     *  the predictor scales by LoadState::prediction_ratio. */
     dealii::TrilinosWrappers::MPI::Vector     last_change;
-    double                                    last_change_step = 0.;
     ActiveSet                                 active_set;
     StateCounts                               last_iterate_counts;
-    std::vector<std::string>                  failed_attempts;
     /** Appended to a failure message when compliant joints are very stiff. */
     std::string                               stiffness_hint;
     std::vector<std::pair<double, std::string>> output_records;
