@@ -4,14 +4,11 @@
 #include <contact/contact_solver.h>
 #include <contact/crosspoints.h>
 #include <contact/joint_pairing.h>
-#include <contact/joint_report.h>
 #include <contact/newton_driver.h>
 #include <contact/uplift.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
-#include <fem/rigid_motion.h>
 #include <fem/sparsity.h>
-#include <fem/vtu_writer.h>
 #include <solver/linear_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -112,16 +109,13 @@ namespace FloorBlock::Contact
     update.reinit(owned, communicator);
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
-
-    const auto &fe = fe_space.fe();
-    dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
-    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          dof_component[dofs[i]] = fe.system_to_component_index(i).first;
-      }
+    // The members, not the constructor's arguments: it keeps references.
+    post_processor = std::make_unique<IncrementPostProcessor>(
+      fe_space,
+      this->problem,
+      nodes,
+      dirichlet_dofs,
+      this->settings.averaging_length);
   }
 
   void
@@ -272,16 +266,6 @@ namespace FloorBlock::Contact
               << " rigid-law pair directions held on both sides: their "
                  "tractions are support reactions"
               << std::endl;
-  }
-
-  Fem::ElasticModel<2>
-  ContactSolver::scaled_model(const Loading::LoadFactors &factors) const
-  {
-    Fem::ElasticModel<2> model = problem.model;
-    model.gravity *= factors.gravity;
-    for (auto &entry : model.pressures)
-      entry.second *= factors.support;
-    return model;
   }
 
   dealii::AffineConstraints<double>
@@ -534,60 +518,6 @@ namespace FloorBlock::Contact
     working_history = committed_history;
   }
 
-  ForceBalance
-  ContactSolver::force_balance(const Fem::ElasticModel<2>          &model,
-                               const std::vector<JointResponse<2>> &responses)
-  {
-    dealii::AffineConstraints<double> no_constraints;
-    no_constraints.close();
-    dealii::TrilinosWrappers::MPI::Vector raw(residual);
-    raw = 0.;
-    ForceBalance                   balance;
-    Fem::ElasticAssemblyTargets<2> targets;
-      targets.cache = &cell_matrices;
-    targets.residual           = &raw;
-    targets.applied_load_total = &balance.applied_load;
-    Fem::assemble_elastic_system(
-      fe_space, model, current_solution, no_constraints, targets);
-    assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
-    // The equations solved are the condensed ones: a hanging node's
-    // residual is carried by its masters, and where a master is a support
-    // DoF that share is part of the support's reaction. Without it the
-    // check reported 2e-3 imbalance on adaptively refined meshes whose
-    // hanging nodes touch a support (the solution itself was balanced).
-    dealii::Vector<double> condensed(raw);
-    for (const auto &line :
-         fe_space.hanging_node_constraints().get_lines())
-      if (!dirichlet_dofs.is_element(line.index))
-        {
-          for (const auto &[master, weight] : line.entries)
-            condensed(master) += weight * condensed(line.index);
-          condensed(line.index) = 0.;
-        }
-    double reaction_magnitude = 0.;
-    for (const auto dof : dirichlet_dofs)
-      {
-        balance.support_reaction[dof_component[dof]] += condensed(dof);
-        reaction_magnitude += std::abs(condensed(dof));
-      }
-    // A rigid obstacle is a support too: it receives +w f (the force
-    // density on side B) from each of its pairs.
-    for (unsigned int p = 0; p < nodes.size(); ++p)
-      if (nodes[p].against_rigid_obstacle())
-        {
-          const dealii::Tensor<1, 2> force =
-            nodes[p].weight * responses[p].force_density;
-          balance.support_reaction += force;
-          reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
-        }
-    const double scale = balance.applied_load.norm() + reaction_magnitude;
-    balance.relative_imbalance =
-      scale > 0. ?
-        (balance.applied_load + balance.support_reaction).norm() / scale :
-        0.;
-    return balance;
-  }
-
   SolveResult
   ContactSolver::run()
   {
@@ -684,13 +614,8 @@ namespace FloorBlock::Contact
     increment.stage_factor = state.stage_factor;
     increment.n_cutbacks   = state.n_cutbacks;
     increment.counts       = count_states(states_of(responses));
-    increment.balance = force_balance(scaled_model(state.factors), responses);
-    std::vector<std::string> names;
-    for (const auto &joint : problem.joints)
-      names.push_back(joint.name);
-    increment.joints = make_joint_reports(
-      nodes, responses, names, settings.averaging_length);
-    increment.motions = Fem::fit_rigid_motions(fe_space, current_solution);
+    post_processor->describe(
+      state.factors, responses, current_solution, increment);
     last_change = current_solution;
     last_change -= committed_solution;
     commit(responses);
@@ -706,7 +631,11 @@ namespace FloorBlock::Contact
     // does not count the VTU files twice.
     scope.stop();
     if (!settings.output_directory.empty())
-      write_output(responses);
+      {
+        dealii::TimerOutput::Scope output_scope(timer, "Contact: output");
+        post_processor->write_vtu(
+          responses, current_solution, settings.output_directory);
+      }
     result.increments.push_back(increment);
   }
 
@@ -737,25 +666,6 @@ namespace FloorBlock::Contact
         result.n_solves_above_tolerance =
           direct_solver->statistics().n_accepted_above_tolerance;
       }
-  }
-
-  void
-  ContactSolver::write_output(const std::vector<JointResponse<2>> &responses)
-  {
-    dealii::TimerOutput::Scope scope(timer, "Contact: output");
-    std::vector<double> node_states(nodes.size());
-    for (unsigned int p = 0; p < nodes.size(); ++p)
-      node_states[p] = static_cast<double>(responses[p].state);
-    std::vector<dealii::types::global_dof_index> state_dofs;
-    for (const auto &node : nodes)
-      state_dofs.push_back(node.dofs_a[0]);
-    Fem::write_vtu_increment(fe_space,
-                             problem.model,
-                             current_solution,
-                             state_dofs,
-                             node_states,
-                             settings.output_directory,
-                             output_records);
   }
 
   const dealii::TrilinosWrappers::MPI::Vector &

@@ -3,6 +3,7 @@
 #include <contact/active_set.h>
 #include <contact/contact_node.h>
 #include <contact/exact_contact.h>
+#include <contact/increment_post_processor.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
 #include <contact/contact_problem.h>
@@ -35,7 +36,9 @@ namespace FloorBlock::Contact
    * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
    * the joints from CoulombJoint through evaluate_contact/assemble_contact,
    * the iteration from solve_newton, the linear algebra from
-   * Solver::solve_linear_system.
+   * Solver::solve_linear_system, the stages, increments and cutbacks from
+   * Loading::follow_load_path, the increment reports and VTU files from
+   * IncrementPostProcessor.
    */
   class ContactSolver
   {
@@ -131,8 +134,6 @@ namespace FloorBlock::Contact
     solve_from_penalty_start(const Loading::LoadFactors &factors,
                              IncrementResult   &increment,
                              std::string       &failure_reason);
-    Fem::ElasticModel<2>
-    scaled_model(const Loading::LoadFactors &factors) const;
     dealii::AffineConstraints<double>
     constraints_at(const double uplift_factor);
     double
@@ -144,11 +145,6 @@ namespace FloorBlock::Contact
     solve_linear(std::string &message);
     void
     commit(const std::vector<JointResponse<2>> &responses);
-    ForceBalance
-    force_balance(const Fem::ElasticModel<2>          &model,
-                  const std::vector<JointResponse<2>> &responses);
-    void
-    write_output(const std::vector<JointResponse<2>> &responses);
 
     const ContactProblem<2>      problem;
     const ContactSolverSettings   settings;
@@ -181,10 +177,8 @@ namespace FloorBlock::Contact
     std::vector<JointHistory<2>>  committed_history;
     std::vector<JointHistory<2>>  working_history;
     std::vector<JointResponse<2>> committed_responses;
-    Fem::CellMatrixCache              cell_matrices;
     dealii::AffineConstraints<double> homogeneous_constraints;
     dealii::IndexSet                  dirichlet_dofs;
-    std::vector<unsigned int>         dof_component;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
     std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
@@ -204,7 +198,8 @@ namespace FloorBlock::Contact
     StateCounts                               last_iterate_counts;
     /** Appended to a failure message when compliant joints are very stiff. */
     std::string                               stiffness_hint;
-    std::vector<std::pair<double, std::string>> output_records;
+    /** Reports and VTU files of the converged increments. */
+    std::unique_ptr<IncrementPostProcessor>   post_processor;
     dealii::ConditionalOStream                console;
     dealii::TimerOutput                       timer;
   };
