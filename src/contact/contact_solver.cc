@@ -532,14 +532,14 @@ namespace FloorBlock::Contact
         committed_multipliers = exact->multipliers();
       }
 
-    IncrementResult              increment;
-    dealii::Timer                clock;
-    Loading::LoadPathCallbacks   callbacks;
+    IncrementResult            increment;
+    dealii::Timer              clock;
+    Loading::LoadPathCallbacks callbacks;
     callbacks.solve = [&](const Loading::LoadState            &state,
-                          const Loading::FailedStartRecorder &record_failed_start,
+                          const Loading::FailedStartRecorder &record_failure,
                           std::string                         &reason) {
       clock.restart();
-      return solve_increment(state, record_failed_start, increment, reason);
+      return solve_increment(state, record_failure, increment, reason);
     };
     callbacks.commit = [&](const Loading::LoadState &state) {
       commit_increment(state, clock, increment, result);
@@ -584,7 +584,8 @@ namespace FloorBlock::Contact
       settings.extrapolate_increments ? state.prediction_ratio : 0.;
     if (prediction > 0.)
       {
-        if (solve_load_state(state.factors, prediction, increment, failure_reason))
+        if (solve_load_state(
+              state.factors, prediction, increment, failure_reason))
           return true;
         // The extrapolated start can lie where a very stiff joint law
         // makes the active set cycle (kn = 1e14 Pa/m, two-block test);

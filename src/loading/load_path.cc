@@ -40,11 +40,12 @@ namespace FloorBlock::Loading
                  const LoadPathCallbacks &callbacks,
                  LoadPathOutcome         &outcome)
     {
-      const double nominal_step   = 1. / n_increments;
-      double       reached        = 0.;
-      double       step           = nominal_step;
-      double       last_step      = 0.;
-      unsigned int n_failed       = 0;
+      const double nominal_step = 1. / n_increments;
+      double       reached      = 0.;
+      double       step         = nominal_step;
+      // Step of the last converged increment; 0: none yet this stage.
+      double       last_step = 0.;
+      unsigned int n_failed  = 0;
       while (reached < 1.)
         {
           if (callbacks.at_safe_point)
@@ -53,10 +54,9 @@ namespace FloorBlock::Loading
           state.stage = stage;
           state.stage_factor =
             reached + step >= 1. - stage_end_tolerance ? 1. : reached + step;
-          state.step    = step;
-          state.factors = stage_factors(stage,
-                                        state.stage_factor,
-                                        gravity_with_support);
+          state.step = step;
+          state.factors =
+            stage_factors(stage, state.stage_factor, gravity_with_support);
           state.prediction_ratio =
             last_step > 0. ? (state.stage_factor - reached) / last_step : 0.;
           state.n_cutbacks = n_failed;
@@ -74,7 +74,8 @@ namespace FloorBlock::Loading
               last_step = state.stage_factor - reached;
               reached   = state.stage_factor;
               n_failed  = 0;
-              step      = std::min(nominal_step, 2. * step);
+              // Grow back after a cutback, never beyond the nominal step.
+              step = std::min(nominal_step, 2. * step);
               continue;
             }
           record_failure("", reason);
@@ -96,6 +97,7 @@ namespace FloorBlock::Loading
                    const unsigned int       max_cutbacks,
                    const LoadPathCallbacks &callbacks)
   {
+    // Gravity rising with the support load has no stage of its own.
     const std::pair<LoadStage, unsigned int> stages[] = {
       {LoadStage::gravity, steps.gravity_with_pressure ? 0 : steps.n_gravity},
       {LoadStage::support_pressure, steps.n_pressure},

@@ -122,8 +122,12 @@ namespace FloorBlock::RigidBlocks
       return false;
     };
     callbacks.commit = [&](const Loading::LoadState &state) {
-      IncrementReport increment = increment_report(
-        joints, block_load_list, description.assembly.block_width, state, outcome);
+      IncrementReport increment =
+        increment_report(joints,
+                         block_load_list,
+                         description.assembly.block_width,
+                         state,
+                         outcome);
       path.motions   = outcome.motions;
       path.uplift    = state.factors.uplift;
       path.histories = committed_histories(path.histories, outcome.responses);
