@@ -4,6 +4,7 @@
 #include <contact/joint_law_kind.h>
 #include <contact/newton_driver.h>
 #include <fem/elastic_model.h>
+#include <loading/load_steps.h>
 #include <solver/linear_solver.h>
 
 #include <deal.II/base/point.h>
@@ -76,20 +77,6 @@ namespace FloorBlock::Contact
     double pivot_y = 0.;
   };
 
-  /** @brief Increments per loading stage; 0 skips a stage. */
-  struct LoadSteps
-  {
-    unsigned int n_gravity  = 1;
-    unsigned int n_pressure = 1;
-    unsigned int n_uplift   = 1;
-    /**
-     * Gravity rises with the support load over the n_pressure increments
-     * of stage 2 (n_gravity is then not used): the path "gravity and load
-     * together" of the six-block benchmark scene.
-     */
-    bool gravity_with_pressure = false;
-  };
-
   /**
    * @brief Everything the physics needs: bulk model (full gravity and
    * pressures), joints, supports and the loading path.
@@ -101,7 +88,7 @@ namespace FloorBlock::Contact
     std::vector<JointDefinition<dim>>   joints;
     std::vector<SupportDefinition<dim>> supports;
     UpliftSettings                      uplift;
-    LoadSteps                           steps;
+    Loading::LoadSteps                  steps;
   };
 
   /** @brief Numerical settings of the contact solver. */

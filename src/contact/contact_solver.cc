@@ -4,14 +4,11 @@
 #include <contact/contact_solver.h>
 #include <contact/crosspoints.h>
 #include <contact/joint_pairing.h>
-#include <contact/joint_report.h>
 #include <contact/newton_driver.h>
 #include <contact/uplift.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
-#include <fem/rigid_motion.h>
 #include <fem/sparsity.h>
-#include <fem/vtu_writer.h>
 #include <solver/linear_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -29,33 +26,8 @@ namespace FloorBlock::Contact
 {
   namespace
   {
-    /**
-     * Fraction of a stage treated as its end (-): ten steps of 0.1 sum to
-     * 0.9999999999999999, and the round-off remainder must not become an
-     * increment of its own (a zero load step re-tests every slipping pair
-     * exactly on its Coulomb limit, where the stick/slip decision is
-     * round-off and the active set can cycle). Same value as the rigid
-     * model's stage end.
-     */
-    constexpr double stage_end_tolerance = 1e-12;
-
     /** kn h / E above which a failure suggests the rigid law (-). */
     constexpr double ill_conditioned_joint_ratio = 3.;
-
-    const char *
-    stage_name(const LoadStage stage)
-    {
-      switch (stage)
-        {
-          case LoadStage::gravity:
-            return "gravity";
-          case LoadStage::support_pressure:
-            return "support pressure";
-          case LoadStage::uplift:
-            return "uplift";
-        }
-      return "";
-    }
 
     std::vector<JointState>
     states_of(const std::vector<JointResponse<2>> &responses)
@@ -137,16 +109,13 @@ namespace FloorBlock::Contact
     update.reinit(owned, communicator);
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
-
-    const auto &fe = fe_space.fe();
-    dof_component.assign(fe_space.dof_handler().n_dofs(), 0);
-    std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          dof_component[dofs[i]] = fe.system_to_component_index(i).first;
-      }
+    // The members, not the constructor's arguments: it keeps references.
+    post_processor = std::make_unique<IncrementPostProcessor>(
+      fe_space,
+      this->problem,
+      nodes,
+      dirichlet_dofs,
+      this->settings.averaging_length);
   }
 
   void
@@ -299,16 +268,6 @@ namespace FloorBlock::Contact
               << std::endl;
   }
 
-  Fem::ElasticModel<2>
-  ContactSolver::scaled_model(const LoadFactors &factors) const
-  {
-    Fem::ElasticModel<2> model = problem.model;
-    model.gravity *= factors.gravity;
-    for (auto &entry : model.pressures)
-      entry.second *= factors.pressure;
-    return model;
-  }
-
   dealii::AffineConstraints<double>
   ContactSolver::constraints_at(const double uplift_factor)
   {
@@ -339,11 +298,11 @@ namespace FloorBlock::Contact
   }
 
   double
-  ContactSolver::load_norm(const LoadFactors &factors)
+  ContactSolver::load_norm(const Loading::LoadFactors &factors)
   {
     dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
     zero = 0.;
-    bulk->residual(zero, factors.gravity, factors.pressure, residual);
+    bulk->residual(zero, factors.gravity, factors.support, residual);
     return residual.l2_norm();
   }
 
@@ -387,7 +346,7 @@ namespace FloorBlock::Contact
   }
 
   bool
-  ContactSolver::solve_load_state(const LoadFactors &factors,
+  ContactSolver::solve_load_state(const Loading::LoadFactors &factors,
                                   const double       prediction,
                                   IncrementResult   &increment,
                                   std::string       &failure_reason)
@@ -407,7 +366,7 @@ namespace FloorBlock::Contact
       matrix.copy_from(exact_equations() ? base_matrix :
                                            bulk->condensed_stiffness());
       bulk->residual(
-        current_solution, factors.gravity, factors.pressure, residual);
+        current_solution, factors.gravity, factors.support, residual);
       assemble_contact(
         nodes, responses, homogeneous_constraints, &matrix, &residual);
       if (exact_equations())
@@ -451,7 +410,7 @@ namespace FloorBlock::Contact
     };
     callbacks.round_off_floor = [&]() {
       const double bulk_floor = bulk->round_off_floor(
-        current_solution, factors.gravity, factors.pressure);
+        current_solution, factors.gravity, factors.support);
       const double contact_floor =
         exact_equations() ? exact->round_off_floor(current_solution) : 0.;
       return std::hypot(bulk_floor, contact_floor);
@@ -510,7 +469,7 @@ namespace FloorBlock::Contact
   }
 
   bool
-  ContactSolver::solve_from_penalty_start(const LoadFactors &factors,
+  ContactSolver::solve_from_penalty_start(const Loading::LoadFactors &factors,
                                           IncrementResult   &increment,
                                           std::string       &failure_reason)
   {
@@ -559,192 +518,6 @@ namespace FloorBlock::Contact
     working_history = committed_history;
   }
 
-  ForceBalance
-  ContactSolver::force_balance(const Fem::ElasticModel<2>          &model,
-                               const std::vector<JointResponse<2>> &responses)
-  {
-    dealii::AffineConstraints<double> no_constraints;
-    no_constraints.close();
-    dealii::TrilinosWrappers::MPI::Vector raw(residual);
-    raw = 0.;
-    ForceBalance                   balance;
-    Fem::ElasticAssemblyTargets<2> targets;
-      targets.cache = &cell_matrices;
-    targets.residual           = &raw;
-    targets.applied_load_total = &balance.applied_load;
-    Fem::assemble_elastic_system(
-      fe_space, model, current_solution, no_constraints, targets);
-    assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
-    // The equations solved are the condensed ones: a hanging node's
-    // residual is carried by its masters, and where a master is a support
-    // DoF that share is part of the support's reaction. Without it the
-    // check reported 2e-3 imbalance on adaptively refined meshes whose
-    // hanging nodes touch a support (the solution itself was balanced).
-    dealii::Vector<double> condensed(raw);
-    for (const auto &line :
-         fe_space.hanging_node_constraints().get_lines())
-      if (!dirichlet_dofs.is_element(line.index))
-        {
-          for (const auto &[master, weight] : line.entries)
-            condensed(master) += weight * condensed(line.index);
-          condensed(line.index) = 0.;
-        }
-    double reaction_magnitude = 0.;
-    for (const auto dof : dirichlet_dofs)
-      {
-        balance.support_reaction[dof_component[dof]] += condensed(dof);
-        reaction_magnitude += std::abs(condensed(dof));
-      }
-    // A rigid obstacle is a support too: it receives +w f (the force
-    // density on side B) from each of its pairs.
-    for (unsigned int p = 0; p < nodes.size(); ++p)
-      if (nodes[p].against_rigid_obstacle())
-        {
-          const dealii::Tensor<1, 2> force =
-            nodes[p].weight * responses[p].force_density;
-          balance.support_reaction += force;
-          reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
-        }
-    const double scale = balance.applied_load.norm() + reaction_magnitude;
-    balance.relative_imbalance =
-      scale > 0. ?
-        (balance.applied_load + balance.support_reaction).norm() / scale :
-        0.;
-    return balance;
-  }
-
-  void
-  ContactSolver::run_stage(const LoadStage    stage,
-                           const unsigned int n_increments,
-                           SolveResult       &result)
-  {
-    if (n_increments == 0)
-      return;
-    const double nominal_step = 1. / n_increments;
-    double       reached      = 0.;
-    double       step         = nominal_step;
-    unsigned int n_failed     = 0;
-    last_change_step          = 0.; // no extrapolation across stages
-    while (reached < 1.)
-      {
-        // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
-        // solve, so nothing half-computed reaches a result file.
-        stop_if_interrupted();
-        const bool   last   = reached + step >= 1. - stage_end_tolerance;
-        const double target = last ? 1. : reached + step;
-        LoadFactors  factors = committed_factors;
-        switch (stage)
-          {
-            case LoadStage::gravity:
-              factors = {target, 0., 0.};
-              break;
-            case LoadStage::support_pressure:
-              factors = {problem.steps.gravity_with_pressure ? target : 1.,
-                         target,
-                         0.};
-              break;
-            case LoadStage::uplift:
-              factors = {1., 1., target};
-              break;
-          }
-        dealii::Timer   clock;
-        IncrementResult increment;
-        std::string     reason;
-        const double prediction =
-          settings.extrapolate_increments && last_change_step > 0. ?
-            (target - reached) / last_change_step :
-            0.;
-        const auto record_failure = [&](const std::string &start) {
-          n_failed_newton_iterations += increment.n_newton_iterations;
-          std::ostringstream attempt;
-          attempt << stage_name(stage) << " factor " << target << " (step "
-                  << step << start << "): " << reason;
-          failed_attempts.push_back(attempt.str());
-          console << "  failed: " << attempt.str() << std::endl;
-          current_solution = committed_solution;
-          working_history  = committed_history;
-          if (exact)
-            exact->multipliers() = committed_multipliers;
-        };
-        bool solved = false;
-        if (prediction > 0.)
-          {
-            solved = solve_load_state(factors, prediction, increment, reason);
-            // The extrapolated start can lie where a very stiff joint law
-            // makes the active set cycle (kn = 1e14 Pa/m, two-block
-            // test); the plain start is tried before any cutback, so a
-            // start the predictor spoils costs a retry, not a cutback.
-            if (!solved)
-              {
-                record_failure(", extrapolated start");
-                increment = IncrementResult();
-              }
-          }
-        if (!solved)
-          solved = solve_load_state(factors, 0., increment, reason);
-        if (!solved && exact)
-          {
-            record_failure(", exact law from the last state");
-            increment = IncrementResult();
-            solved    = solve_from_penalty_start(factors, increment, reason);
-          }
-        if (solved)
-          {
-            dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
-            const std::vector<JointResponse<2>> responses =
-              responses_at_iterate();
-            increment.stage        = stage;
-            increment.stage_factor = target;
-            increment.n_cutbacks   = n_failed;
-            increment.counts       = count_states(states_of(responses));
-            increment.balance = force_balance(scaled_model(factors), responses);
-            std::vector<std::string> names;
-            for (const auto &joint : problem.joints)
-              names.push_back(joint.name);
-            increment.joints = make_joint_reports(
-              nodes, responses, names, settings.averaging_length);
-            increment.motions =
-              Fem::fit_rigid_motions(fe_space, current_solution);
-            last_change = current_solution;
-            last_change -= committed_solution;
-            last_change_step = target - reached;
-            commit(responses);
-            committed_factors = factors;
-            reached           = target;
-            n_failed          = 0;
-            step              = std::min(nominal_step, 2. * step);
-            increment.wall_time = clock.wall_time();
-            console << "  " << stage_name(stage) << " " << target
-                    << ": newton " << increment.n_newton_iterations
-                    << ", stick/slip/open " << increment.counts.n_stick
-                    << "/" << increment.counts.n_slip << "/"
-                    << increment.counts.n_open << ", residual "
-                    << increment.relative_residual << ", imbalance "
-                    << increment.balance.relative_imbalance << std::endl;
-            // The output has its own timer: stop this one, so that the
-            // report does not count the VTU files twice.
-            scope.stop();
-            if (!settings.output_directory.empty())
-              write_output(responses);
-            result.increments.push_back(increment);
-            continue;
-          }
-        record_failure("");
-        if (++n_failed > settings.max_cutbacks)
-          throw ContactSolveFailure(
-            std::string("contact solve failed in stage '") +
-              stage_name(stage) + "' after " +
-              std::to_string(settings.max_cutbacks) + " cutbacks: " + reason +
-              stiffness_hint,
-            failed_attempts,
-            result.increments.empty() ?
-              std::nullopt :
-              std::optional<IncrementResult>(result.increments.back()),
-            last_iterate_counts);
-        step /= 2.;
-      }
-  }
-
   SolveResult
   ContactSolver::run()
   {
@@ -758,21 +531,125 @@ namespace FloorBlock::Contact
         exact->multipliers() = 0.;
         committed_multipliers = exact->multipliers();
       }
-    try
-      {
-        if (!problem.steps.gravity_with_pressure)
-          run_stage(LoadStage::gravity, problem.steps.n_gravity, result);
-        run_stage(LoadStage::support_pressure, problem.steps.n_pressure, result);
-        run_stage(LoadStage::uplift, problem.steps.n_uplift, result);
-      }
-    catch (ContactSolveFailure &failure)
-      {
-        add_statistics(result);
-        failure.partial_result = result;
-        throw;
-      }
+
+    IncrementResult            increment;
+    dealii::Timer              clock;
+    Loading::LoadPathCallbacks callbacks;
+    callbacks.solve = [&](const Loading::LoadState            &state,
+                          const Loading::FailedStartRecorder &record_failure,
+                          std::string                         &reason) {
+      clock.restart();
+      return solve_increment(state, record_failure, increment, reason);
+    };
+    callbacks.commit = [&](const Loading::LoadState &state) {
+      commit_increment(state, clock, increment, result);
+    };
+    callbacks.discard = [&](const std::string &attempt) {
+      discard_attempt(attempt, increment);
+    };
+    // A safe point for Ctrl-C / SIGTERM: the caller discards the whole
+    // solve, so nothing half-computed reaches a result file.
+    callbacks.at_safe_point = stop_if_interrupted;
+
+    const Loading::LoadPathOutcome outcome = Loading::follow_load_path(
+      problem.steps, settings.max_cutbacks, callbacks);
     add_statistics(result);
+    if (!outcome.completed)
+      {
+        ContactSolveFailure failure(
+          std::string("contact solve failed in stage '") +
+            Loading::stage_name(outcome.failed_stage) + "' after " +
+            std::to_string(settings.max_cutbacks) +
+            " cutbacks: " + outcome.failure_reason + stiffness_hint,
+          outcome.failed_attempts,
+          result.increments.empty() ?
+            std::nullopt :
+            std::optional<IncrementResult>(result.increments.back()),
+          last_iterate_counts);
+        failure.partial_result = result;
+        throw failure;
+      }
     return result;
+  }
+
+  bool
+  ContactSolver::solve_increment(
+    const Loading::LoadState            &state,
+    const Loading::FailedStartRecorder &record_failed_start,
+    IncrementResult                     &increment,
+    std::string                         &failure_reason)
+  {
+    increment = IncrementResult();
+    const double prediction =
+      settings.extrapolate_increments ? state.prediction_ratio : 0.;
+    if (prediction > 0.)
+      {
+        if (solve_load_state(
+              state.factors, prediction, increment, failure_reason))
+          return true;
+        // The extrapolated start can lie where a very stiff joint law
+        // makes the active set cycle (kn = 1e14 Pa/m, two-block test);
+        // the plain start is tried before any cutback, so a start the
+        // predictor spoils costs a retry, not a cutback.
+        record_failed_start("extrapolated start", failure_reason);
+        increment = IncrementResult();
+      }
+    if (solve_load_state(state.factors, 0., increment, failure_reason))
+      return true;
+    if (!exact)
+      return false;
+    record_failed_start("exact law from the last state", failure_reason);
+    increment = IncrementResult();
+    return solve_from_penalty_start(state.factors, increment, failure_reason);
+  }
+
+  void
+  ContactSolver::commit_increment(const Loading::LoadState &state,
+                                  const dealii::Timer      &clock,
+                                  IncrementResult          &increment,
+                                  SolveResult              &result)
+  {
+    dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
+    const std::vector<JointResponse<2>> responses = responses_at_iterate();
+    increment.stage        = state.stage;
+    increment.stage_factor = state.stage_factor;
+    increment.n_cutbacks   = state.n_cutbacks;
+    increment.counts       = count_states(states_of(responses));
+    post_processor->describe(
+      state.factors, responses, current_solution, increment);
+    last_change = current_solution;
+    last_change -= committed_solution;
+    commit(responses);
+    increment.wall_time = clock.wall_time();
+    console << "  " << Loading::stage_name(state.stage) << " "
+            << state.stage_factor << ": newton "
+            << increment.n_newton_iterations << ", stick/slip/open "
+            << increment.counts.n_stick << "/" << increment.counts.n_slip
+            << "/" << increment.counts.n_open << ", residual "
+            << increment.relative_residual << ", imbalance "
+            << increment.balance.relative_imbalance << std::endl;
+    // The output has its own timer: stop this one, so that the report
+    // does not count the VTU files twice.
+    scope.stop();
+    if (!settings.output_directory.empty())
+      {
+        dealii::TimerOutput::Scope output_scope(timer, "Contact: output");
+        post_processor->write_vtu(
+          responses, current_solution, settings.output_directory);
+      }
+    result.increments.push_back(increment);
+  }
+
+  void
+  ContactSolver::discard_attempt(const std::string     &attempt,
+                                 const IncrementResult &increment)
+  {
+    n_failed_newton_iterations += increment.n_newton_iterations;
+    console << "  failed: " << attempt << std::endl;
+    current_solution = committed_solution;
+    working_history  = committed_history;
+    if (exact)
+      exact->multipliers() = committed_multipliers;
   }
 
   void
@@ -790,25 +667,6 @@ namespace FloorBlock::Contact
         result.n_solves_above_tolerance =
           direct_solver->statistics().n_accepted_above_tolerance;
       }
-  }
-
-  void
-  ContactSolver::write_output(const std::vector<JointResponse<2>> &responses)
-  {
-    dealii::TimerOutput::Scope scope(timer, "Contact: output");
-    std::vector<double> node_states(nodes.size());
-    for (unsigned int p = 0; p < nodes.size(); ++p)
-      node_states[p] = static_cast<double>(responses[p].state);
-    std::vector<dealii::types::global_dof_index> state_dofs;
-    for (const auto &node : nodes)
-      state_dofs.push_back(node.dofs_a[0]);
-    Fem::write_vtu_increment(fe_space,
-                             problem.model,
-                             current_solution,
-                             state_dofs,
-                             node_states,
-                             settings.output_directory,
-                             output_records);
   }
 
   const dealii::TrilinosWrappers::MPI::Vector &

@@ -3,12 +3,14 @@
 #include <contact/active_set.h>
 #include <contact/contact_node.h>
 #include <contact/exact_contact.h>
+#include <contact/increment_post_processor.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
 #include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
+#include <loading/load_path.h>
 #include <solver/reused_factorization.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -34,7 +36,9 @@ namespace FloorBlock::Contact
    * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
    * the joints from CoulombJoint through evaluate_contact/assemble_contact,
    * the iteration from solve_newton, the linear algebra from
-   * Solver::solve_linear_system.
+   * Solver::solve_linear_system, the stages, increments and cutbacks from
+   * Loading::follow_load_path, the increment reports and VTU files from
+   * IncrementPostProcessor.
    */
   class ContactSolver
   {
@@ -76,25 +80,39 @@ namespace FloorBlock::Contact
     responses_at_solution() const;
 
   private:
-    struct LoadFactors
-    {
-      double gravity  = 0.;
-      double pressure = 0.;
-      double uplift   = 0.;
-    };
-
     void
     setup_contact();
     /** Wall times and solve counters of the run so far. */
     void
     add_statistics(SolveResult &result) const;
+    /**
+     * One increment of the load path: from the extrapolated state (if the
+     * predictor applies), else or then from the last converged state, and
+     * for the exact law finally from a penalty start; each start is tried
+     * only when the one before failed.
+     */
+    bool
+    solve_increment(const Loading::LoadState            &state,
+                    const Loading::FailedStartRecorder &record_failed_start,
+                    IncrementResult                     &increment,
+                    std::string                         &failure_reason);
+    /**
+     * Post-processes the converged @p increment into @p result, then makes
+     * it the committed state.
+     * @param[in] clock Started when the increment's first start began.
+     */
     void
-    run_stage(const LoadStage    stage,
-              const unsigned int n_increments,
-              SolveResult       &result);
+    commit_increment(const Loading::LoadState &state,
+                     const dealii::Timer      &clock,
+                     IncrementResult          &increment,
+                     SolveResult              &result);
+    /** Back to the committed state after the failed @p attempt. */
+    void
+    discard_attempt(const std::string     &attempt,
+                    const IncrementResult &increment);
     /** @p prediction: multiple of last_change added to the start (0: none). */
     bool
-    solve_load_state(const LoadFactors &factors,
+    solve_load_state(const Loading::LoadFactors &factors,
                      const double       prediction,
                      IncrementResult   &increment,
                      std::string       &failure_reason);
@@ -113,15 +131,13 @@ namespace FloorBlock::Contact
      * from that state (a fallback of the exact law).
      */
     bool
-    solve_from_penalty_start(const LoadFactors &factors,
+    solve_from_penalty_start(const Loading::LoadFactors &factors,
                              IncrementResult   &increment,
                              std::string       &failure_reason);
-    Fem::ElasticModel<2>
-    scaled_model(const LoadFactors &factors) const;
     dealii::AffineConstraints<double>
     constraints_at(const double uplift_factor);
     double
-    load_norm(const LoadFactors &factors);
+    load_norm(const Loading::LoadFactors &factors);
     /** Sets the rigid obstacles' displacements for the uplift factor. */
     void
     move_obstacles(const double uplift_factor);
@@ -129,11 +145,6 @@ namespace FloorBlock::Contact
     solve_linear(std::string &message);
     void
     commit(const std::vector<JointResponse<2>> &responses);
-    ForceBalance
-    force_balance(const Fem::ElasticModel<2>          &model,
-                  const std::vector<JointResponse<2>> &responses);
-    void
-    write_output(const std::vector<JointResponse<2>> &responses);
 
     const ContactProblem<2>      problem;
     const ContactSolverSettings   settings;
@@ -166,10 +177,8 @@ namespace FloorBlock::Contact
     std::vector<JointHistory<2>>  committed_history;
     std::vector<JointHistory<2>>  working_history;
     std::vector<JointResponse<2>> committed_responses;
-    Fem::CellMatrixCache              cell_matrices;
     dealii::AffineConstraints<double> homogeneous_constraints;
     dealii::IndexSet                  dirichlet_dofs;
-    std::vector<unsigned int>         dof_component;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
     std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
@@ -182,17 +191,15 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::MPI::Vector     newton_base;
     dealii::TrilinosWrappers::MPI::Vector     update;
     dealii::TrilinosWrappers::MPI::Vector     residual;
-    LoadFactors                               committed_factors;
-    /** Displacement change of the last converged increment (m) and the
-     *  stage-factor step it was taken over, for the predictor. */
+    /** Displacement change of the last converged increment (m), which
+     *  the predictor scales by LoadState::prediction_ratio. */
     dealii::TrilinosWrappers::MPI::Vector     last_change;
-    double                                    last_change_step = 0.;
     ActiveSet                                 active_set;
     StateCounts                               last_iterate_counts;
-    std::vector<std::string>                  failed_attempts;
     /** Appended to a failure message when compliant joints are very stiff. */
     std::string                               stiffness_hint;
-    std::vector<std::pair<double, std::string>> output_records;
+    /** Reports and VTU files of the converged increments. */
+    std::unique_ptr<IncrementPostProcessor>   post_processor;
     dealii::ConditionalOStream                console;
     dealii::TimerOutput                       timer;
   };

@@ -2,6 +2,7 @@
 
 #include <contact/active_set.h>
 #include <fem/rigid_motion.h>
+#include <loading/load_stage.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -61,18 +62,10 @@ namespace FloorBlock::Contact
     double relative_imbalance = 0.;
   };
 
-  /** Loading stage of the chapter's path. */
-  enum class LoadStage
-  {
-    gravity,
-    support_pressure,
-    uplift
-  };
-
   /** @brief One converged increment. */
   struct IncrementResult
   {
-    LoadStage    stage = LoadStage::gravity;
+    Loading::LoadStage stage = Loading::LoadStage::gravity;
     /** Fraction of the stage's load reached (-). */
     double       stage_factor        = 0.;
     /**

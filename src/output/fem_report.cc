@@ -141,15 +141,15 @@ namespace FloorBlock::Output
   }
 
   std::string
-  stage_name(const Contact::LoadStage stage)
+  stage_name(const Loading::LoadStage stage)
   {
     switch (stage)
       {
-        case Contact::LoadStage::gravity:
+        case Loading::LoadStage::gravity:
           return "gravity";
-        case Contact::LoadStage::support_pressure:
+        case Loading::LoadStage::support_pressure:
           return "support_load";
-        case Contact::LoadStage::uplift:
+        case Loading::LoadStage::uplift:
           return "uplift";
       }
     return "unknown";
@@ -190,7 +190,7 @@ namespace FloorBlock::Output
         const auto &increment = result.increments[k];
         const auto &balance   = report.increment_balances[k];
         increments.push_back(
-          {{"stage", stage_name(increment.stage)},
+          {{"stage", Output::stage_name(increment.stage)},
            {"stage_factor", increment.stage_factor},
            {"newton_iterations", increment.n_newton_iterations},
            {"cutbacks", increment.n_cutbacks},
@@ -271,7 +271,7 @@ namespace FloorBlock::Output
           csv += fmt::format(
             "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
             "{:.9e},{},{},{}\n",
-            k + 1, stage_name(increment.stage), increment.stage_factor,
+            k + 1, Output::stage_name(increment.stage), increment.stage_factor,
             joint.name, Compare::parse_joint_name(joint.name).kind,
             joint.normal_force, joint.shear_force, joint.closed_length,
             joint.closed_length * support_width,
@@ -306,7 +306,7 @@ namespace FloorBlock::Output
               csv += fmt::format(
                 "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
                 "{:.9e},{}\n",
-                k + 1, stage_name(increment.stage), increment.stage_factor,
+                k + 1, Output::stage_name(increment.stage), increment.stage_factor,
                 joint.name, i, sample.position[0], sample.position[1],
                 sample.arc_position, sample.gap, sample.normal_traction,
                 sample.tangential_traction,

@@ -161,5 +161,5 @@ namespace FloorBlock::Output
 
   /** @brief "stage 3 (uplift)" style name of a loading stage. */
   std::string
-  stage_name(const Contact::LoadStage stage);
+  stage_name(const Loading::LoadStage stage);
 } // namespace FloorBlock::Output

@@ -16,7 +16,7 @@ namespace FloorBlock::Pipeline
     comparison.final_joints = Compare::compare_vertical_joints(
       outcome.result.increments.back(), closed_forms, comparison.constants);
     for (const auto &increment : outcome.result.increments)
-      if (increment.stage == Contact::LoadStage::uplift)
+      if (increment.stage == Loading::LoadStage::uplift)
         comparison.lift_history.push_back(
           {increment.stage_factor * scene.loading.floor_lift,
            Compare::compare_vertical_joints(increment, closed_forms,

@@ -94,11 +94,11 @@ namespace FloorBlock::RigidBlocks
     {
       switch (increment.stage)
         {
-          case Contact::LoadStage::gravity:
+          case Loading::LoadStage::gravity:
             return increment.gravity_factor;
-          case Contact::LoadStage::support_pressure:
+          case Loading::LoadStage::support_pressure:
             return increment.support_factor;
-          case Contact::LoadStage::uplift:
+          case Loading::LoadStage::uplift:
             return increment.uplift_factor;
         }
       return 0.;

@@ -178,7 +178,7 @@ namespace FloorBlock::RigidBlocks
                    const std::vector<BlockLoads>  &loads,
                    const RigidSolverSettings      &settings,
                    const double                    block_width,
-                   const LoadFactors              &factors,
+                   const Loading::LoadFactors     &factors,
                    const std::vector<BlockMotion> &start_motions,
                    const JointHistories           &histories)
   {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <contact/newton_driver.h>
+#include <loading/load_factors.h>
 #include <rigid/block_loads.h>
 #include <rigid/joint_set.h>
 #include <rigid/results.h>
@@ -10,14 +11,6 @@
 
 namespace FloorBlock::RigidBlocks
 {
-  /** @brief Load factors of one load state (-). */
-  struct LoadFactors
-  {
-    double gravity = 0.;
-    double support = 0.;
-    double uplift  = 0.;
-  };
-
   /** @brief Outcome of one load state. */
   struct IncrementOutcome
   {
@@ -51,7 +44,7 @@ namespace FloorBlock::RigidBlocks
                    const std::vector<BlockLoads>  &loads,
                    const RigidSolverSettings      &settings,
                    const double                    block_width,
-                   const LoadFactors              &factors,
+                   const Loading::LoadFactors     &factors,
                    const std::vector<BlockMotion> &start_motions,
                    const JointHistories           &histories);
 } // namespace FloorBlock::RigidBlocks

@@ -1,9 +1,9 @@
+#include <loading/load_path.h>
 #include <rigid/force_balance.h>
 #include <rigid/joint_report.h>
 #include <rigid/model.h>
 #include <rigid/motion_predictor.h>
 
-#include <algorithm>
 #include <chrono>
 #include <sstream>
 #include <utility>
@@ -12,40 +12,6 @@ namespace FloorBlock::RigidBlocks
 {
   namespace
   {
-    /** Fraction of a stage treated as its end (-). */
-    constexpr double stage_end_tolerance = 1e-12;
-
-    const char *
-    stage_name(const Contact::LoadStage stage)
-    {
-      switch (stage)
-        {
-          case Contact::LoadStage::gravity:
-            return "gravity";
-          case Contact::LoadStage::support_pressure:
-            return "support load";
-          case Contact::LoadStage::uplift:
-            return "uplift";
-        }
-      return "unknown";
-    }
-
-    /** Factors at fraction @p target of @p stage (earlier stages complete). */
-    LoadFactors
-    stage_factors(const Contact::LoadStage stage, const double target)
-    {
-      switch (stage)
-        {
-          case Contact::LoadStage::gravity:
-            return {target, 0., 0.};
-          case Contact::LoadStage::support_pressure:
-            return {1., target, 0.};
-          case Contact::LoadStage::uplift:
-            return {1., 1., target};
-        }
-      return {};
-    }
-
     double
     seconds_since(const std::chrono::steady_clock::time_point start)
     {
@@ -63,6 +29,34 @@ namespace FloorBlock::RigidBlocks
       double      uplift = 0.;
       RigidSolveResult result;
     };
+
+    /** The report of a converged increment, before its wall time. */
+    IncrementReport
+    increment_report(const JointSet                &joints,
+                     const std::vector<BlockLoads> &loads,
+                     const double                   block_width,
+                     const Loading::LoadState      &state,
+                     const IncrementOutcome        &outcome)
+    {
+      IncrementReport increment;
+      increment.stage             = state.stage;
+      increment.gravity_factor    = state.factors.gravity;
+      increment.support_factor    = state.factors.support;
+      increment.uplift_factor     = state.factors.uplift;
+      increment.n_iterations      = outcome.newton.n_iterations;
+      increment.n_cutbacks        = state.n_cutbacks;
+      increment.relative_residual = outcome.newton.relative_residual;
+      increment.counts            = outcome.newton.counts;
+      increment.motions           = outcome.motions;
+      increment.joints = make_joint_reports(joints, outcome.responses, true);
+      increment.relative_imbalance = relative_imbalance(joints,
+                                                        increment.joints,
+                                                        loads,
+                                                        state.factors.gravity,
+                                                        state.factors.support,
+                                                        block_width);
+      return increment;
+    }
   } // namespace
 
   Model::Model(const ModelDescription &description_in)
@@ -101,98 +95,72 @@ namespace FloorBlock::RigidBlocks
     path.histories = joints.virgin_histories();
     const RigidSolverSettings &settings = description.solver;
 
-    const std::vector<std::pair<Contact::LoadStage, unsigned int>> stages = {
-      {Contact::LoadStage::gravity, description.steps.n_gravity},
-      {Contact::LoadStage::support_pressure, description.steps.n_pressure},
-      {Contact::LoadStage::uplift, description.steps.n_uplift}};
+    IncrementOutcome                      outcome;
+    std::chrono::steady_clock::time_point clock;
+    Loading::LoadPathCallbacks            callbacks;
+    callbacks.solve = [&](const Loading::LoadState &state,
+                          const Loading::FailedStartRecorder &,
+                          std::string &reason) {
+      clock   = std::chrono::steady_clock::now();
+      outcome = solve_load_state(joints,
+                                 block_load_list,
+                                 settings,
+                                 description.assembly.block_width,
+                                 state.factors,
+                                 predict_motions(joints,
+                                                 path.motions,
+                                                 path.uplift,
+                                                 state.factors.uplift),
+                                 path.histories);
+      if (outcome.newton.converged)
+        return true;
+      std::ostringstream why;
+      why << outcome.newton.failure_reason << " (relative residual "
+          << outcome.newton.relative_residual << " after "
+          << outcome.newton.n_iterations << " iterations)";
+      reason = why.str();
+      return false;
+    };
+    callbacks.commit = [&](const Loading::LoadState &state) {
+      IncrementReport increment =
+        increment_report(joints,
+                         block_load_list,
+                         description.assembly.block_width,
+                         state,
+                         outcome);
+      path.motions   = outcome.motions;
+      path.uplift    = state.factors.uplift;
+      path.histories = committed_histories(path.histories, outcome.responses);
+      increment.wall_time = seconds_since(clock);
+      // Profiles only for the last increment unless asked: drop the
+      // previous.
+      if (!settings.profiles_of_every_increment &&
+          !path.result.increments.empty())
+        for (RigidJointReport &joint : path.result.increments.back().joints)
+          joint.profile.clear();
+      path.result.increments.push_back(std::move(increment));
+    };
+    // solve_load_state works on copies of the committed state.
+    callbacks.discard = [](const std::string &) {};
+    // No interrupt check: a rigid solve is short, and sweeps check
+    // between cases.
 
-    for (const auto &[stage, n_increments] : stages)
+    // Gravity always has its own stage in the rigid model (README.md);
+    // raising it with the support load is the FE model's path only.
+    Loading::LoadSteps steps    = description.steps;
+    steps.gravity_with_pressure = false;
+    const Loading::LoadPathOutcome path_outcome =
+      Loading::follow_load_path(steps, settings.max_cutbacks, callbacks);
+    path.result.failed_attempts = path_outcome.failed_attempts;
+    if (!path_outcome.completed)
       {
-        if (n_increments == 0)
-          continue;
-        const double nominal_step = 1. / n_increments;
-        double       reached      = 0.;
-        double       step         = nominal_step;
-        unsigned int n_failed     = 0;
-        while (reached < 1.)
-          {
-            // A remainder below stage_end_tolerance is round-off of the
-            // summed steps, not an increment of its own.
-            const double target = reached + step >= 1. - stage_end_tolerance ?
-                                    1. :
-                                    reached + step;
-            const auto   clock   = std::chrono::steady_clock::now();
-            const LoadFactors factors = stage_factors(stage, target);
-            const IncrementOutcome outcome =
-              solve_load_state(joints,
-                               block_load_list,
-                               settings,
-                               description.assembly.block_width,
-                               factors,
-                               predict_motions(joints,
-                                               path.motions,
-                                               path.uplift,
-                                               factors.uplift),
-                               path.histories);
-            if (outcome.newton.converged)
-              {
-                IncrementReport increment;
-                increment.stage             = stage;
-                increment.gravity_factor    = factors.gravity;
-                increment.support_factor    = factors.support;
-                increment.uplift_factor     = factors.uplift;
-                increment.n_iterations      = outcome.newton.n_iterations;
-                increment.n_cutbacks        = n_failed;
-                increment.relative_residual = outcome.newton.relative_residual;
-                increment.counts            = outcome.newton.counts;
-                increment.motions           = outcome.motions;
-                increment.joints =
-                  make_joint_reports(joints, outcome.responses, true);
-                increment.relative_imbalance =
-                  relative_imbalance(joints,
-                                     increment.joints,
-                                     block_load_list,
-                                     factors.gravity,
-                                     factors.support,
-                                     description.assembly.block_width);
-                path.motions   = outcome.motions;
-                path.uplift    = factors.uplift;
-                path.histories =
-                  committed_histories(path.histories, outcome.responses);
-                reached  = target;
-                n_failed = 0;
-                // Grow back after a cutback, never beyond the nominal step.
-                step = std::min(nominal_step, 2. * step);
-                increment.wall_time = seconds_since(clock);
-                // Profiles only for the last increment unless asked:
-                // drop the previous.
-                if (!settings.profiles_of_every_increment &&
-                    !path.result.increments.empty())
-                  for (RigidJointReport &joint : path.result.increments.back().joints)
-                    joint.profile.clear();
-                path.result.increments.push_back(std::move(increment));
-                continue;
-              }
-            std::ostringstream attempt;
-            attempt << stage_name(stage) << " factor " << target << " (step "
-                    << step << "): " << outcome.newton.failure_reason
-                    << " (relative residual "
-                    << outcome.newton.relative_residual << " after "
-                    << outcome.newton.n_iterations << " iterations)";
-            path.result.failed_attempts.push_back(attempt.str());
-            if (++n_failed > settings.max_cutbacks)
-              {
-                path.result.status        = outcome.failure;
-                path.result.failing_block = outcome.failing_block;
-                path.result.message =
-                  std::string("stage '") + stage_name(stage) + "' failed after " +
-                  std::to_string(settings.max_cutbacks) +
-                  " cutbacks: " + outcome.newton.failure_reason;
-                path.result.wall_time = seconds_since(start);
-                return path.result;
-              }
-            step /= 2.;
-          }
+        path.result.status        = outcome.failure;
+        path.result.failing_block = outcome.failing_block;
+        path.result.message =
+          std::string("stage '") +
+          Loading::stage_name(path_outcome.failed_stage) + "' failed after " +
+          std::to_string(settings.max_cutbacks) +
+          " cutbacks: " + outcome.newton.failure_reason;
       }
     path.result.wall_time = seconds_since(start);
     return path.result;

@@ -20,10 +20,12 @@ namespace FloorBlock::RigidBlocks
    * Contact::uplift_displacement() (translation, tilt, or the parabola
    * bending evaluated at each joint point).
    *
-   * Stage semantics follow Contact::ContactSolver: a stage with 0
-   * increments is skipped, and later stages apply the earlier loads at
-   * full factor (so a skipped gravity stage means gravity enters with the
-   * first support-load increment).
+   * The stages run on Loading::follow_load_path, as in
+   * Contact::ContactSolver: a stage with 0 increments is skipped, and
+   * later stages apply the earlier loads at full factor (so a skipped
+   * gravity stage means gravity enters with the first support-load
+   * increment). Gravity always has its own stage here
+   * (LoadSteps::gravity_with_pressure is not followed).
    */
   class Model
   {

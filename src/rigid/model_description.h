@@ -96,7 +96,7 @@ namespace FloorBlock::RigidBlocks
     /** Prescribed motion of the (rigid) base in the uplift stage. */
     Contact::UpliftSettings uplift;
     /** Increments of the gravity, support-load and uplift stages. */
-    Contact::LoadSteps steps;
+    Loading::LoadSteps steps;
     RigidSolverSettings solver;
   };
 

@@ -70,7 +70,7 @@ namespace FloorBlock::RigidBlocks
   /** @brief One converged load increment. */
   struct IncrementReport
   {
-    Contact::LoadStage stage = Contact::LoadStage::gravity;
+    Loading::LoadStage stage = Loading::LoadStage::gravity;
     /** Factors of gravity, support load and uplift after the increment (-). */
     double gravity_factor = 0.;
     double support_factor = 0.;

@@ -34,7 +34,7 @@ namespace FloorBlock::Scene
      */
     bool vertical_support_load = true;
     Contact::UpliftSettings uplift;
-    Contact::LoadSteps      steps;
+    Loading::LoadSteps      steps;
     /**
      * Dip of the frame's x axis below the horizontal (rad): gravity and
      * vertical support loads act along (sin, -cos) of it.

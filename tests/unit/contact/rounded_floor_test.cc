@@ -17,7 +17,7 @@ namespace
     floor_case.corner_size = 0.0025; // m, r / 4: 8 cells on the fillet
     const Testing::LiftedFloorOutcome outcome = Testing::run_lifted_floor(floor_case);
     const Contact::IncrementResult   &last    = outcome.last;
-    EXPECT_EQ(last.stage, Contact::LoadStage::uplift);
+    EXPECT_EQ(last.stage, Loading::LoadStage::uplift);
     EXPECT_DOUBLE_EQ(last.stage_factor, 1.);
     EXPECT_LT(last.balance.relative_imbalance, 1e-6);
 

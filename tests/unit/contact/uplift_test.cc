@@ -148,7 +148,7 @@ namespace
     ASSERT_EQ(result.increments.size(), 1u + n_uplift);
     for (unsigned int k = 1; k <= n_uplift; ++k)
       {
-        EXPECT_EQ(result.increments[k].stage, LoadStage::uplift);
+        EXPECT_EQ(result.increments[k].stage, Loading::LoadStage::uplift);
         // Summed steps: round-off of a few ulps, exactly 1 at the end.
         EXPECT_NEAR(result.increments[k].stage_factor,
                     static_cast<double>(k) / n_uplift, 1e-15);

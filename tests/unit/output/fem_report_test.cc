@@ -17,10 +17,10 @@ namespace
 
   TEST(FemReport, StageNames)
   {
-    EXPECT_EQ(Output::stage_name(Contact::LoadStage::gravity), "gravity");
-    EXPECT_EQ(Output::stage_name(Contact::LoadStage::support_pressure),
+    EXPECT_EQ(Output::stage_name(Loading::LoadStage::gravity), "gravity");
+    EXPECT_EQ(Output::stage_name(Loading::LoadStage::support_pressure),
               "support_load");
-    EXPECT_EQ(Output::stage_name(Contact::LoadStage::uplift), "uplift");
+    EXPECT_EQ(Output::stage_name(Loading::LoadStage::uplift), "uplift");
   }
 
   // Chapter numbering: vertical j lies between j and j+1, vertical n
@@ -53,7 +53,7 @@ namespace
   using namespace FloorBlock;
 
   Contact::IncrementResult
-  increment_with_one_pair(const Contact::LoadStage stage,
+  increment_with_one_pair(const Loading::LoadStage stage,
                           const double             traction)
   {
     Contact::IncrementResult increment;
@@ -78,11 +78,11 @@ namespace
   {
     Contact::SolveResult result;
     result.increments.push_back(
-      increment_with_one_pair(Contact::LoadStage::gravity, 1e5));
+      increment_with_one_pair(Loading::LoadStage::gravity, 1e5));
     result.increments.push_back(
-      increment_with_one_pair(Contact::LoadStage::uplift, 2e5));
+      increment_with_one_pair(Loading::LoadStage::uplift, 2e5));
     result.increments.push_back(
-      increment_with_one_pair(Contact::LoadStage::uplift, 3e5));
+      increment_with_one_pair(Loading::LoadStage::uplift, 3e5));
     const std::string csv = Output::joint_profiles_csv(result);
     EXPECT_NE(csv.find("increment,stage,stage_factor,joint,node,x_m,y_m,"
                        "arc_position_m,gap_m,normal_traction_Pa,"

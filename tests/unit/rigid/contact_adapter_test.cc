@@ -94,7 +94,7 @@ namespace FloorBlock::RigidBlocks
     EXPECT_EQ(last.joints.front().name, "vertical 1");
     EXPECT_EQ(last.joints[5].name, "vertical 6");
     EXPECT_EQ(last.joints[6].name, "bedding 1");
-    EXPECT_EQ(last.stage, Contact::LoadStage::uplift);
+    EXPECT_EQ(last.stage, Loading::LoadStage::uplift);
     EXPECT_EQ(last.stage_factor, 1.);
     EXPECT_EQ(solve.contact.n_dofs, 3u * 6u);
     EXPECT_EQ(solve.contact.n_contact_pairs, 0u);
