@@ -28,7 +28,7 @@ cd "$(dirname "$0")/.."
 
 build=build-sanitize
 jobs=${JOBS:-$(nproc)}
-targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic
+targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_loading
   unit_tests_parameters unit_tests_rigid fuzz_tests cli_tests floorblock})
 # ctest -E regex of tests left out, with the reason in the header above.
 excluded_tests=${SANITIZE_EXCLUDE:-'_NOT_BUILT$'}
