@@ -6,6 +6,21 @@
 
 namespace FloorBlock::Contact
 {
+  const char *
+  state_name(const JointState state)
+  {
+    switch (state)
+      {
+        case JointState::open:
+          return "open";
+        case JointState::stick:
+          return "stick";
+        case JointState::slip:
+          return "slip";
+      }
+    return "unknown";
+  }
+
   template <int dim>
   CoulombJoint<dim>::CoulombJoint(const JointConstants &parameters)
     : constants(parameters)

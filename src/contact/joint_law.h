@@ -14,6 +14,10 @@ namespace FloorBlock::Contact
     slip   ///< closed, shear at the Coulomb limit
   };
 
+  /** @brief "open", "stick" or "slip": the state's name in every output. */
+  const char *
+  state_name(const JointState state);
+
   /** @brief Material constants of a joint (SI units). */
   struct JointConstants
   {

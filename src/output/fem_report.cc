@@ -77,24 +77,6 @@ namespace FloorBlock::Output
     }
   } // namespace
 
-  namespace
-  {
-    const char *
-    pair_state_name(const Contact::JointState state)
-    {
-      switch (state)
-        {
-          case Contact::JointState::open:
-            return "open";
-          case Contact::JointState::stick:
-            return "stick";
-          case Contact::JointState::slip:
-            return "slip";
-        }
-      return "";
-    }
-  } // namespace
-
   std::string
   state_summary(const Contact::StateCounts &counts)
   {
@@ -310,7 +292,7 @@ namespace FloorBlock::Output
                 joint.name, i, sample.position[0], sample.position[1],
                 sample.arc_position, sample.gap, sample.normal_traction,
                 sample.tangential_traction,
-                pair_state_name(sample.state));
+                Contact::state_name(sample.state));
             }
       }
     return csv;

@@ -3,24 +3,6 @@
 
 namespace FloorBlock::Pipeline
 {
-  namespace
-  {
-    std::string
-    state_name(const Contact::JointState state)
-    {
-      switch (state)
-        {
-          case Contact::JointState::open:
-            return "open";
-          case Contact::JointState::stick:
-            return "stick";
-          case Contact::JointState::slip:
-            return "slip";
-        }
-      return "unknown";
-    }
-  } // namespace
-
   void
   write_deformed_view(const Contact::ContactSolver &solver,
                       const std::string            &png_path)
@@ -32,7 +14,7 @@ namespace FloorBlock::Pipeline
     std::vector<Output::PictureMarker> markers;
     markers.reserve(nodes.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)
-      markers.push_back({nodes[p].position, state_name(responses[p].state)});
+      markers.push_back({nodes[p].position, Contact::state_name(responses[p].state)});
     Output::write_deformed_picture(solver.space().dof_handler(),
                                    solver.solution(),
                                    markers,
