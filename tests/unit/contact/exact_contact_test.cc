@@ -261,15 +261,12 @@ namespace
   }
 
   /**
-   * Two exact pairs with off-axis normals and a compliant pair between
-   * them (no multipliers, so pair k != node index): pair 0 two-sided
-   * (DoFs 0-3), node 1 compliant (DoFs 4-7), pair 1 (node 2) against a
-   * moved rigid obstacle with an initial gap (DoFs 8-9); n_u = 10.
+   * Three node pairs with off-axis normals: two-sided (DoFs 0-3),
+   * two-sided (DoFs 4-7), and one against a moved rigid obstacle with an
+   * initial gap (DoFs 8-9).
    */
-  std::unique_ptr<System>
-  make_two_pair_system(
-    const dealii::AffineConstraints<double> &constraints =
-      dealii::AffineConstraints<double>())
+  std::vector<ContactNode<2>>
+  three_pairs()
   {
     std::vector<ContactNode<2>> nodes;
     nodes.push_back(two_sided_pair(
@@ -285,6 +282,21 @@ namespace
                                   {8, 9},
                                   dealii::Tensor<1, 2>({1e-5, -2e-5}),
                                   1e-5));
+    return nodes;
+  }
+
+  /**
+   * Two exact pairs with off-axis normals and a compliant pair between
+   * them (no multipliers, so pair k != node index): pair 0 two-sided
+   * (DoFs 0-3), node 1 compliant (DoFs 4-7), pair 1 (node 2) against a
+   * moved rigid obstacle with an initial gap (DoFs 8-9); n_u = 10.
+   */
+  std::unique_ptr<System>
+  make_two_pair_system(
+    const dealii::AffineConstraints<double> &constraints =
+      dealii::AffineConstraints<double>())
+  {
+    const std::vector<ContactNode<2>> nodes = three_pairs();
     std::vector<std::optional<ExactPairLaw>> laws = {make_law(),
                                                      std::nullopt,
                                                      make_law()};
@@ -397,20 +409,7 @@ namespace
     constraints.add_entry(9, 10, 0.5);
     constraints.add_entry(9, 11, 0.5);
     constraints.close();
-    std::vector<ContactNode<2>> nodes;
-    nodes.push_back(two_sided_pair(
-      0, dealii::Point<2>(0., 0.), 0.3, dealii::Tensor<1, 2>({0.6, 0.8}),
-      {0, 1}, {2, 3}));
-    nodes.push_back(two_sided_pair(
-      1, dealii::Point<2>(1., 0.), 0.4, dealii::Tensor<1, 2>({0., 1.}),
-      {4, 5}, {6, 7}));
-    nodes.push_back(obstacle_pair(2,
-                                  dealii::Point<2>(2., 0.),
-                                  0.7,
-                                  dealii::Tensor<1, 2>({-0.8, 0.6}),
-                                  {8, 9},
-                                  dealii::Tensor<1, 2>({1e-5, -2e-5}),
-                                  1e-5));
+    const std::vector<ContactNode<2>> nodes = three_pairs();
     System system(nodes, {make_law(), std::nullopt, make_law()}, 12, constraints);
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
     for (unsigned int i = 0; i < multipliers.size(); ++i)
