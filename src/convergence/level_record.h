@@ -22,6 +22,8 @@ namespace FloorBlock::Convergence
     double corner_size = 0.;
     double far_size    = 0.;
     double growth_rate = 0.;
+    /** Times every cell of that Gmsh mesh was halved (uniform: grows by one per level). */
+    unsigned int global_refinements = 0;
     /** Adaptive and remesh: number of solution-driven size requests the mesh honours. */
     std::size_t n_local_sizes = 0;
     /** Adaptive: refinement sweeps that made this level's mesh from the previous one. */

@@ -100,4 +100,14 @@ namespace FloorBlock::Geometry
     triangulation.reset_all_manifolds();
     triangulation.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
   }
+
+  void
+  refine_globally_on_curves(const AssemblyDescription &description,
+                            const unsigned int         n_refinements,
+                            dealii::Triangulation<2>  &triangulation)
+  {
+    attach_boundary_manifolds(description, triangulation);
+    triangulation.refine_global(n_refinements);
+    detach_boundary_manifolds(triangulation);
+  }
 } // namespace FloorBlock::Geometry

@@ -38,4 +38,16 @@ namespace FloorBlock::Geometry
    */
   void
   detach_boundary_manifolds(dealii::Triangulation<2> &triangulation);
+
+  /**
+   * @brief Halves every cell @p n_refinements times, new boundary vertices
+   * on the scene's curves (attach_boundary_manifolds(), then detached):
+   * the nested meshes of Mesh/Global refinements and of `converge --mode
+   * uniform`. Joint sides stay matched: coincident faces (and mirror-image
+   * fillet faces) split at coincident (mirror-image) points.
+   */
+  void
+  refine_globally_on_curves(const AssemblyDescription &description,
+                            const unsigned int         n_refinements,
+                            dealii::Triangulation<2>  &triangulation);
 } // namespace FloorBlock::Geometry

@@ -91,6 +91,7 @@ namespace FloorBlock::Output
               {"corner_size_m", record.corner_size},
               {"far_size_m", record.far_size},
               {"growth_rate", record.growth_rate},
+              {"global_refinements", record.global_refinements},
               {"n_local_sizes", record.n_local_sizes},
               {"n_refinement_sweeps", record.n_refinement_sweeps},
               {"n_cells_coarsened", record.n_cells_coarsened},
@@ -121,7 +122,7 @@ namespace FloorBlock::Output
       "finest_difference (see convergence.json for the reason).\n",
       numbering_note);
     csv += "mode,level,status,converged,corner_size_m,far_size_m,growth_rate,"
-           "n_local_sizes,n_refinement_sweeps,n_cells_coarsened,n_cells,n_dofs,"
+           "global_refinements,n_local_sizes,n_refinement_sweeps,n_cells_coarsened,n_cells,n_dofs,"
            "n_contact_pairs,n_increments,"
            "newton_iterations,cutbacks,force_balance_relative_error";
     for (const std::string &stage : stages)
@@ -138,10 +139,11 @@ namespace FloorBlock::Output
         {
           const LevelRecord &record = ladder.levels[level];
           csv += fmt::format(
-            "{},{},{},{},{:.9e},{:.9e},{:.9e},{},{},{},{},{},{},{},{},{},{:.3e}",
+            "{},{},{},{},{:.9e},{:.9e},{:.9e},{},{},{},{},{},{},{},{},{},{},{:.3e}",
             record.mode, record.level, record.status,
             record.converged() ? "true" : "false", record.corner_size,
-            record.far_size, record.growth_rate, record.n_local_sizes,
+            record.far_size, record.growth_rate, record.global_refinements,
+            record.n_local_sizes,
             record.n_refinement_sweeps, record.n_cells_coarsened,
             record.n_cells, record.n_dofs, record.n_contact_pairs,
             record.n_increments, record.newton_iterations, record.cutbacks,

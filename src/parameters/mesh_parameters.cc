@@ -6,6 +6,7 @@ namespace FloorBlock::Parameters
   using dealii::ParameterHandler;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
+  using dealii::Patterns::Selection;
 
   void
   MeshParameters::declare_parameters(ParameterHandler &prm)
@@ -24,6 +25,16 @@ namespace FloorBlock::Parameters
                       "(node-to-node contact). false (non-matching sides) "
                       "is refused while Model/Blocks chooses the elastic "
                       "FEM, whose joints pair nodes one to one. Units: none.");
+    prm.declare_entry(
+      "Global refinements", "auto", Selection("auto|0|1|2|3|4|5|6"),
+      "How many times deal.II halves every cell of the Gmsh mesh, new "
+      "boundary vertices on the scene's curves (nested meshes: `converge "
+      "--mode uniform` adds one per level). auto: none while the joints' "
+      "compliance length E/kn is at least the corner rounding radius; "
+      "otherwise (the rigid law, very stiff joints) enough halvings to "
+      "bring Corner size down to the rounding radius, because then the "
+      "corner fillet alone limits the contact concentration "
+      "(src/scene/mesh_refinement.h). Units: none.");
     prm.leave_subsection();
   }
 
@@ -35,6 +46,11 @@ namespace FloorBlock::Parameters
     far_size        = prm.get_double("Far size");
     growth_rate     = prm.get_double("Growth rate");
     matching_joints = prm.get_bool("Matching joints");
+    const std::string refinements = prm.get("Global refinements");
+    global_refinements =
+      refinements == "auto" ?
+        std::nullopt :
+        std::optional<unsigned int>(std::stoul(refinements));
     prm.leave_subsection();
 
     if (corner_size > far_size)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include <contact/joint_law_kind.h>
 #include <geometry/bedding_kinds.h>
 #include <solver/solver_kinds.h>
@@ -138,6 +140,12 @@ namespace FloorBlock::Parameters
     double far_size;     ///< m, element size far from the corners
     double growth_rate;  ///< size ratio between neighbouring elements, > 1
     bool   matching_joints;
+    /**
+     * deal.II refinements of the whole Gmsh mesh, each halving every cell
+     * (new boundary vertices on the scene's curves); empty for "auto"
+     * (Scene::global_refinements() decides).
+     */
+    std::optional<unsigned int> global_refinements;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

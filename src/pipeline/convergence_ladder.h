@@ -15,11 +15,10 @@ namespace FloorBlock::Pipeline
   enum class RefinementMode
   {
     /**
-     * Every level halves the whole size function of the Gmsh mesh:
-     * corner size, far size and (growth rate - 1), i.e.
-     * h_l(d) = min(far, corner + (g - 1) d) / 2^l everywhere. Halving only
-     * the corner and far sizes would leave the graded zone between them
-     * (where the face-joint contact ends) almost unchanged.
+     * Every level halves every cell of the level before (deal.II global
+     * refinement, new boundary vertices on the scene's curves), so
+     * h_l(x) = h_0(x) / 2^l everywhere on nested meshes
+     * (uniform_level_scene()).
      */
     uniform,
     /**
@@ -43,7 +42,11 @@ namespace FloorBlock::Pipeline
   std::string
   mode_name(const RefinementMode mode);
 
-  /** @brief The scene of uniform level @p level (sizes scaled by 2^-level). */
+  /**
+   * @brief The scene of uniform level @p level: the same Gmsh mesh with
+   * @p level more global refinements (Scene::global_refinements()), so
+   * every cell is halved @p level times more.
+   */
   Parameters::ScenarioParameters
   uniform_level_scene(Parameters::ScenarioParameters scene,
                       const unsigned int             level);

@@ -12,9 +12,8 @@ namespace FloorBlock::Pipeline
   refined_scene(Parameters::ScenarioParameters scene)
   {
     // The next level of `converge`'s uniform ladder, so that `run` and
-    // `converge` mean the same by "refined". The growth rate is refined
-    // too: halving only Corner size and Far size leaves the cells near the
-    // end of the contact zone, away from the corners, almost unchanged.
+    // `converge` mean the same by "refined": every cell halved, including
+    // those near the end of the contact zone, away from the corners.
     scene = uniform_level_scene(scene, 1);
     // The rigid-block model's only discretisation: points along each joint.
     scene.model.rigid_points_per_joint *= 2;
@@ -29,7 +28,7 @@ namespace FloorBlock::Pipeline
       coarse.report.model == "rigid blocks" ?
         "difference to one solve with twice the points per joint" :
         "difference to a solve on the next uniform refinement level "
-        "(all mesh sizes and the growth rate's excess over 1 halved)";
+        "(every cell halved)";
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)

@@ -30,8 +30,8 @@ namespace FloorBlock::Pipeline
 
   /**
    * @brief Level 1 of `converge`'s uniform ladder (uniform_level_scene:
-   * every size of the Gmsh size function halved, the growth rate's excess
-   * over 1 too) and Model/Rigid points per joint doubled.
+   * every cell of the scene's mesh halved) and Model/Rigid points per
+   * joint doubled.
    */
   Parameters::ScenarioParameters
   refined_scene(Parameters::ScenarioParameters scene);

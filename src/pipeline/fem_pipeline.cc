@@ -2,15 +2,20 @@
 #include <pipeline/deformed_view.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
+#include <common/atomic_file.h>
 #include <common/units.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
+#include <geometry/refinement_manifolds.h>
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
+#include <scene/mesh_refinement.h>
 #include <scene/rigid_inputs.h>
 
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
 
 #include <fmt/format.h>
@@ -18,6 +23,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 
 namespace FloorBlock::Pipeline
 {
@@ -93,11 +99,32 @@ namespace FloorBlock::Pipeline
   {
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
-    const Geometry::MeshStatistics mesh =
-      Geometry::write_gmsh_mesh(Scene::assembly_description(scene),
-                                folder.path_of("mesh.msh"), local_sizes);
+    const auto               description = Scene::assembly_description(scene);
+    Geometry::MeshStatistics mesh =
+      Geometry::write_gmsh_mesh(description, folder.path_of("mesh.msh"),
+                                local_sizes);
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
+    if (const unsigned int n_refinements = Scene::global_refinements(scene))
+      {
+        dealii::Timer timer;
+        Geometry::refine_globally_on_curves(description, n_refinements,
+                                            triangulation);
+        write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
+        mesh.wall_time += timer.wall_time();
+      }
     return mesh;
+  }
+
+  void
+  write_solved_mesh(const dealii::Triangulation<2> &triangulation,
+                    const std::string              &msh_path,
+                    Geometry::MeshStatistics       &statistics)
+  {
+    std::ostringstream msh;
+    dealii::GridOut().write_msh(triangulation, msh);
+    write_file_atomically(msh_path, msh.str());
+    statistics.n_cells = triangulation.n_active_cells();
+    statistics.n_nodes = triangulation.n_used_vertices();
   }
 
   FemOutcome

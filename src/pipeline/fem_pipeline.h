@@ -58,14 +58,24 @@ namespace FloorBlock::Pipeline
 
   /**
    * @brief The Gmsh mesh of the scene (with @p local_sizes, adaptive
-   * re-meshing) written into @p folder as mesh.msh and read into @p
-   * triangulation: solve_scene()'s first half.
+   * re-meshing) read into @p triangulation and refined
+   * Scene::global_refinements() times; the mesh solved on is written into
+   * @p folder as mesh.msh: solve_scene()'s first half.
    */
   Geometry::MeshStatistics
   mesh_scene(const Parameters::ScenarioParameters   &scene,
              const Output::ResultFolder             &folder,
              const std::vector<Geometry::LocalSize> &local_sizes,
              dealii::Triangulation<2>               &triangulation);
+
+  /**
+   * @brief Writes @p triangulation as Gmsh .msh to @p msh_path (atomically)
+   * and puts its cell and node counts into @p statistics.
+   */
+  void
+  write_solved_mesh(const dealii::Triangulation<2> &triangulation,
+                    const std::string              &msh_path,
+                    Geometry::MeshStatistics       &statistics);
 
   /**
    * @brief solve_scene() on a mesh the caller made (e.g. refined by deal.II
