@@ -37,6 +37,15 @@ namespace FloorBlock::Contact
     /** Unit normal from the body into the obstacle. */
     dealii::Tensor<1, dim> plane_normal;
     /**
+     * Curvature of a rigid parabolic obstacle (1/m), 0 for the plane: its
+     * surface recedes from the plane by curvature s^2 / 2 at distance s
+     * from plane_point along the plane, e.g. a rigid cylinder of radius
+     * R = 1/curvature touching the plane at plane_point. The contact
+     * normal stays the plane's (Hertz's small-slope approximation). Fixed
+     * in space: refused together with plane_moves_with_uplift.
+     */
+    double obstacle_curvature = 0.;
+    /**
      * The plane is displaced by the uplift (UpliftSettings at its point,
      * scaled by the stage-3 factor), e.g. a rigid bedding moved parallel
      * to itself; false: fixed.

@@ -129,6 +129,13 @@ namespace FloorBlock::Contact
     for (unsigned int j = 0; j < problem.joints.size(); ++j)
       {
         const JointDefinition<2> &joint = problem.joints[j];
+        if (joint.obstacle_curvature != 0. &&
+            (!(joint.obstacle_curvature > 0.) || !joint.against_rigid_plane ||
+             joint.plane_moves_with_uplift))
+          throw std::logic_error(
+            "joint '" + joint.name +
+            "': an obstacle curvature needs a fixed rigid plane and must be "
+            "positive");
         if (joint.law == JointLawKind::compliant &&
             (!(joint.parameters.normal_stiffness > 0.) ||
              !(joint.parameters.shear_stiffness > 0.)))
@@ -142,6 +149,7 @@ namespace FloorBlock::Contact
                                   joint.side_a,
                                   joint.plane_point,
                                   joint.plane_normal,
+                                  joint.obstacle_curvature,
                                   j) :
             pair_joint_nodes(fe_space, joint.side_a, joint.side_b, j);
         nodes.insert(nodes.end(), joint_nodes.begin(), joint_nodes.end());

@@ -354,6 +354,7 @@ namespace FloorBlock::Contact
                         const dealii::types::boundary_id side,
                         const dealii::Point<dim>        &plane_point,
                         const dealii::Tensor<1, dim>    &plane_normal,
+                        const double                     curvature,
                         const unsigned int               joint_index)
   {
     std::vector<ContactNode<dim>> pairs;
@@ -361,7 +362,12 @@ namespace FloorBlock::Contact
       {
         ContactNode<dim> pair = make_contact_node(node, joint_index);
         pair.normal           = plane_normal / plane_normal.norm();
-        pair.initial_gap      = (plane_point - node.position) * pair.normal;
+        const dealii::Tensor<1, dim> offset = node.position - plane_point;
+        const double normal_offset = offset * pair.normal;
+        // s^2 = |x - p0|^2 - ((x - p0) . n)^2 in any dimension.
+        const double along_squared =
+          std::max(0., offset.norm_square() - normal_offset * normal_offset);
+        pair.initial_gap = -normal_offset + 0.5 * curvature * along_squared;
         pairs.push_back(pair);
       }
     return pairs;
@@ -378,5 +384,6 @@ namespace FloorBlock::Contact
                         const dealii::types::boundary_id,
                         const dealii::Point<2> &,
                         const dealii::Tensor<1, 2> &,
+                        const double,
                         const unsigned int);
 } // namespace FloorBlock::Contact

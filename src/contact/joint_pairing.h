@@ -64,10 +64,13 @@ namespace FloorBlock::Contact
                    PairingSummary                  *summary = nullptr);
 
   /**
-   * @brief Pairs every node of boundary @p side with a fixed rigid plane.
+   * @brief Pairs every node of boundary @p side with a fixed rigid plane,
+   * or with a parabolic obstacle touching it at @p plane_point.
    * @param[in] plane_point A point on the plane (m).
    * @param[in] plane_normal Unit normal pointing from the body into the
-   *   obstacle; the initial gap is \f$(p_0 - x)\cdot n\f$.
+   *   obstacle; the initial gap is \f$(p_0 - x)\cdot n + \kappa s^2/2\f$,
+   *   s the distance of x from p_0 along the plane.
+   * @param[in] curvature \f$\kappa\f$ (1/m), >= 0; 0 for the plane.
    */
   template <int dim>
   std::vector<ContactNode<dim>>
@@ -75,5 +78,6 @@ namespace FloorBlock::Contact
                         const dealii::types::boundary_id side,
                         const dealii::Point<dim>        &plane_point,
                         const dealii::Tensor<1, dim>    &plane_normal,
+                        const double                     curvature,
                         const unsigned int               joint_index);
 } // namespace FloorBlock::Contact

@@ -4,8 +4,6 @@
 #include <verification/hertz_verification.h>
 
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
@@ -15,12 +13,10 @@ namespace FloorBlock::Verification
 {
   namespace
   {
-    constexpr dealii::types::material_id cylinder = 1;
-    constexpr dealii::types::boundary_id curved_surface  = 1;
-    constexpr dealii::types::boundary_id symmetry_plane  = 2;
-    constexpr dealii::types::boundary_id loaded_cut      = 3;
-    constexpr dealii::types::manifold_id circle_manifold = 0;
-    constexpr dealii::types::manifold_id cell_manifold   = 1;
+    constexpr dealii::types::material_id body = 1;
+    constexpr dealii::types::boundary_id contact_face   = 1;
+    constexpr dealii::types::boundary_id symmetry_plane = 2;
+    constexpr dealii::types::boundary_id loaded_face    = 3;
     /**
      * Cells finer than the contact cell size h0 = a / N cover the disc of
      * this many half-widths around the contact point, so that both ends
@@ -34,50 +30,41 @@ namespace FloorBlock::Verification
      * whatever h0: the body just outside the zone was too stiff.
      */
     constexpr double cell_size_growth = 0.25;
-    /** Global refinements before the local ones, so the arc is resolved. */
-    constexpr unsigned int n_global_refinements = 2;
-    /** Geometric tolerance of face classification, relative to R. */
-    constexpr double face_tolerance = 1e-8;
+    /** Geometric tolerance of face classification, relative to the body. */
+    constexpr double face_tolerance = 1e-10;
 
+    /**
+     * The half model [0, W] x [0, W] of the elastic half-space, W =
+     * hertz_body_half_widths a, refined around the contact point (the
+     * origin) to cells of a / N within fine_zone_half_widths a, graded
+     * beyond.
+     */
     void
-    make_quarter_cylinder(const double              radius,
-                          const double              half_width,
+    make_half_space_block(const double              half_width,
                           const unsigned int        cells_per_half_width,
                           dealii::Triangulation<2> &mesh)
     {
       using namespace dealii;
-      GridGenerator::quarter_hyper_ball(mesh, Point<2>(), radius);
-      // First quadrant -> below the centre, right of the axis, touching
-      // y = 0 at the origin: rotate by -90 degrees, lift by R.
-      GridTools::rotate(-M_PI / 2., mesh);
-      GridTools::shift(Tensor<1, 2>({0., radius}), mesh);
-      const Point<2> centre(0., radius);
-      mesh.reset_all_manifolds();
-      mesh.set_all_manifold_ids(cell_manifold);
+      const double size = hertz_body_half_widths * half_width;
+      GridGenerator::hyper_rectangle(mesh, Point<2>(), Point<2>(size, size));
       for (const auto &cell : mesh.active_cell_iterators())
         {
-          cell->set_material_id(cylinder);
+          cell->set_material_id(body);
           for (const auto &face : cell->face_iterators())
             {
               if (!face->at_boundary())
                 continue;
               const Point<2> middle = face->center();
-              if (std::abs(middle[0]) < face_tolerance * radius)
+              if (std::abs(middle[1]) < face_tolerance * size)
+                face->set_boundary_id(contact_face);
+              else if (std::abs(middle[0]) < face_tolerance * size)
                 face->set_boundary_id(symmetry_plane);
-              else if (std::abs(middle[1] - radius) < face_tolerance * radius)
-                face->set_boundary_id(loaded_cut);
+              else if (std::abs(middle[1] - size) < face_tolerance * size)
+                face->set_boundary_id(loaded_face);
               else
-                {
-                  face->set_boundary_id(curved_surface);
-                  face->set_manifold_id(circle_manifold);
-                }
+                face->set_boundary_id(0); // the free far side x = W
             }
         }
-      mesh.set_manifold(circle_manifold, SphericalManifold<2>(centre));
-      TransfiniteInterpolationManifold<2> transfinite;
-      transfinite.initialize(mesh);
-      mesh.set_manifold(cell_manifold, transfinite);
-      mesh.refine_global(n_global_refinements);
       const double contact_cell_size = half_width / cells_per_half_width;
       bool         refined           = true;
       while (refined)
@@ -106,21 +93,13 @@ namespace FloorBlock::Verification
     }
   } // namespace
 
-  double
-  hertz_peak_pressure_tolerance(const double half_width, const double radius)
-  {
-    const double ratio = half_width / radius;
-    return hertz_peak_pressure_base_tolerance +
-           hertz_model_error_coefficient * ratio * ratio;
-  }
-
   HertzResult
   run_hertz_verification(const HertzSettings &settings)
   {
     const Material::ElasticLaw<2> law = Material::ElasticLaw<2>::from_youngs_poisson(
       settings.youngs_modulus, settings.poissons_ratio);
-    // Rigid flat: the contact modulus is the cylinder's plane-strain
-    // modulus, 1/E* = (1 - nu^2)/E.
+    // Rigid counterpart: the contact modulus is the elastic body's
+    // plane-strain modulus, 1/E* = (1 - nu^2)/E.
     const Analytic::HertzLineContact closed_form =
       Analytic::hertz_line_contact(settings.line_load,
                                    settings.radius,
@@ -133,28 +112,29 @@ namespace FloorBlock::Verification
     result.peak_pressure_exact = closed_form.peak_pressure;
 
     dealii::Triangulation<2> mesh;
-    make_quarter_cylinder(settings.radius,
-                          result.half_width_exact,
+    make_half_space_block(result.half_width_exact,
                           settings.cells_per_half_width,
                           mesh);
     Contact::ContactProblem<2> scene;
-    scene.model.laws.emplace(cylinder, law);
-    // Half model: P/2 spread over the cut of length R.
-    scene.model.pressures[loaded_cut] =
-      settings.line_load / (2. * settings.radius);
+    scene.model.laws.emplace(body, law);
+    // Half model: P/2 spread over the top face of width W.
+    scene.model.pressures[loaded_face] =
+      settings.line_load /
+      (2. * hertz_body_half_widths * result.half_width_exact);
     Contact::SupportDefinition<2> symmetry;
     symmetry.boundary_id            = symmetry_plane;
     symmetry.constrained_components = {{true, false}};
     scene.supports                  = {symmetry};
     Contact::JointDefinition<2> contact;
     contact.name                        = "hertz";
-    contact.side_a                      = curved_surface;
+    contact.side_a                      = contact_face;
     contact.law                         = settings.law;
     contact.parameters.normal_stiffness = settings.compliant_stiffness;
     contact.parameters.shear_stiffness  = settings.compliant_stiffness;
     contact.against_rigid_plane         = true;
     contact.plane_point                 = dealii::Point<2>();
     contact.plane_normal                = dealii::Tensor<1, 2>({0., -1.});
+    contact.obstacle_curvature          = 1. / settings.radius;
     scene.joints                        = {contact};
     scene.steps                         = {0, 1, 0};
 
@@ -173,7 +153,8 @@ namespace FloorBlock::Verification
     // prints (make_joint_reports(): the end from the square-root fall of
     // the exact law's traction): the half model's contact is [0, a].
     result.half_width_computed = report.closed_length;
-    double last_closed = 0., first_open = settings.radius;
+    double last_closed = 0.,
+           first_open  = hertz_body_half_widths * result.half_width_exact;
     for (const auto &sample : report.profile)
       {
         const double x = sample.position[0];

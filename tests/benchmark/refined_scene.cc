@@ -81,7 +81,8 @@ namespace FloorBlock::Benchmark
         const auto joint_nodes =
           joint.against_rigid_plane ?
             Contact::pair_nodes_with_plane(
-              space, joint.side_a, joint.plane_point, joint.plane_normal, j) :
+              space, joint.side_a, joint.plane_point, joint.plane_normal,
+              joint.obstacle_curvature, j) :
             Contact::pair_joint_nodes(space, joint.side_a, joint.side_b, j);
         for (const auto &node : joint_nodes)
           {
