@@ -35,8 +35,12 @@ namespace FloorBlock::Parameters
                       "automatic: sparse direct (Amesos KLU) up to 'Max "
                       "direct DoFs', ML AMG + GMRES above; or force either. "
                       "Units: none.");
-    prm.declare_entry("Max direct DoFs", "60000", Integer(1, 100000000),
+    prm.declare_entry("Max direct DoFs", "400000", Integer(1, 100000000),
                       "Largest system that 'automatic' solves directly. "
+                      "Newton keeps the LU factors and reuses them, so "
+                      "direct wins far above one solve's break-even: "
+                      "default scene, 79k DoFs, 16 s against 90 s with ML "
+                      "AMG + GMRES; 312k DoFs direct in 81 s and 2.5 GB. "
                       "Units: none.");
     prm.declare_entry("Direct solver", "automatic",
                       Selection("automatic|KLU|UMFPACK"),

@@ -15,7 +15,7 @@ namespace FloorBlock::Solver
   {
     LinearSolverKind kind = LinearSolverKind::automatic;
     /** Largest system (number of DoFs) that `automatic` solves directly. */
-    unsigned int max_direct_dofs = 60000;
+    unsigned int max_direct_dofs = 400000;
     /**
      * Amesos package. "Amesos_Klu" works; "Amesos_Umfpack" throws (with
      * an empty message) in the Debian 12 Trilinos build, so it is not the
