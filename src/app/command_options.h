@@ -3,6 +3,7 @@
 #include <common/input_error.h>
 #include <parameters/scenario_parameters.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ namespace FloorBlock::App
     double coarsen_fraction = 0.03; ///< converge adaptive: cells flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
     double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
+    double budget_seconds = 60.; ///< converge: wall time of the whole study (s)
+    std::size_t max_dofs  = 400000; ///< converge: largest level (DoFs)
 
   };
 

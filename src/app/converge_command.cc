@@ -39,6 +39,13 @@ namespace FloorBlock::App
             {"--target-error", options.target_error}})
         if (!(value > 0. && value <= 1.))
           throw InputError(name, fmt::format("{}", value), "0 < value <= 1");
+      if (!(options.budget_seconds > 0.))
+        throw InputError("--budget-seconds",
+                         fmt::format("{}", options.budget_seconds),
+                         "a wall time > 0 s");
+      if (options.max_dofs < 1000)
+        throw InputError("--max-dofs", std::to_string(options.max_dofs),
+                         "at least 1000");
       if (!(options.coarsen_fraction >= 0. && options.coarsen_fraction < 1.))
         throw InputError("--coarsen-fraction",
                          fmt::format("{}", options.coarsen_fraction),
@@ -75,6 +82,7 @@ namespace FloorBlock::App
                 const Parameters::ScenarioParameters     &scene,
                 const std::vector<Quantity>              &quantities,
                 const Output::ResultFolder               &folder,
+                const dealii::Timer                      &command_timer,
                 std::vector<Ladder>                      &ladders)
     {
       Convergence::RefinementSettings refinement;
@@ -84,16 +92,23 @@ namespace FloorBlock::App
       for (const Pipeline::RefinementMode mode :
            Pipeline::refinement_modes(options.refinement_mode))
         {
-          ladders.push_back({Pipeline::mode_name(mode), {}, {}});
-          const auto levels = Pipeline::run_ladder(
+          ladders.push_back({Pipeline::mode_name(mode), {}, {}, {}});
+          // One budget for the whole command: each ladder gets what the
+          // ladders before it left.
+          Convergence::LadderBudget budget;
+          budget.seconds  = options.budget_seconds - command_timer.wall_time();
+          budget.max_dofs = options.max_dofs;
+          const auto run = Pipeline::run_ladder(
             scene, mode, options.n_levels, refinement,
             options.coarsen_fraction, folder,
             [&](const std::vector<Convergence::LevelRecord> &so_far) {
               ladders.back().levels = so_far;
               Convergence::estimate_ladder_errors(ladders.back(), quantities);
               write_tables(folder, ladders, quantities);
-            });
-          for (const auto &record : levels)
+            },
+            budget);
+          ladders.back().stopped_because = run.stopped_because;
+          for (const auto &record : run.levels)
             all_converged = all_converged && record.converged();
           std::cout << Output::ladder_text(ladders.back(), quantities);
         }
@@ -151,7 +166,7 @@ namespace FloorBlock::App
       Convergence::quantities_of_interest(scene.geometry.n_blocks);
     std::vector<Ladder> ladders;
     const bool          all_converged =
-      run_ladders(options, scene, quantities, folder, ladders);
+      run_ladders(options, scene, quantities, folder, timer, ladders);
     const Output::TargetVerdict verdict =
       write_study(options, scene, ladders, quantities, folder);
 

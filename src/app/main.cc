@@ -143,6 +143,13 @@ namespace
                          "Adaptive: joint segments whose normal-traction jump "
                          "exceeds this fraction of the largest are refined "
                          "(default 0.25)");
+    converge->add_option("--budget-seconds", options.budget_seconds,
+                         "Wall time of the whole study (s, default 60): a "
+                         "ladder stops before a level whose forecast (the "
+                         "last step's growth repeated) does not fit");
+    converge->add_option("--max-dofs", options.max_dofs,
+                         "Largest level a ladder may start (forecast DoFs, "
+                         "default 400000)");
     converge->add_option("--target-error", options.target_error,
                          "Relative error at which uniform and adaptive costs "
                          "are compared (default 0.01)");

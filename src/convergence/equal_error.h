@@ -14,6 +14,8 @@ namespace FloorBlock::Convergence
     std::string                 mode; ///< "uniform" or "adaptive"
     std::vector<LevelRecord>    levels;
     std::vector<SequenceErrors> errors; ///< one per quantities_of_interest() entry
+    /** Why the ladder ended before its last requested level (budget); empty otherwise. */
+    std::string stopped_because;
   };
 
   /** @brief Estimates the errors of every quantity of a ladder. */

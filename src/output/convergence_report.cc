@@ -198,7 +198,9 @@ namespace FloorBlock::Output
               {"errors", optional_list(errors.errors)},
               {"relative_errors", optional_list(errors.relative_errors)}};
           }
-        modes[ladder.mode] = {{"levels", levels}, {"quantities", estimates}};
+        modes[ladder.mode] = {{"levels", levels},
+                              {"quantities", estimates},
+                              {"stopped_because", ladder.stopped_because}};
       }
 
     json equal_error = json::array();
@@ -334,6 +336,8 @@ namespace FloorBlock::Output
               const std::vector<Convergence::Quantity> &quantities)
   {
     std::string text = fmt::format("{} refinement:\n", ladder.mode);
+    if (!ladder.stopped_because.empty())
+      text += fmt::format("  (ladder {})\n", ladder.stopped_because);
     for (std::size_t q = 0; q < quantities.size(); ++q)
       {
         const auto &errors = ladder.errors[q];

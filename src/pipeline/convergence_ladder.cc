@@ -211,10 +211,42 @@ namespace FloorBlock::Pipeline
     class LadderLog
     {
     public:
-      LadderLog(const RefinementMode mode, const LevelCallback &after_level)
+      LadderLog(const RefinementMode                mode,
+                const LevelCallback                &after_level,
+                const Convergence::LadderBudget    &budget)
         : cumulative(mode != RefinementMode::uniform)
         , after_level(after_level)
+        , budget(budget)
       {}
+
+      /**
+       * Whether the forecast of the next level fits the budget; prints the
+       * forecast (time left) or why the ladder stops.
+       */
+      bool
+      can_afford_next_level()
+      {
+        const auto forecast = Convergence::forecast_next_level(levels);
+        const auto reason   = Convergence::budget_stop_reason(
+          budget, timer.wall_time(), forecast);
+        if (reason)
+          {
+            stopped_because = "stopped before level " +
+                              std::to_string(levels.back().level + 1) +
+                              ": " + *reason;
+            std::cout << "converge: " << levels.back().mode << " ladder "
+                      << stopped_because << std::endl;
+            return false;
+          }
+        std::cout << fmt::format(
+                       "converge: {} level {} next: about {:.0f} DoFs and "
+                       "{:.0f} s ({:.0f} s of the budget left)",
+                       levels.back().mode, levels.back().level + 1,
+                       forecast.n_dofs, forecast.wall_time,
+                       budget.seconds - timer.wall_time())
+                  << std::endl;
+        return true;
+      }
 
       void
       add(LevelRecord record)
@@ -238,12 +270,22 @@ namespace FloorBlock::Pipeline
         return false;
       }
 
+      /** The ladder's levels and why it stopped early, if it did. */
+      LadderRun
+      result() const
+      {
+        return {levels, stopped_because};
+      }
+
       std::vector<LevelRecord> levels;
 
     private:
-      const bool           cumulative;
-      const LevelCallback &after_level;
-      double               cumulative_time = 0.;
+      const bool                       cumulative;
+      const LevelCallback             &after_level;
+      const Convergence::LadderBudget  budget;
+      dealii::Timer                    timer;
+      double                           cumulative_time = 0.;
+      std::string                      stopped_because;
     };
 
     Convergence::RefinementSettings
@@ -256,16 +298,19 @@ namespace FloorBlock::Pipeline
       return refinement;
     }
 
-    std::vector<LevelRecord>
+    LadderRun
     run_uniform_ladder(const Parameters::ScenarioParameters  &scene,
                        const unsigned int                     n_levels,
                        const Convergence::RefinementSettings &refinement,
                        const Output::ResultFolder            &folder,
-                       const LevelCallback                   &after_level)
+                       const LevelCallback                   &after_level,
+                       const Convergence::LadderBudget       &budget)
     {
-      LadderLog log(RefinementMode::uniform, after_level);
+      LadderLog log(RefinementMode::uniform, after_level, budget);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
+          if (level > 0 && !log.can_afford_next_level())
+            break;
           const auto level_scene = uniform_level_scene(scene, level);
           log.add(solve_level(
             level_scene, RefinementMode::uniform, level, 0, refinement, folder,
@@ -274,21 +319,24 @@ namespace FloorBlock::Pipeline
             },
             nullptr));
         }
-      return log.levels;
+      return log.result();
     }
 
     /** Each level a new Gmsh mesh with all requests so far. */
-    std::vector<LevelRecord>
+    LadderRun
     run_remesh_ladder(const Parameters::ScenarioParameters  &scene,
                       const unsigned int                     n_levels,
                       const Convergence::RefinementSettings &refinement,
                       const Output::ResultFolder            &folder,
-                      const LevelCallback                   &after_level)
+                      const LevelCallback                   &after_level,
+                      const Convergence::LadderBudget       &budget)
     {
-      LadderLog                        log(RefinementMode::remesh, after_level);
+      LadderLog log(RefinementMode::remesh, after_level, budget);
       std::vector<Geometry::LocalSize> local_sizes;
       for (unsigned int level = 0; level < n_levels; ++level)
         {
+          if (level > 0 && !log.can_afford_next_level())
+            break;
           Indicators next;
           log.add(solve_level(
             scene, RefinementMode::remesh, level, local_sizes.size(),
@@ -303,7 +351,7 @@ namespace FloorBlock::Pipeline
           Convergence::merge_size_requests(local_sizes, next.requests,
                                            scene.mesh.growth_rate);
         }
-      return log.levels;
+      return log.result();
     }
 
     std::vector<Convergence::JointSides>
@@ -348,21 +396,24 @@ namespace FloorBlock::Pipeline
     }
 
     /** Level 0 from Gmsh, then deal.II refinement with hanging nodes. */
-    std::vector<LevelRecord>
+    LadderRun
     run_adaptive_ladder(const Parameters::ScenarioParameters  &scene,
                         const unsigned int                     n_levels,
                         const Convergence::RefinementSettings &refinement,
                         const double                           coarsen_fraction,
                         const Output::ResultFolder            &folder,
-                        const LevelCallback                   &after_level)
+                        const LevelCallback                   &after_level,
+                        const Convergence::LadderBudget       &budget)
     {
-      LadderLog                log(RefinementMode::adaptive, after_level);
+      LadderLog log(RefinementMode::adaptive, after_level, budget);
       const auto description = Scene::assembly_description(scene);
       const auto joints      = joint_sides(scene);
       dealii::Triangulation<2> triangulation;
       Indicators               previous;
       for (unsigned int level = 0; level < n_levels; ++level)
         {
+          if (level > 0 && !log.can_afford_next_level())
+            break;
           Indicators                            next;
           Convergence::MatchedRefinementSummary refinement_done;
           LevelRecord record = solve_level(
@@ -387,32 +438,34 @@ namespace FloorBlock::Pipeline
             break;
           previous = std::move(next);
         }
-      return log.levels;
+      return log.result();
     }
   } // namespace
 
-  std::vector<Convergence::LevelRecord>
+  LadderRun
   run_ladder(const Parameters::ScenarioParameters  &scene,
              const RefinementMode                   mode,
              const unsigned int                     n_levels,
              const Convergence::RefinementSettings &refinement_settings,
              const double                           coarsen_fraction,
              const Output::ResultFolder            &folder,
-             const LevelCallback                   &after_level)
+             const LevelCallback                   &after_level,
+             const Convergence::LadderBudget       &budget)
   {
     const auto refinement = bounded(refinement_settings, scene);
     switch (mode)
       {
         case RefinementMode::uniform:
           return run_uniform_ladder(scene, n_levels, refinement, folder,
-                                    after_level);
+                                    after_level, budget);
         case RefinementMode::remesh:
           return run_remesh_ladder(scene, n_levels, refinement, folder,
-                                   after_level);
+                                   after_level, budget);
         case RefinementMode::adaptive:
         default:
           return run_adaptive_ladder(scene, n_levels, refinement,
-                                     coarsen_fraction, folder, after_level);
+                                     coarsen_fraction, folder, after_level,
+                                     budget);
       }
   }
 } // namespace FloorBlock::Pipeline

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <convergence/ladder_budget.h>
 #include <convergence/level_record.h>
 #include <convergence/size_targets.h>
 #include <output/result_folder.h>
@@ -55,6 +56,14 @@ namespace FloorBlock::Pipeline
   using LevelCallback =
     std::function<void(const std::vector<Convergence::LevelRecord> &)>;
 
+  /** @brief The levels of one ladder and why it stopped early, if it did. */
+  struct LadderRun
+  {
+    std::vector<Convergence::LevelRecord> levels;
+    /** Empty if every requested level ran (or the ladder had nothing to refine from). */
+    std::string stopped_because;
+  };
+
   /**
    * @brief Runs @p n_levels full solves of the loading path, each into
    * <folder>/<mode>/level_<l>/ (mesh.msh, fem.json, joints.csv). A level
@@ -63,13 +72,17 @@ namespace FloorBlock::Pipeline
    * stops early if a level leaves no solution to refine from.
    * @p coarsen_fraction: adaptive mode, fraction of cells flagged for
    * coarsening per level (Convergence::flag_smooth_cells_for_coarsening).
+   * Before every level after the first the ladder forecasts its DoFs and
+   * wall time (Convergence::forecast_next_level) and stops if they exceed
+   * @p budget (the time counted from this call), saying so.
    */
-  std::vector<Convergence::LevelRecord>
+  LadderRun
   run_ladder(const Parameters::ScenarioParameters   &scene,
              const RefinementMode                    mode,
              const unsigned int                      n_levels,
              const Convergence::RefinementSettings  &refinement,
              const double                            coarsen_fraction,
              const Output::ResultFolder             &folder,
-             const LevelCallback                    &after_level);
+             const LevelCallback                    &after_level,
+             const Convergence::LadderBudget        &budget);
 } // namespace FloorBlock::Pipeline

@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -63,19 +65,27 @@ namespace
     EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[6].at("n_dofs"));
   }
 
-  // The tool shall refine: uniform levels multiply the DoFs (each halves the
-  // whole size function, so about x4 in 2D; the coarsest meshes are held up by
-  // the minimum cell counts, hence the bound 2), adaptive and remesh levels
-  // add some; the adaptive levels' meshes are deal.II refinements of the
-  // level before (n_refinement_sweeps >= 1), the others Gmsh meshes.
+  // The tool shall refine: uniform levels multiply the DoFs (each halves
+  // every cell of the level before, so 4 times the cells and, with the
+  // nodes shared between cells, about 3.6 times the DoFs here), adaptive and
+  // remesh levels add some; the adaptive levels' meshes are local deal.II
+  // refinements of the level before (n_refinement_sweeps >= 1), the remesh
+  // levels Gmsh meshes, the uniform ones global refinements of level 0
+  // (no sweeps counted).
   void
   check_levels_refine(const std::string &output)
   {
     const CsvTable table = read_csv(output + "/convergence.csv");
     ASSERT_EQ(table.rows.size(), 9u);
     for (std::size_t k : {1u, 2u})
-      EXPECT_GT(number_in(table.rows[k], "n_dofs"),
-                2. * number_in(table.rows[k - 1], "n_dofs"));
+      {
+        EXPECT_GT(number_in(table.rows[k], "n_dofs"),
+                  3. * number_in(table.rows[k - 1], "n_dofs"));
+        EXPECT_EQ(number_in(table.rows[k], "n_cells"),
+                  4. * number_in(table.rows[k - 1], "n_cells"));
+        EXPECT_EQ(number_in(table.rows[k], "global_refinements"),
+                  number_in(table.rows[k - 1], "global_refinements") + 1.);
+      }
     for (std::size_t k : {4u, 5u, 7u, 8u})
       EXPECT_GT(number_in(table.rows[k], "n_dofs"),
                 number_in(table.rows[k - 1], "n_dofs"));
@@ -84,7 +94,7 @@ namespace
         EXPECT_GT(number_in(table.rows[k], "n_local_sizes"), 0.);
         EXPECT_GE(number_in(table.rows[k], "n_refinement_sweeps"), 1.);
       }
-    // Gmsh levels are not refinements of each other.
+    // Only adaptive levels count refinement sweeps.
     for (std::size_t k : {0u, 1u, 2u, 6u, 7u, 8u})
       EXPECT_EQ(number_in(table.rows[k], "n_refinement_sweeps"), 0.);
   }
@@ -192,6 +202,38 @@ TEST(ConvergeCommand, AdaptiveLadderOnRoundedCorners)
         }
     }
   EXPECT_FALSE(std::filesystem::exists(folder + "/uniform"));
+}
+
+// The tool shall stop a ladder before a level its budget cannot pay for,
+// say why, and still write the study of the levels it ran.
+TEST(ConvergeCommand, StopsBeforeALevelBeyondTheBudget)
+{
+  const std::string folder = fresh_output_folder("converge_budget");
+  // A forecast of 4 times the DoFs of level 0 is above 1000 DoFs.
+  const auto result = run_floorblock(
+    "converge tests/scenarios/three_blocks.prm --levels 3 --mode uniform "
+    "--max-dofs 1000 --output " + shell_quoted(folder));
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("stopped before level 1"), std::string::npos)
+    << result.output;
+  const CsvTable table = read_csv(folder + "/convergence.csv");
+  EXPECT_EQ(table.rows.size(), 1u);
+  std::ifstream json(folder + "/convergence.json");
+  const std::string text((std::istreambuf_iterator<char>(json)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("above --max-dofs 1000"), std::string::npos);
+}
+
+// The tool shall refuse a budget that pays for nothing.
+TEST(ConvergeCommand, RefusesAZeroBudget)
+{
+  const std::string folder = fresh_output_folder("converge_zero_budget");
+  const auto        result = run_floorblock(
+    "converge tests/scenarios/three_blocks.prm --budget-seconds 0 --output " +
+    shell_quoted(folder));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("--budget-seconds"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder));
 }
 
 // The tool shall refuse a ladder too short for any error estimate.
