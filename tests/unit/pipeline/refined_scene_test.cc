@@ -2,6 +2,8 @@
 // pipeline/convergence_ladder): the same scene meshed the same way, with
 // every cell halved once more per level (Mesh/Global refinements).
 
+#include "default_scene.h"
+
 #include <parameters/scenario_parameters.h>
 #include <pipeline/convergence_ladder.h>
 #include <pipeline/error_estimate.h>
@@ -13,16 +15,7 @@
 
 using namespace FloorBlock;
 
-namespace
-{
-  Parameters::ScenarioParameters
-  default_scene()
-  {
-    return Parameters::read_scenario(std::string(FLOORBLOCK_SOURCE_DIR) +
-                                       "/params/default.prm",
-                                     {});
-  }
-} // namespace
+using Testing::default_scene;
 
 // The tool shall refine uniformly by halving every cell of the scene's own
 // mesh once per level (nested meshes), the Gmsh sizes unchanged.

@@ -1,6 +1,8 @@
 // Scene::global_refinements: "auto" refines the whole mesh only where the
 // corner fillet, not the joint springs, limits the contact concentration.
 
+#include "default_scene.h"
+
 #include <parameters/scenario_parameters.h>
 #include <scene/mesh_refinement.h>
 
@@ -10,16 +12,7 @@
 
 using namespace FloorBlock;
 
-namespace
-{
-  Parameters::ScenarioParameters
-  default_scene()
-  {
-    return Parameters::read_scenario(std::string(FLOORBLOCK_SOURCE_DIR) +
-                                       "/params/default.prm",
-                                     {});
-  }
-} // namespace
+using Testing::default_scene;
 
 // E/kn of Table 6.1: E = 9KG/(3K+G) = 16.09 GPa over kn = 9e9 Pa/m.
 TEST(JointComplianceLength, IsYoungsModulusOverNormalStiffness)
@@ -71,12 +64,9 @@ TEST(GlobalRefinements, AutoTreatsVeryStiffJointsLikeTheRigidLaw)
 
 TEST(GlobalRefinements, AnExplicitCountWins)
 {
-  auto scene = Parameters::read_scenario(
-    std::string(FLOORBLOCK_SOURCE_DIR) + "/params/default.prm",
-    {"Joints/Law=rigid", "Mesh/Global refinements=0"});
+  auto scene =
+    default_scene({"Joints/Law=rigid", "Mesh/Global refinements=0"});
   EXPECT_EQ(Scene::global_refinements(scene), 0u);
-  scene = Parameters::read_scenario(std::string(FLOORBLOCK_SOURCE_DIR) +
-                                      "/params/default.prm",
-                                    {"Mesh/Global refinements=2"});
+  scene = default_scene({"Mesh/Global refinements=2"});
   EXPECT_EQ(Scene::global_refinements(scene), 2u);
 }
