@@ -13,7 +13,11 @@ namespace FloorBlock::Output
   {
     double value          = 0.; ///< the solve's figure (SI unit of the figure)
     double refined_value  = 0.; ///< the refined solve's figure
-    double absolute_error = 0.; ///< |value - refined_value|
+    /**
+     * Estimated error of value: Pipeline::error_from_refined_difference
+     * times |value - refined_value|.
+     */
+    double absolute_error = 0.;
     /** absolute_error / |refined_value|; none when refined_value is 0. */
     std::optional<double> relative_error;
   };
@@ -28,7 +32,7 @@ namespace FloorBlock::Output
   };
 
   /**
-   * The discretisation error of each FEM figure, estimated as the
+   * The discretisation error of each FEM figure, estimated from the
    * difference to one refined solve (summary.json's fem_error_estimate).
    */
   struct FemErrorEstimate

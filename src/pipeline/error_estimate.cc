@@ -26,9 +26,11 @@ namespace FloorBlock::Pipeline
     Output::FemErrorEstimate estimate;
     estimate.method =
       coarse.report.model == "rigid blocks" ?
-        "difference to one solve with twice the points per joint" :
-        "difference to a solve on the next uniform refinement level "
-        "(every cell halved)";
+        "2.5 times the difference to one solve with twice the points per "
+        "joint" :
+        "2.5 times the difference to a solve on the next uniform "
+        "refinement level (every cell halved): first-order Richardson "
+        "with safety factor 1.25";
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)
@@ -65,10 +67,11 @@ namespace FloorBlock::Pipeline
           {
             const double coarse_value = coarse_joints[k].*figure;
             const double fine_value   = fine_joints[k].*figure;
-            const double difference   = std::abs(coarse_value - fine_value);
-            errors.*error = {coarse_value, fine_value, difference,
+            const double estimate = error_from_refined_difference *
+                                    std::abs(coarse_value - fine_value);
+            errors.*error = {coarse_value, fine_value, estimate,
                              fine_value != 0. ?
-                               std::optional<double>(difference /
+                               std::optional<double>(estimate /
                                                      std::abs(fine_value)) :
                                std::nullopt};
           }
