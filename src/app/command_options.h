@@ -4,6 +4,7 @@
 #include <parameters/scenario_parameters.h>
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,13 +21,15 @@ namespace FloorBlock::App
     std::string              verification_case; ///< verify: e.g. "hertz"
     std::string              figure;         ///< sweep: only this figure
     unsigned int             case_limit = 0; ///< sweep --fem: at most this many
-    unsigned int             n_levels   = 5;      ///< converge: ladder length
+    /** converge: ladder length; 0 = not given (default_levels, time-budgeted). */
+    unsigned int             n_levels   = 0;
     std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|remesh|both|all
     double bulk_fraction = 0.1;  ///< converge: cells refined by the Kelly indicator
     double coarsen_fraction = 0.03; ///< converge adaptive: cells flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
     double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
-    double budget_seconds = 60.; ///< converge: wall time of the whole study (s)
+    /** converge: wall time of the whole study (s); NaN = not given. */
+    double budget_seconds = std::numeric_limits<double>::quiet_NaN();
     std::size_t max_dofs  = 400000; ///< converge: largest level (DoFs)
 
   };

@@ -12,6 +12,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -24,11 +26,37 @@ namespace FloorBlock::App
     using Convergence::Quantity;
 
     constexpr unsigned int max_levels  = 10;
+    /** Levels without --levels: at most this many, within default_budget_seconds. */
+    constexpr unsigned int default_levels = 5;
+    /** Wall time of a study without --levels or --budget-seconds (s). */
+    constexpr double default_budget_seconds = 60.;
+
+    /** --levels, or default_levels. */
+    unsigned int
+    n_levels(const CommandOptions &options)
+    {
+      return options.n_levels == 0 ? default_levels : options.n_levels;
+    }
+
+    /**
+     * --budget-seconds; else none if the user asked for a number of levels
+     * (that is the budget), else default_budget_seconds.
+     */
+    double
+    budget_seconds(const CommandOptions &options)
+    {
+      if (!std::isnan(options.budget_seconds))
+        return options.budget_seconds;
+      return options.n_levels == 0 ?
+               default_budget_seconds :
+               std::numeric_limits<double>::infinity();
+    }
 
     void
     check_options(const CommandOptions &options)
     {
-      if (options.n_levels < 2 || options.n_levels > max_levels)
+      if (options.n_levels != 0 &&
+          (options.n_levels < 2 || options.n_levels > max_levels))
         throw InputError("--levels", std::to_string(options.n_levels),
                          "2 to " + std::to_string(max_levels) +
                            " (Richardson extrapolation needs 3)");
@@ -39,7 +67,7 @@ namespace FloorBlock::App
             {"--target-error", options.target_error}})
         if (!(value > 0. && value <= 1.))
           throw InputError(name, fmt::format("{}", value), "0 < value <= 1");
-      if (!(options.budget_seconds > 0.))
+      if (!std::isnan(options.budget_seconds) && !(options.budget_seconds > 0.))
         throw InputError("--budget-seconds",
                          fmt::format("{}", options.budget_seconds),
                          "a wall time > 0 s");
@@ -96,10 +124,10 @@ namespace FloorBlock::App
           // One budget for the whole command: each ladder gets what the
           // ladders before it left.
           Convergence::LadderBudget budget;
-          budget.seconds  = options.budget_seconds - command_timer.wall_time();
+          budget.seconds  = budget_seconds(options) - command_timer.wall_time();
           budget.max_dofs = options.max_dofs;
           const auto run = Pipeline::run_ladder(
-            scene, mode, options.n_levels, refinement,
+            scene, mode, n_levels(options), refinement,
             options.coarsen_fraction, folder,
             [&](const std::vector<Convergence::LevelRecord> &so_far) {
               ladders.back().levels = so_far;

@@ -126,7 +126,8 @@ namespace
   {
     CLI::App *converge = cli.get_subcommand("converge");
     converge->add_option("--levels", options.n_levels,
-                         "Number of refinement levels (2-10, default 5)");
+                         "Number of refinement levels (2-10). Without it: "
+                         "up to 5 levels within --budget-seconds 60");
     converge->add_option("--mode", options.refinement_mode,
                          "uniform, adaptive (deal.II hanging nodes), remesh "
                          "(Gmsh size field), both (uniform and adaptive, "
@@ -144,9 +145,10 @@ namespace
                          "exceeds this fraction of the largest are refined "
                          "(default 0.25)");
     converge->add_option("--budget-seconds", options.budget_seconds,
-                         "Wall time of the whole study (s, default 60): a "
-                         "ladder stops before a level whose forecast (the "
-                         "last step's growth repeated) does not fit");
+                         "Wall time of the whole study (s; default 60 without "
+                         "--levels, none with it): a ladder stops before a "
+                         "level whose forecast (the last step's growth "
+                         "repeated) does not fit");
     converge->add_option("--max-dofs", options.max_dofs,
                          "Largest level a ladder may start (forecast DoFs, "
                          "default 400000)");
