@@ -238,12 +238,16 @@ namespace FloorBlock::Pipeline
                       << stopped_because << std::endl;
             return false;
           }
+        const std::string left =
+          std::isfinite(budget.seconds) ?
+            fmt::format("{:.0f} s of the budget left",
+                        budget.seconds - timer.wall_time()) :
+            std::string("no time budget");
         std::cout << fmt::format(
                        "converge: {} level {} next: about {:.0f} DoFs and "
-                       "{:.0f} s ({:.0f} s of the budget left)",
+                       "{:.0f} s ({})",
                        levels.back().mode, levels.back().level + 1,
-                       forecast.n_dofs, forecast.wall_time,
-                       budget.seconds - timer.wall_time())
+                       forecast.n_dofs, forecast.wall_time, left)
                   << std::endl;
         return true;
       }
