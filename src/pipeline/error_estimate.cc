@@ -1,6 +1,8 @@
 #include <pipeline/convergence_ladder.h>
 #include <pipeline/error_estimate.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -24,13 +26,14 @@ namespace FloorBlock::Pipeline
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
   {
     Output::FemErrorEstimate estimate;
-    estimate.method =
+    // The factor is printed from the constant, so text and value agree.
+    estimate.method = fmt::format(
+      "{} times the difference to {}: first-order Richardson with safety "
+      "factor 1.25",
+      error_from_refined_difference,
       coarse.report.model == "rigid blocks" ?
-        "2.5 times the difference to one solve with twice the points per "
-        "joint" :
-        "2.5 times the difference to a solve on the next uniform "
-        "refinement level (every cell halved): first-order Richardson "
-        "with safety factor 1.25";
+        "one solve with twice the points per joint" :
+        "a solve on the next uniform refinement level (every cell halved)");
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)

@@ -40,7 +40,7 @@ namespace FloorBlock::Pipeline
    * estimate 0.35 (difference 0.14); Q 2.1 kN/m, estimate 2.9; peak 0.18
    * MPa, estimate 0.26. Rigid law: contact 3.6 mm, estimate 8.8.
    */
-  constexpr double error_from_refined_difference = 2.5;
+  constexpr double error_from_refined_difference = 2. * 1.25;
 
   /**
    * @brief Level 1 of `converge`'s uniform ladder (uniform_level_scene:
