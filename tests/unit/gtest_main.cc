@@ -1,4 +1,4 @@
-#include <common/mpi_session_directory.h>
+#include <common/singleton_mpi_environment.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -8,8 +8,9 @@ int
 main(int argc, char **argv)
 {
   // Test executables start side by side under ctest -j: a private Open MPI
-  // session directory each (see the class), declared first to outlive MPI.
-  const FloorBlock::PrivateMpiSessionDirectory session_directory;
+  // session directory each and the quick singleton start-up (see the class),
+  // declared first to outlive MPI.
+  const FloorBlock::SingletonMpiEnvironment mpi_environment;
   // One thread: tests must give the same answer on a loaded CI machine.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
