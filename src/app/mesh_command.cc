@@ -5,6 +5,7 @@
 #include <output/mesh_picture.h>
 #include <output/result_folder.h>
 #include <scene/assembly_inputs.h>
+#include <scene/contact_zone_sizing.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -31,7 +32,8 @@ namespace FloorBlock::App
     const std::string msh_path =
       (std::filesystem::path(mesh_folder) / (scene.scene_name + ".msh"))
         .string();
-    const auto statistics = Geometry::write_gmsh_mesh(description, msh_path);
+    const auto statistics = Geometry::write_gmsh_mesh(
+      description, msh_path, Scene::contact_zone_sizes(scene));
 
     dealii::Triangulation<2> triangulation;
     Geometry::read_triangulation(msh_path, triangulation);

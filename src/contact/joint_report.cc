@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
 
 namespace FloorBlock::Contact
@@ -136,6 +137,89 @@ namespace FloorBlock::Contact
     }
 
     /**
+     * The closed fraction of the same segment by a second, independent end
+     * rule, for the end's location uncertainty (JointReport::
+     * closed_length_uncertainty): where closed_fraction() extrapolates the
+     * exact law's t_n^2 from the end node and the next, this extrapolates
+     * it from the next two closed nodes; where it interpolates the
+     * indicator linearly, this interpolates the quadratic through the two
+     * nodes and the next open node beyond (the gap is smooth across the
+     * end of a compliant zone: the springs' traction starts from zero).
+     * NaN when the nodes for it are missing.
+     */
+    double
+    alternative_closed_fraction(const std::vector<JointNodeSample> &profile,
+                                const std::vector<double>          &indicators,
+                                const unsigned int                  closed,
+                                const unsigned int                  open)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const int    inward  = closed > open ? 1 : -1;
+      const int    n_nodes = static_cast<int>(profile.size());
+      const auto   node_at = [&](const int step) -> int {
+        const int index = static_cast<int>(closed) + step * inward;
+        return index >= 0 && index < n_nodes ? index : -1;
+      };
+      const double s_closed = profile[closed].arc_position;
+      const double segment  = std::abs(profile[open].arc_position - s_closed);
+      if (!(segment > 0.))
+        return nan;
+      const JointNodeSample &end_node = profile[closed];
+      if (end_node.exact_traction)
+        {
+          const int next = node_at(1), beyond = node_at(2);
+          if (next < 0 || beyond < 0 ||
+              profile[next].state == JointState::open ||
+              profile[beyond].state == JointState::open)
+            return nan;
+          const double p1 = profile[next].normal_traction;
+          const double p2 = profile[beyond].normal_traction;
+          if (!(p2 > p1 && p1 > 0.))
+            return nan;
+          const double spacing = std::abs(profile[beyond].arc_position -
+                                          profile[next].arc_position);
+          // Zero of the line through (s_next, p1^2), (s_beyond, p2^2),
+          // measured outward from the next node, then from the end node.
+          const double from_next = p1 * p1 * spacing / (p2 * p2 - p1 * p1);
+          const double from_end =
+            from_next -
+            std::abs(profile[next].arc_position - s_closed);
+          return std::clamp(from_end / segment, 0., 1.);
+        }
+      const int far = static_cast<int>(open) - inward;
+      if (far < 0 || far >= n_nodes || profile[far].state != JointState::open)
+        return nan;
+      const double s[3] = {profile[far].arc_position,
+                           profile[open].arc_position,
+                           s_closed};
+      const double g[3] = {indicators[far], indicators[open],
+                           indicators[closed]};
+      if (!(g[2] >= 0. && g[1] < 0.) || std::isnan(g[0]))
+        return nan;
+      // Lagrange quadratic through the three; its zero between the open
+      // and the closed node by bisection (the signs differ there).
+      const auto quadratic = [&](const double x) {
+        double value = 0.;
+        for (int i = 0; i < 3; ++i)
+          {
+            double basis = 1.;
+            for (int j = 0; j < 3; ++j)
+              if (j != i)
+                basis *= (x - s[j]) / (s[i] - s[j]);
+            value += g[i] * basis;
+          }
+        return value;
+      };
+      double open_side = s[1], closed_side = s[2];
+      for (int iteration = 0; iteration < 60; ++iteration)
+        {
+          const double middle = 0.5 * (open_side + closed_side);
+          (quadratic(middle) < 0. ? open_side : closed_side) = middle;
+        }
+      return std::abs(0.5 * (open_side + closed_side) - s_closed) / segment;
+    }
+
+    /**
      * Closed length with interpolated contact ends (see
      * make_joint_reports()): the closed nodes' weights, and on every
      * segment between a closed and an open node the interpolated closed
@@ -143,12 +227,13 @@ namespace FloorBlock::Contact
      * a correction of the node measure so that all-closed and all-open
      * joints give exactly the sums they gave before.
      */
-    double
+    std::pair<double, double>
     interpolated_closed_length(const std::vector<JointNodeSample> &profile,
                                const std::vector<double>          &weights,
                                const std::vector<double> &indicators)
     {
-      double length = 0.;
+      double length      = 0.;
+      double uncertainty = 0.;
       for (unsigned int k = 0; k < profile.size(); ++k)
         if (profile[k].state != JointState::open)
           length += weights[k];
@@ -170,8 +255,13 @@ namespace FloorBlock::Contact
           if (std::isnan(fraction))
             continue;
           length += fraction * segment - closed_share;
+          const double alternative = alternative_closed_fraction(
+            profile, indicators, first_closed ? k : k + 1,
+            first_closed ? k + 1 : k);
+          if (!std::isnan(alternative))
+            uncertainty += std::abs(alternative - fraction) * segment;
         }
-      return length;
+      return {length, uncertainty};
     }
   } // namespace
 
@@ -303,7 +393,7 @@ namespace FloorBlock::Contact
             report.normal_force -= weight * (force_density * normal);
             report.shear_force += weight * (force_density * tangent);
           }
-        report.closed_length =
+        std::tie(report.closed_length, report.closed_length_uncertainty) =
           interpolated_closed_length(report.profile, weights, indicators);
         std::vector<JointState> states;
         for (const auto &sample : report.profile)

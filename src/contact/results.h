@@ -40,6 +40,13 @@ namespace FloorBlock::Contact
     double shear_force = 0.;
     /** Length of the closed part (m); area = length x b. */
     double closed_length = 0.;
+    /**
+     * Location uncertainty of the closed part's ends (m): over the ends
+     * between nodes, the difference between the end rule used and a
+     * second rule from other nodes (joint_report.cc,
+     * alternative_closed_fraction()); 0 where no second rule applies.
+     */
+    double closed_length_uncertainty = 0.;
     /** Largest nodal normal traction (Pa) and where (m). */
     double           peak_normal_stress = 0.;
     dealii::Point<2> peak_position;

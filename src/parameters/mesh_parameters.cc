@@ -6,6 +6,7 @@ namespace FloorBlock::Parameters
   using dealii::ParameterHandler;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
 
   void
@@ -35,6 +36,15 @@ namespace FloorBlock::Parameters
       "bring Corner size down to the rounding radius, because then the "
       "corner fillet alone limits the contact concentration "
       "(src/scene/mesh_refinement.h). Units: none.");
+    prm.declare_entry(
+      "Cells per contact length", "8", Integer(0, 100),
+      "Contact-zone sizing: cells of size c / N (not below Corner size) "
+      "along both ends of every vertical joint, over 1.5 c from the "
+      "corner, where c is the closed-form contact length of the face "
+      "joint (Eq. 6.51; the shortest of the mechanisms that give one). "
+      "So the ends of the contact zones sit in cells sized from the scene, "
+      "not from the corner grading alone. 0: no contact-zone sizing "
+      "(also when no mechanism gives a contact length). Units: none.");
     prm.leave_subsection();
   }
 
@@ -46,6 +56,7 @@ namespace FloorBlock::Parameters
     far_size        = prm.get_double("Far size");
     growth_rate     = prm.get_double("Growth rate");
     matching_joints = prm.get_bool("Matching joints");
+    cells_per_contact_length = prm.get_integer("Cells per contact length");
     const std::string refinements = prm.get("Global refinements");
     global_refinements =
       refinements == "auto" ?

@@ -146,6 +146,11 @@ namespace FloorBlock::Parameters
      * (Scene::global_refinements() decides).
      */
     std::optional<unsigned int> global_refinements;
+    /**
+     * Cells across the closed-form estimate of the face joint's contact
+     * length (Scene::contact_zone_sizes()); 0 = no contact-zone sizing.
+     */
+    unsigned int cells_per_contact_length;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -28,8 +28,9 @@ namespace FloorBlock::Pipeline
     Output::FemErrorEstimate estimate;
     // The factor is printed from the constant, so text and value agree.
     estimate.method = fmt::format(
-      "{} times the difference to {}: first-order Richardson with safety "
-      "factor 1.25",
+      "{} times the difference to {}: first-order Richardson with the "
+      "two-grid safety factor 3; contact lengths add their ends' location "
+      "uncertainty (two end rules)",
       error_from_refined_difference,
       coarse.report.model == "rigid blocks" ?
         "one solve with twice the points per joint" :
@@ -54,24 +55,41 @@ namespace FloorBlock::Pipeline
     const auto fine_joints   = final_joints(fine);
     using Figure = double Contact::JointReport::*;
     using Error  = Output::FigureError Output::JointErrors::*;
-    const std::pair<Figure, Error> figures[] = {
-      {&Contact::JointReport::normal_force, &Output::JointErrors::normal_force},
+    struct EstimatedFigure
+    {
+      Figure figure;
+      Error  error;
+      /** The coarse solve's own uncertainty of the figure, added; or null. */
+      Figure own_uncertainty;
+    };
+    const EstimatedFigure figures[] = {
+      {&Contact::JointReport::normal_force,
+       &Output::JointErrors::normal_force,
+       nullptr},
+      // A contact end moves with the active set, not smoothly, so the
+      // refined difference can be small by chance; the ends' location
+      // uncertainty is added (see error_from_refined_difference).
       {&Contact::JointReport::closed_length,
-       &Output::JointErrors::contact_length},
+       &Output::JointErrors::contact_length,
+       &Contact::JointReport::closed_length_uncertainty},
       {&Contact::JointReport::peak_normal_stress,
-       &Output::JointErrors::sigma_max},
+       &Output::JointErrors::sigma_max,
+       nullptr},
       {&Contact::JointReport::averaged_peak_normal_stress,
-       &Output::JointErrors::sigma_max_averaged}};
+       &Output::JointErrors::sigma_max_averaged,
+       nullptr}};
     for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
          ++k)
       {
         Output::JointErrors &errors = estimate.joints[coarse_joints[k].name];
-        for (const auto &[figure, error] : figures)
+        for (const auto &[figure, error, own_uncertainty] : figures)
           {
             const double coarse_value = coarse_joints[k].*figure;
             const double fine_value   = fine_joints[k].*figure;
-            const double estimate = error_from_refined_difference *
-                                    std::abs(coarse_value - fine_value);
+            const double estimate =
+              error_from_refined_difference *
+                std::abs(coarse_value - fine_value) +
+              (own_uncertainty ? coarse_joints[k].*own_uncertainty : 0.);
             errors.*error = {coarse_value, fine_value, estimate,
                              fine_value != 0. ?
                                std::optional<double>(estimate /

@@ -10,6 +10,7 @@
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
+#include <scene/contact_zone_sizing.h>
 #include <scene/floor_contact_problem.h>
 #include <scene/mesh_refinement.h>
 #include <scene/rigid_inputs.h>
@@ -99,10 +100,13 @@ namespace FloorBlock::Pipeline
   {
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
-    const auto               description = Scene::assembly_description(scene);
+    const auto description = Scene::assembly_description(scene);
+    // Contact-zone sizing from the closed forms, then any requests of the
+    // caller (converge --mode remesh); local_size_at() takes the smallest.
+    std::vector<Geometry::LocalSize> sizes = Scene::contact_zone_sizes(scene);
+    sizes.insert(sizes.end(), local_sizes.begin(), local_sizes.end());
     Geometry::MeshStatistics mesh =
-      Geometry::write_gmsh_mesh(description, folder.path_of("mesh.msh"),
-                                local_sizes);
+      Geometry::write_gmsh_mesh(description, folder.path_of("mesh.msh"), sizes);
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
     if (const unsigned int n_refinements = Scene::global_refinements(scene))
       {

@@ -175,6 +175,30 @@ namespace
     EXPECT_NEAR(report.mean_normal_stress,
                 report.normal_force / end,
                 1e-12 * report.normal_force);
+    // The second end rule (a quadratic through one more open node) agrees
+    // on a linear gap: no location uncertainty.
+    EXPECT_NEAR(report.closed_length_uncertainty, 0., 1e-12);
+  }
+
+  // The tool shall state how uncertain an interpolated contact end is.
+  // g(y) = slope (y - end) + curvature (y - end)^2: the linear rule misses
+  // `end` by O(h^2 curvature / slope), the quadratic through the open node
+  // beyond finds it exactly, so the uncertainty is the linear rule's error.
+  TEST(JointReport, EndUncertaintyIsTheLinearRulesErrorOnAQuadraticGap)
+  {
+    const CoulombJoint<2> law       = make_law(normal_stiffness);
+    const double          slope     = 1e-3;
+    const double          curvature = 2e-3; // m of gap per m^2
+    const double          end       = 0.437;
+    const JointReport     report =
+      report_of(uniform_heights(), law, [&](const double height) {
+        const double d = height - end;
+        return std::make_pair(slope * d + curvature * d * d,
+                              JointHistory<2>());
+      });
+    const double linear_error = std::abs(report.closed_length - end);
+    EXPECT_GT(linear_error, 1e-3) << "the test needs a visible miss";
+    EXPECT_NEAR(report.closed_length_uncertainty, linear_error, 1e-12);
   }
 
   TEST(JointReport, ContactEndOnGradedUnorderedNodes)
@@ -278,6 +302,9 @@ namespace
         const JointReport report =
           make_joint_reports(nodes, responses, {"joint"}, 0.05).at(0);
         EXPECT_NEAR(report.closed_length, end, 1e-12) << "end " << end;
+        // t_n^2 from the next two closed nodes is the same line.
+        EXPECT_NEAR(report.closed_length_uncertainty, 0., 1e-9)
+          << "end " << end;
       }
   }
 
