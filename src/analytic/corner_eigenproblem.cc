@@ -1,0 +1,457 @@
+#include <analytic/corner_eigenproblem.h>
+#include <common/input_error.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace FloorBlock::Analytic
+{
+  namespace
+  {
+    using Complex = std::complex<double>;
+    using Row     = std::array<Complex, 4>;
+    constexpr double pi = 3.14159265358979323846;
+
+    /**
+     * Angular rows of one wedge's Williams field, acting on (A, B, C, D):
+     * with F as in CornerMode and the radial powers dropped,
+     *   sigma_tt = lambda (lambda + 1) F,   sigma_rt = -lambda F',
+     *   2G u_r = -(lambda + 1)(A c+ + B s+) + (kappa - lambda)(C c- + D s-),
+     *   2G u_t =  (lambda + 1)(A s+ - B c+) + (kappa + lambda)(C s- - D c-),
+     * c+- = cos((lambda +- 1) theta), s+- = sin(...) (J. R. Barber,
+     * Elasticity, Table 8.1's r^(lambda+1) terms; the unit test checks
+     * them against Hooke's law). The stress rows are divided by lambda
+     * and lambda + 1, the displacement rows by nothing but 2G, so that no
+     * row vanishes with lambda.
+     */
+    struct WilliamsRows
+    {
+      Row normal_stress; ///< F (sigma_tt / (lambda (lambda + 1)))
+      Row shear_stress;  ///< F' (-sigma_rt / lambda)
+      Row radial_displacement;
+      Row angular_displacement;
+    };
+
+    WilliamsRows
+    williams_rows(const Complex        lambda,
+                  const double         theta,
+                  const WedgeMaterial &material)
+    {
+      const Complex p = lambda + 1., m = lambda - 1.;
+      const Complex cp = std::cos(p * theta), sp = std::sin(p * theta);
+      const Complex cm = std::cos(m * theta), sm = std::sin(m * theta);
+      const double  kappa   = material.kolosov();
+      const double  two_g   = 2. * material.shear_modulus;
+      WilliamsRows  rows;
+      rows.normal_stress = {cp, sp, cm, sm};
+      rows.shear_stress  = {-p * sp, p * cp, -m * sm, m * cm};
+      rows.radial_displacement = {-p * cp / two_g, -p * sp / two_g,
+                                  (kappa - lambda) * cm / two_g,
+                                  (kappa - lambda) * sm / two_g};
+      rows.angular_displacement = {p * sp / two_g, -p * cp / two_g,
+                                   (kappa + lambda) * sm / two_g,
+                                   -(kappa + lambda) * cm / two_g};
+      return rows;
+    }
+
+    /** A square complex matrix, row-major. */
+    struct Matrix
+    {
+      unsigned int         n;
+      std::vector<Complex> entries;
+      Complex &
+      operator()(const unsigned int i, const unsigned int j)
+      {
+        return entries[i * n + j];
+      }
+    };
+
+    /** Puts @p row into matrix row @p i at column block @p block. */
+    void
+    put(Matrix &matrix, const unsigned int i, const unsigned int block,
+        const Row &row, const Complex factor = 1.)
+    {
+      for (unsigned int j = 0; j < 4; ++j)
+        matrix(i, 4 * block + j) += factor * row[j];
+    }
+
+    /**
+     * Gaussian elimination with full pivoting. Returns the determinant
+     * and, in @p null_vector, the solution with the last pivot's unknown
+     * set to 1 (the null vector when the matrix is singular).
+     */
+    Complex
+    eliminate(Matrix matrix, std::vector<Complex> *null_vector = nullptr)
+    {
+      const unsigned int        n = matrix.n;
+      std::vector<unsigned int> column(n);
+      for (unsigned int j = 0; j < n; ++j)
+        column[j] = j;
+      Complex determinant = 1.;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          unsigned int pivot_row = k, pivot_column = k;
+          double       largest   = -1.;
+          for (unsigned int i = k; i < n; ++i)
+            for (unsigned int j = k; j < n; ++j)
+              if (std::abs(matrix(i, j)) > largest)
+                {
+                  largest      = std::abs(matrix(i, j));
+                  pivot_row    = i;
+                  pivot_column = j;
+                }
+          if (pivot_row != k)
+            {
+              for (unsigned int j = 0; j < n; ++j)
+                std::swap(matrix(k, j), matrix(pivot_row, j));
+              determinant = -determinant;
+            }
+          if (pivot_column != k)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                std::swap(matrix(i, k), matrix(i, pivot_column));
+              std::swap(column[k], column[pivot_column]);
+              determinant = -determinant;
+            }
+          determinant *= matrix(k, k);
+          if (k + 1 == n || std::abs(matrix(k, k)) == 0.)
+            continue;
+          for (unsigned int i = k + 1; i < n; ++i)
+            {
+              const Complex factor = matrix(i, k) / matrix(k, k);
+              for (unsigned int j = k; j < n; ++j)
+                matrix(i, j) -= factor * matrix(k, j);
+            }
+        }
+      if (null_vector)
+        {
+          std::vector<Complex> permuted(n, 0.);
+          permuted[n - 1] = 1.;
+          for (int k = int(n) - 2; k >= 0; --k)
+            {
+              Complex sum = 0.;
+              for (unsigned int j = k + 1; j < n; ++j)
+                sum += matrix(k, j) * permuted[j];
+              permuted[k] = std::abs(matrix(k, k)) > 0. ? -sum / matrix(k, k) :
+                                                          Complex(0.);
+            }
+          null_vector->assign(n, 0.);
+          for (unsigned int k = 0; k < n; ++k)
+            (*null_vector)[column[k]] = permuted[k];
+          double largest = 0.;
+          for (const Complex &value : *null_vector)
+            largest = std::max(largest, std::abs(value));
+          for (Complex &value : *null_vector)
+            value /= largest;
+        }
+      return determinant;
+    }
+
+    /** The two conditions of a face of wedge @p block at angle theta. */
+    void
+    add_face(Matrix &matrix, const unsigned int first_row,
+             const unsigned int block, const FaceCondition condition,
+             const WilliamsRows &rows)
+    {
+      switch (condition)
+        {
+          case FaceCondition::traction_free:
+            put(matrix, first_row, block, rows.normal_stress);
+            put(matrix, first_row + 1, block, rows.shear_stress);
+            break;
+          case FaceCondition::clamped:
+            put(matrix, first_row, block, rows.radial_displacement);
+            put(matrix, first_row + 1, block, rows.angular_displacement);
+            break;
+          case FaceCondition::rigid_smooth:
+            put(matrix, first_row, block, rows.angular_displacement);
+            put(matrix, first_row + 1, block, rows.shear_stress);
+            break;
+        }
+    }
+
+    Matrix
+    wedge_matrix(const SingleWedge &wedge, const Complex lambda)
+    {
+      Matrix matrix{4, std::vector<Complex>(16, 0.)};
+      add_face(matrix, 0, 0, wedge.first_face,
+               williams_rows(lambda, 0., wedge.material));
+      add_face(matrix, 2, 0, wedge.second_face,
+               williams_rows(lambda, wedge.angle, wedge.material));
+      return matrix;
+    }
+
+    Matrix
+    pair_matrix(const WedgePair &pair, const Complex lambda)
+    {
+      Matrix matrix{8, std::vector<Complex>(64, 0.)};
+      add_face(matrix, 0, 0, FaceCondition::traction_free,
+               williams_rows(lambda, pair.first_angle, pair.first_material));
+      add_face(matrix, 2, 1, FaceCondition::traction_free,
+               williams_rows(lambda, -pair.second_angle,
+                             pair.second_material));
+      const WilliamsRows one = williams_rows(lambda, 0., pair.first_material);
+      const WilliamsRows two =
+        williams_rows(lambda, 0., pair.second_material);
+      // Normal traction and normal displacement are continuous in every
+      // state: the wedges stay in contact.
+      put(matrix, 4, 0, one.normal_stress);
+      put(matrix, 4, 1, two.normal_stress, -1.);
+      put(matrix, 5, 0, one.angular_displacement);
+      put(matrix, 5, 1, two.angular_displacement, -1.);
+      switch (pair.state)
+        {
+          case InterfaceState::stuck:
+            put(matrix, 6, 0, one.shear_stress);
+            put(matrix, 6, 1, two.shear_stress, -1.);
+            put(matrix, 7, 0, one.radial_displacement);
+            put(matrix, 7, 1, two.radial_displacement, -1.);
+            break;
+          case InterfaceState::frictionless:
+            put(matrix, 6, 0, one.shear_stress);
+            put(matrix, 7, 1, two.shear_stress);
+            break;
+          case InterfaceState::slipping:
+            put(matrix, 6, 0, one.shear_stress);
+            put(matrix, 6, 1, two.shear_stress, -1.);
+            // sigma_rt = s mu sigma_tt with sigma_rt = -lambda F' and
+            // sigma_tt = lambda (lambda + 1) F: F' + s mu (lambda + 1) F = 0.
+            put(matrix, 7, 0, one.shear_stress);
+            put(matrix, 7, 0, one.normal_stress,
+                double(pair.slip_sign) * pair.friction_coefficient *
+                  (lambda + 1.));
+            break;
+        }
+      return matrix;
+    }
+
+    /** F and F' of wedge @p block's coefficients at theta. */
+    std::pair<Complex, Complex>
+    airy_angular(const std::vector<Complex> &coefficients,
+                 const unsigned int          block,
+                 const Complex               lambda,
+                 const double                theta,
+                 const WedgeMaterial        &material)
+    {
+      const WilliamsRows rows = williams_rows(lambda, theta, material);
+      Complex            f = 0., derivative = 0.;
+      for (unsigned int j = 0; j < 4; ++j)
+        {
+          f += rows.normal_stress[j] * coefficients[4 * block + j];
+          derivative += rows.shear_stress[j] * coefficients[4 * block + j];
+        }
+      return {f, derivative};
+    }
+
+    /**
+     * Largest |sigma_tt|, |sigma_rt| over a few angles of each wedge,
+     * relative to the largest coefficient: ~0 for a stress-free solution
+     * (a rigid motion).
+     */
+    double
+    stress_size(const std::vector<Complex>                     &coefficients,
+                const Complex                                   lambda,
+                const std::vector<std::pair<double, double>>   &ranges,
+                const std::vector<WedgeMaterial>               &materials)
+    {
+      double largest = 0.;
+      for (unsigned int block = 0; block < ranges.size(); ++block)
+        for (int k = 0; k <= 8; ++k)
+          {
+            const double theta =
+              ranges[block].first +
+              (ranges[block].second - ranges[block].first) * k / 8.;
+            const auto [f, derivative] =
+              airy_angular(coefficients, block, lambda, theta,
+                           materials[block]);
+            largest = std::max({largest,
+                                std::abs(lambda * (lambda + 1.) * f),
+                                std::abs(lambda * derivative)});
+          }
+      return largest;
+    }
+
+    void
+    check_material(const WedgeMaterial &material, const std::string &which)
+    {
+      if (!(material.shear_modulus > 0.) ||
+          !std::isfinite(material.shear_modulus))
+        throw InputError(which + " shear modulus",
+                         std::to_string(material.shear_modulus),
+                         "a finite value > 0 Pa");
+      if (!(material.poissons_ratio > -1. && material.poissons_ratio < 0.5))
+        throw InputError(which + " Poisson's ratio",
+                         std::to_string(material.poissons_ratio),
+                         "-1 < nu < 0.5");
+    }
+
+    void
+    check_angle(const double angle, const std::string &which,
+                const double largest)
+    {
+      if (!(angle > 0. && angle <= largest))
+        throw InputError(which, std::to_string(angle),
+                         "0 < angle <= " + std::to_string(largest) + " rad");
+    }
+
+    /**
+     * |det M| over the product of M's row norms (Hadamard's bound): 1 for
+     * orthogonal rows, ~1e-16 at a root. The secant iteration of
+     * complex_roots() also stops where det M is merely small (rows that
+     * shrink together); this ratio tells those apart.
+     */
+    double
+    hadamard_ratio(Matrix matrix)
+    {
+      double bound = 1.;
+      for (unsigned int i = 0; i < matrix.n; ++i)
+        {
+          double norm = 0.;
+          for (unsigned int j = 0; j < matrix.n; ++j)
+            norm += std::norm(matrix(i, j));
+          bound *= std::sqrt(norm);
+        }
+      return bound > 0. ? std::abs(eliminate(matrix)) / bound : 0.;
+    }
+
+    /** Largest hadamard_ratio() accepted as a root. */
+    constexpr double root_hadamard_ratio = 1e-10;
+
+    /** Stress-free solutions are rigid motions, not modes. */
+    constexpr double rigid_motion_stress = 1e-8;
+
+    /**
+     * The modes of a problem given by its matrix: roots of the
+     * determinant, each with its null vector, rigid motions left out.
+     */
+    template <typename MatrixOf>
+    std::vector<CornerMode>
+    modes_of(const MatrixOf                                 &matrix_of,
+             const RootSearch                               &search,
+             const std::vector<std::pair<double, double>>   &ranges,
+             const std::vector<WedgeMaterial>               &materials)
+    {
+      std::vector<CornerMode> modes;
+      for (const Complex lambda : complex_roots(
+             [&](const Complex z) { return eliminate(matrix_of(z)); },
+             search))
+        {
+          if (hadamard_ratio(matrix_of(lambda)) > root_hadamard_ratio)
+            continue;
+          CornerMode mode;
+          mode.exponent = lambda;
+          eliminate(matrix_of(lambda), &mode.coefficients);
+          if (stress_size(mode.coefficients, lambda, ranges, materials) <
+              rigid_motion_stress)
+            continue;
+          const auto [f, derivative] =
+            airy_angular(mode.coefficients, 0, lambda, 0., materials[0]);
+          const Complex normal = lambda * (lambda + 1.) * f;
+          mode.traction_ratio =
+            std::abs(normal) > 1e-12 ? -lambda * derivative / normal :
+                                       Complex(std::nan(""), std::nan(""));
+          modes.push_back(mode);
+        }
+      return modes;
+    }
+
+    /** Symmetry of a single wedge's mode about its bisector. */
+    ModeSymmetry
+    symmetry_of(const CornerMode &mode, const SingleWedge &wedge)
+    {
+      const double middle = wedge.angle / 2.;
+      double       even = 0., odd = 0., size = 0.;
+      for (const double t : {0.13, 0.37, 0.71})
+        {
+          const Complex plus =
+            airy_angular(mode.coefficients, 0, mode.exponent,
+                         middle + t * middle, wedge.material)
+              .first;
+          const Complex minus =
+            airy_angular(mode.coefficients, 0, mode.exponent,
+                         middle - t * middle, wedge.material)
+              .first;
+          even = std::max(even, std::abs(plus - minus));
+          odd  = std::max(odd, std::abs(plus + minus));
+          size = std::max({size, std::abs(plus), std::abs(minus)});
+        }
+      if (even <= 1e-8 * size)
+        return ModeSymmetry::symmetric;
+      if (odd <= 1e-8 * size)
+        return ModeSymmetry::antisymmetric;
+      return ModeSymmetry::mixed;
+    }
+  } // namespace
+
+  DundursParameters
+  dundurs_parameters(const WedgeMaterial &first, const WedgeMaterial &second)
+  {
+    check_material(first, "first wedge");
+    check_material(second, "second wedge");
+    const double gamma = second.shear_modulus / first.shear_modulus;
+    const double k1 = first.kolosov(), k2 = second.kolosov();
+    const double denominator = gamma * (k1 + 1.) + (k2 + 1.);
+    return {(gamma * (k1 + 1.) - (k2 + 1.)) / denominator,
+            (gamma * (k1 - 1.) - (k2 - 1.)) / denominator};
+  }
+
+  std::string
+  to_string(const ModeSymmetry symmetry)
+  {
+    switch (symmetry)
+      {
+        case ModeSymmetry::symmetric:
+          return "symmetric";
+        case ModeSymmetry::antisymmetric:
+          return "antisymmetric";
+        case ModeSymmetry::mixed:
+          break;
+      }
+    return "mixed";
+  }
+
+  std::vector<CornerMode>
+  wedge_modes(const SingleWedge &wedge, const RootSearch &search)
+  {
+    check_angle(wedge.angle, "wedge angle", 2. * pi);
+    check_material(wedge.material, "wedge");
+    std::vector<CornerMode> modes = modes_of(
+      [&](const Complex lambda) { return wedge_matrix(wedge, lambda); },
+      search, {{0., wedge.angle}}, {wedge.material});
+    const bool symmetric_problem = wedge.first_face == wedge.second_face;
+    for (CornerMode &mode : modes)
+      mode.symmetry = symmetric_problem ? symmetry_of(mode, wedge) :
+                                          ModeSymmetry::mixed;
+    return modes;
+  }
+
+  std::vector<CornerMode>
+  corner_modes(const WedgePair &pair, const RootSearch &search)
+  {
+    check_angle(pair.first_angle, "first wedge angle", 2. * pi);
+    check_angle(pair.second_angle, "second wedge angle", 2. * pi);
+    if (pair.first_angle + pair.second_angle > 2. * pi)
+      throw InputError("wedge angles",
+                       std::to_string(pair.first_angle) + " + " +
+                         std::to_string(pair.second_angle),
+                       "a sum of at most 2 pi rad");
+    check_material(pair.first_material, "first wedge");
+    check_material(pair.second_material, "second wedge");
+    if (!(pair.friction_coefficient >= 0.) ||
+        !std::isfinite(pair.friction_coefficient))
+      throw InputError("friction coefficient",
+                       std::to_string(pair.friction_coefficient),
+                       "a finite value >= 0");
+    if (pair.slip_sign != 1 && pair.slip_sign != -1)
+      throw InputError("slip sign", std::to_string(pair.slip_sign),
+                       "+1 or -1");
+    return modes_of(
+      [&](const Complex lambda) { return pair_matrix(pair, lambda); },
+      search,
+      {{0., pair.first_angle}, {-pair.second_angle, 0.}},
+      {pair.first_material, pair.second_material});
+  }
+} // namespace FloorBlock::Analytic
