@@ -90,7 +90,7 @@ namespace
           App::solve_command}},
         {"verify",
          {"Run a verification case against its closed form "
-          "(hertz, patch, incline, two-blocks)",
+          "(hertz, patch, punch, incline, two-blocks)",
           App::verify_command}},
         {"run", {"The main job: mesh, solve, compare", App::run_command}},
         {"converge",
@@ -107,7 +107,7 @@ namespace
     CLI::App *verify = cli.get_subcommand("verify");
     verify->remove_option(verify->get_option("scene"));
     verify->add_option("case", options.verification_case,
-                       "Verification case: hertz, patch, incline, two-blocks")
+                       "Verification case: hertz, patch, punch, incline, two-blocks")
       ->required();
     cli.get_subcommand("mesh")->add_flag(
       "--ids", options.print_ids, "Print the material/boundary id scheme");

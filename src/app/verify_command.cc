@@ -15,7 +15,7 @@ namespace FloorBlock::App
     const auto  found = cases.find(options.verification_case);
     if (found == cases.end())
       throw InputError("verify: unknown case '" + options.verification_case +
-                       "'; available: hertz, patch, incline, two-blocks");
+                       "'; available: hertz, patch, punch, incline, two-blocks");
     std::vector<std::string> overrides = found->second.base_overrides;
     overrides.insert(overrides.end(), options.overrides.begin(),
                      options.overrides.end());

@@ -195,6 +195,8 @@ namespace FloorBlock::Parameters
     double       incline_margin;       ///< |tan(alpha)/mu - 1| either side
     double       two_blocks_lateral_pressure; ///< Pa
     unsigned int two_blocks_cells_per_metre;  ///< structured mesh density
+    double       punch_pressure;              ///< on the block top (Pa)
+    unsigned int punch_corner_refinements;    ///< halvings at the corner
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

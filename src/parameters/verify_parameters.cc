@@ -54,6 +54,17 @@ namespace FloorBlock::Parameters
                       "Cells per metre of the structured block meshes. "
                       "Units: 1/m.");
     prm.leave_subsection();
+    prm.enter_subsection("Punch");
+    prm.declare_entry("Pressure", "2e6", Double(1, 1e10),
+                      "Uniform pressure on the top of the square-ended "
+                      "block pressed onto an elastically similar base "
+                      "(uses Material/Bulk and Shear modulus; the "
+                      "interface is always exact contact). Units: Pa.");
+    prm.declare_entry("Corner refinements", "12", Integer(4, 16),
+                      "Halvings of the 0.25 m cells around the block "
+                      "corner: the smallest cells are 0.25 m / 2^n. "
+                      "Units: none.");
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -77,6 +88,10 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Two blocks");
     two_blocks_lateral_pressure = prm.get_double("Lateral pressure");
     two_blocks_cells_per_metre  = prm.get_integer("Cells per metre");
+    prm.leave_subsection();
+    prm.enter_subsection("Punch");
+    punch_pressure           = prm.get_double("Pressure");
+    punch_corner_refinements = prm.get_integer("Corner refinements");
     prm.leave_subsection();
     prm.leave_subsection();
   }

@@ -5,6 +5,7 @@
 #include <verification/hertz_verification.h>
 #include <verification/incline_verification.h>
 #include <verification/patch_verification.h>
+#include <verification/punch_verification.h>
 #include <verification/two_blocks_verification.h>
 
 #include <fmt/format.h>
@@ -171,6 +172,50 @@ namespace FloorBlock::Pipeline
                {"relative_imbalance", result.relative_imbalance}},
               {}};
     }
+
+    /**
+     * The square-ended block on a similar base, stuck and frictionless:
+     * the corner exponent fitted to the interface pressure against the
+     * eigen-solver's. The error is absolute (exponents are O(1)).
+     */
+    Output::VerificationResult
+    verify_punch(const Parameters::ScenarioParameters &scene)
+    {
+      Verification::PunchSettings settings;
+      settings.pressure           = scene.verify.punch_pressure;
+      settings.corner_refinements = scene.verify.punch_corner_refinements;
+      settings.youngs_modulus     = scene.material.youngs_modulus();
+      settings.poissons_ratio     = scene.material.poissons_ratio();
+      Output::VerificationResult quantities;
+      for (const auto &[name, state] :
+           {std::pair{"stuck", Analytic::InterfaceState::stuck},
+            std::pair{"frictionless", Analytic::InterfaceState::frictionless}})
+        {
+          const Verification::PunchCase result =
+            Verification::run_punch_case(settings, state);
+          const std::string prefix(name);
+          quantities.checks[prefix + "_corner_exponent"] = scaled_quantity(
+            result.fitted_exponent, result.theory_exponent, 1.,
+            Verification::punch_exponent_tolerance);
+          quantities.figures[prefix + "_fit_from_m"] = result.fit_from;
+          quantities.figures[prefix + "_fit_to_m"]   = result.fit_to;
+          quantities.figures[prefix + "_fit_rms_relative_residual"] =
+            result.fit_residual;
+          quantities.figures[prefix + "_one_term_fit_exponent"] =
+            result.one_term_exponent;
+          quantities.figures[prefix + "_second_theory_exponent"] =
+            result.second_theory_exponent;
+          quantities.figures[prefix + "_second_over_first_term"] =
+            result.second_over_first;
+          quantities.figures[prefix + "_one_term_within_10_percent_m"] =
+            result.one_term_validity;
+          quantities.figures[prefix + "_smallest_cell_m"] =
+            result.smallest_cell;
+          quantities.counts[prefix + "_fit_points"] = result.n_fit_points;
+          quantities.counts[prefix + "_n_dofs"]     = result.n_dofs;
+        }
+      return quantities;
+    }
   } // namespace
 
   /**
@@ -184,6 +229,7 @@ namespace FloorBlock::Pipeline
     static const std::map<std::string, VerificationCase> cases = {
       {"hertz", {verification_base, verify_hertz}},
       {"patch", {verification_base, verify_patch}},
+      {"punch", {verification_base, verify_punch}},
       {"incline", {{}, verify_incline}},
       {"two-blocks", {{}, verify_two_blocks}}};
     return cases;

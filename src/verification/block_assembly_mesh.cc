@@ -54,7 +54,9 @@ namespace FloorBlock::Verification
               else if (std::abs(centre[1] - block.y_min) < tolerance)
                 face->set_boundary_id(block.bottom);
               else if (std::abs(centre[1] - block.y_max) < tolerance)
-                face->set_boundary_id(block.top);
+                face->set_boundary_id(centre[0] > block.split_x ?
+                                        block.top_right :
+                                        block.top);
             }
         }
   }

@@ -17,6 +17,9 @@ namespace FloorBlock::Verification
     /** Faces of the right side above split_y get right_upper instead. */
     double                     split_y     = 1e300;
     dealii::types::boundary_id right_upper = 0;
+    /** Faces of the top right of split_x get top_right instead. */
+    double                     split_x   = 1e300;
+    dealii::types::boundary_id top_right = 0;
   };
 
   /**

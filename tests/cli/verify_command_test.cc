@@ -84,6 +84,29 @@ TEST(VerifyCommand, TwoBlocksJointForceEqualsLateralLoad)
     json["quantities"]["joint_normal_force"]["closed_form"].get<double>(), 2e5);
 }
 
+// Issue 15: the tool shall fit the corner exponent of a square block
+// pressed on a similar base and match the eigen-solver within 0.03, stuck
+// (Williams' 270 deg corner, 0.5445) and frictionless (0.7740), stating the
+// fit range.
+TEST(VerifyCommand, PunchCornerExponentsMatchTheEigenSolver)
+{
+  const auto json = verify("punch");
+  expect_passed(json, "punch",
+                {"stuck_corner_exponent", "frictionless_corner_exponent"});
+  const auto &q = json["quantities"];
+  EXPECT_NEAR(q["stuck_corner_exponent"]["closed_form"].get<double>(),
+              0.544484, 1e-6);
+  EXPECT_NEAR(q["frictionless_corner_exponent"]["closed_form"].get<double>(),
+              0.774013, 1e-6);
+  for (const char *state : {"stuck", "frictionless"})
+    {
+      const std::string prefix(state);
+      EXPECT_LT(q[prefix + "_fit_from_m"].get<double>(),
+                q[prefix + "_fit_to_m"].get<double>());
+      EXPECT_GE(q[prefix + "_fit_points"].get<int>(), 10);
+    }
+}
+
 // The tool shall refuse an unknown case and name the available ones.
 TEST(VerifyCommand, UnknownCaseIsRefused)
 {
