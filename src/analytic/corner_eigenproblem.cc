@@ -320,6 +320,88 @@ namespace FloorBlock::Analytic
     /** Largest hadamard_ratio() accepted as a root. */
     constexpr double root_hadamard_ratio = 1e-10;
 
+    /**
+     * The null vector at lambda = 1 without the D columns, or empty. There
+     * sin((lambda - 1) theta) vanishes, its column with it in the stress
+     * rows, and the determinant has a spurious zero that can hide a genuine
+     * one from the scan (no sign change at a double zero): a uniform
+     * stress parallel to a free face, e.g. the crack's T-stress, or the
+     * bounded field where two flush 90 deg corners meet. Such a mode needs
+     * no D coefficient, so the rectangular matrix without the D columns
+     * must be rank-deficient (full-pivot elimination, pivots below 1e-10
+     * of the largest entry count as zero).
+     */
+    std::vector<Complex>
+    unit_exponent_null_vector(Matrix full)
+    {
+      const unsigned int        n_rows = full.n;
+      std::vector<unsigned int> kept_columns;
+      for (unsigned int j = 0; j < full.n; ++j)
+        if (j % 4 != 3)
+          kept_columns.push_back(j);
+      const unsigned int n_columns = kept_columns.size();
+      std::vector<std::vector<Complex>> a(n_rows,
+                                          std::vector<Complex>(n_columns));
+      double largest_entry = 0.;
+      for (unsigned int i = 0; i < n_rows; ++i)
+        for (unsigned int j = 0; j < n_columns; ++j)
+          {
+            a[i][j]       = full(i, kept_columns[j]);
+            largest_entry = std::max(largest_entry, std::abs(a[i][j]));
+          }
+      std::vector<unsigned int> column(n_columns);
+      for (unsigned int j = 0; j < n_columns; ++j)
+        column[j] = j;
+      unsigned int rank = 0;
+      for (; rank < n_columns; ++rank)
+        {
+          unsigned int pivot_row = rank, pivot_column = rank;
+          double       largest   = -1.;
+          for (unsigned int i = rank; i < n_rows; ++i)
+            for (unsigned int j = rank; j < n_columns; ++j)
+              if (std::abs(a[i][j]) > largest)
+                {
+                  largest      = std::abs(a[i][j]);
+                  pivot_row    = i;
+                  pivot_column = j;
+                }
+          if (largest <= 1e-10 * largest_entry)
+            break;
+          std::swap(a[rank], a[pivot_row]);
+          for (unsigned int i = 0; i < n_rows; ++i)
+            std::swap(a[i][rank], a[i][pivot_column]);
+          std::swap(column[rank], column[pivot_column]);
+          for (unsigned int i = rank + 1; i < n_rows; ++i)
+            {
+              const Complex factor = a[i][rank] / a[rank][rank];
+              for (unsigned int j = rank; j < n_columns; ++j)
+                a[i][j] -= factor * a[rank][j];
+            }
+        }
+      if (rank == n_columns)
+        return {};
+      // The first free unknown 1, the others 0; back substitution.
+      std::vector<Complex> permuted(n_columns, 0.);
+      permuted[rank] = 1.;
+      for (int k = int(rank) - 1; k >= 0; --k)
+        {
+          Complex sum = 0.;
+          for (unsigned int j = k + 1; j < n_columns; ++j)
+            sum += a[k][j] * permuted[j];
+          permuted[k] = -sum / a[k][k];
+        }
+      std::vector<Complex> coefficients(full.n, 0.);
+      double               size = 0.;
+      for (unsigned int k = 0; k < n_columns; ++k)
+        {
+          coefficients[kept_columns[column[k]]] = permuted[k];
+          size = std::max(size, std::abs(permuted[k]));
+        }
+      for (Complex &value : coefficients)
+        value /= size;
+      return coefficients;
+    }
+
     /** Stress-free solutions are rigid motions, not modes. */
     constexpr double rigid_motion_stress = 1e-8;
 
@@ -354,6 +436,34 @@ namespace FloorBlock::Analytic
             std::abs(normal) > 1e-12 ? -lambda * derivative / normal :
                                        Complex(std::nan(""), std::nan(""));
           modes.push_back(mode);
+        }
+      const bool has_unit_mode =
+        std::any_of(modes.begin(), modes.end(), [](const CornerMode &mode) {
+          return std::abs(mode.exponent - 1.) < 1e-6;
+        });
+      if (!has_unit_mode && search.smallest_real_part < 1. &&
+          search.largest_real_part >= 1.)
+        {
+          CornerMode mode;
+          mode.exponent     = 1.;
+          mode.coefficients = unit_exponent_null_vector(matrix_of(1.));
+          if (!mode.coefficients.empty() &&
+              stress_size(mode.coefficients, 1., ranges, materials) >=
+                rigid_motion_stress)
+            {
+              const auto [f, derivative] =
+                airy_angular(mode.coefficients, 0, 1., 0., materials[0]);
+              const Complex normal = 2. * f;
+              mode.traction_ratio =
+                std::abs(normal) > 1e-12 ?
+                  -derivative / normal :
+                  Complex(std::nan(""), std::nan(""));
+              modes.push_back(mode);
+              std::sort(modes.begin(), modes.end(),
+                        [](const CornerMode &a, const CornerMode &b) {
+                          return a.exponent.real() < b.exponent.real();
+                        });
+            }
         }
       return modes;
     }

@@ -81,6 +81,38 @@ TEST(WedgeModes, CrackTipHasTheSquareRootSingularity)
   EXPECT_NEAR(std::abs(exponent(wedge_modes(crack), 0) - 0.5), 0., 1e-10);
 }
 
+// The crack's second term is the T-stress, a uniform stress along the crack
+// (lambda = 1, stress ~ r^0; Williams 1957), where the Airy basis
+// degenerates: found by the solver's separate check at lambda = 1.
+TEST(WedgeModes, CrackHasTheTStressTerm)
+{
+  SingleWedge crack;
+  crack.angle      = 2. * pi;
+  const auto modes = wedge_modes(crack);
+  EXPECT_NEAR(std::abs(exponent(modes, 1) - 1.), 0., 1e-12);
+  EXPECT_EQ(modes.at(1).symmetry, ModeSymmetry::symmetric);
+}
+
+// Two flush 90 deg corners pressed together (the face joint of the chapter's
+// scene: the block's and the face block's top corners meet at floor level)
+// stuck are one half-plane with a straight free edge: no singular mode, the
+// lowest is the bounded lambda = 1 (a uniform stress across the joint,
+// shear-free on it); frictionless likewise.
+TEST(CornerModes, FlushSquareCornersAreNotSingular)
+{
+  WedgePair flush;
+  flush.first_angle  = pi / 2.;
+  flush.second_angle = pi / 2.;
+  for (const auto state :
+       {InterfaceState::stuck, InterfaceState::frictionless})
+    {
+      flush.state      = state;
+      const auto modes = corner_modes(flush);
+      EXPECT_NEAR(std::abs(exponent(modes, 0) - 1.), 0., 1e-12);
+      EXPECT_NEAR(std::abs(modes.at(0).traction_ratio), 0., 1e-9);
+    }
+}
+
 // The edge of a rigid flat punch on an elastic half-plane:
 // - frictionless: p ~ r^(-1/2), lambda = 1/2;
 // - bonded (no slip): lambda = 1/2 + i epsilon, epsilon = ln(3 - 4 nu) /
