@@ -31,6 +31,8 @@ namespace FloorBlock::App
     /** converge: wall time of the whole study (s); NaN = not given. */
     double budget_seconds = std::numeric_limits<double>::quiet_NaN();
     std::size_t max_dofs  = 400000; ///< converge: largest level (DoFs)
+    /** converge: FE degrees, one set of ladders each; empty = the scene's. */
+    std::vector<unsigned int> fe_degrees;
 
   };
 

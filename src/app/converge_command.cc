@@ -71,6 +71,17 @@ namespace FloorBlock::App
         throw InputError("--budget-seconds",
                          fmt::format("{}", options.budget_seconds),
                          "a wall time > 0 s");
+      for (std::size_t k = 0; k < options.fe_degrees.size(); ++k)
+        {
+          const unsigned int degree = options.fe_degrees[k];
+          if (degree < 1 || degree > 2)
+            throw InputError("--degrees", std::to_string(degree),
+                             "FE degrees 1 and 2");
+          if (std::count(options.fe_degrees.begin(),
+                         options.fe_degrees.begin() + k, degree) > 0)
+            throw InputError("--degrees", std::to_string(degree),
+                             "each degree once");
+        }
       if (options.max_dofs < 1000)
         throw InputError("--max-dofs", std::to_string(options.max_dofs),
                          "at least 1000");
@@ -117,28 +128,38 @@ namespace FloorBlock::App
       refinement.bulk_fraction          = options.bulk_fraction;
       refinement.traction_jump_fraction = options.jump_fraction;
       bool all_converged = true;
-      for (const Pipeline::RefinementMode mode :
-           Pipeline::refinement_modes(options.refinement_mode))
+      const std::vector<unsigned int> degrees =
+        options.fe_degrees.empty() ?
+          std::vector<unsigned int>{scene.solver.fe_degree} :
+          options.fe_degrees;
+      for (const unsigned int degree : degrees)
         {
-          ladders.push_back({Pipeline::mode_name(mode), {}, {}, {}});
-          // One budget for the whole command: each ladder gets what the
-          // ladders before it left.
-          Convergence::LadderBudget budget;
-          budget.seconds  = budget_seconds(options) - command_timer.wall_time();
-          budget.max_dofs = options.max_dofs;
-          const auto run = Pipeline::run_ladder(
-            scene, mode, n_levels(options), refinement,
-            options.coarsen_fraction, folder,
-            [&](const std::vector<Convergence::LevelRecord> &so_far) {
-              ladders.back().levels = so_far;
-              Convergence::estimate_ladder_errors(ladders.back(), quantities);
-              write_tables(folder, ladders, quantities);
-            },
-            budget);
-          ladders.back().stopped_because = run.stopped_because;
-          for (const auto &record : run.levels)
-            all_converged = all_converged && record.converged();
-          std::cout << Output::ladder_text(ladders.back(), quantities);
+        for (const Pipeline::RefinementMode mode :
+             Pipeline::refinement_modes(options.refinement_mode))
+          {
+            Parameters::ScenarioParameters degree_scene = scene;
+            degree_scene.solver.fe_degree                = degree;
+            ladders.push_back(
+              {Pipeline::ladder_name(mode, degree), {}, {}, {}});
+            // One budget for the whole command: each ladder gets what the
+            // ladders before it left.
+            Convergence::LadderBudget budget;
+            budget.seconds  = budget_seconds(options) - command_timer.wall_time();
+            budget.max_dofs = options.max_dofs;
+            const auto run = Pipeline::run_ladder(
+              degree_scene, mode, n_levels(options), refinement,
+              options.coarsen_fraction, folder,
+              [&](const std::vector<Convergence::LevelRecord> &so_far) {
+                ladders.back().levels = so_far;
+                Convergence::estimate_ladder_errors(ladders.back(), quantities);
+                write_tables(folder, ladders, quantities);
+              },
+              budget);
+            ladders.back().stopped_because = run.stopped_because;
+            for (const auto &record : run.levels)
+              all_converged = all_converged && record.converged();
+            std::cout << Output::ladder_text(ladders.back(), quantities);
+          }
         }
       return all_converged;
     }
@@ -171,6 +192,11 @@ namespace FloorBlock::App
                 << " of the DoFs and less time at "
                 << options.target_error * 100 << " % error): "
                 << verdict.status() << ". " << verdict.text << std::endl;
+      const std::string degrees =
+        Pipeline::degree_comparison_text(comparisons);
+      if (!degrees.empty())
+        std::cout << "FE degrees at " << options.target_error * 100
+                  << " % error: " << degrees << std::endl;
       return verdict;
     }
   } // namespace

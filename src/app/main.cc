@@ -152,6 +152,12 @@ namespace
     converge->add_option("--max-dofs", options.max_dofs,
                          "Largest level a ladder may start (forecast DoFs, "
                          "default 400000)");
+    converge->add_option("--degrees", options.fe_degrees,
+                         "FE degrees to run the ladders with, e.g. 1,2: one "
+                         "set of ladders per degree (named uniform, "
+                         "uniform_q2, ...) and the degrees compared at equal "
+                         "error (default: Solver/FE degree)")
+      ->delimiter(',');
     converge->add_option("--target-error", options.target_error,
                          "Relative error at which uniform and adaptive costs "
                          "are compared (default 0.01)");

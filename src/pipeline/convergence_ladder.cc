@@ -108,7 +108,7 @@ namespace FloorBlock::Pipeline
     {
       dealii::Timer timer;
       LevelRecord   record;
-      record.mode          = mode_name(mode);
+      record.mode          = ladder_name(mode, scene.solver.fe_degree);
       record.level         = level;
       record.corner_size   = scene.mesh.corner_size;
       record.far_size      = scene.mesh.far_size;
@@ -175,6 +175,13 @@ namespace FloorBlock::Pipeline
                                               " (" + record.status_text + ")");
     }
   } // namespace
+
+  std::string
+  ladder_name(const RefinementMode mode, const unsigned int fe_degree)
+  {
+    return fe_degree == 1 ? mode_name(mode) :
+                            mode_name(mode) + "_q" + std::to_string(fe_degree);
+  }
 
   std::string
   mode_name(const RefinementMode mode)

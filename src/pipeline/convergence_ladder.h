@@ -44,6 +44,14 @@ namespace FloorBlock::Pipeline
   mode_name(const RefinementMode mode);
 
   /**
+   * @brief The name of a ladder in convergence.csv/json, its level folders
+   * and the plot: mode_name(), with "_q2" appended when the scene's
+   * Solver/FE degree is 2 (converge --degrees runs one ladder per degree).
+   */
+  std::string
+  ladder_name(const RefinementMode mode, const unsigned int fe_degree);
+
+  /**
    * @brief The scene of uniform level @p level: the same Gmsh mesh with
    * @p level more global refinements (Scene::global_refinements()), so
    * every cell is halved @p level times more.

@@ -89,4 +89,32 @@ namespace FloorBlock::Pipeline
               target_dofs_ratio, target_cost_ratio};
     return {true, met, text, target_dofs_ratio, target_cost_ratio};
   }
+  std::string
+  degree_comparison_text(
+    const std::vector<Convergence::EqualErrorComparison> &comparisons)
+  {
+    std::string text;
+    for (const auto &comparison : comparisons)
+      {
+        if (comparison.adaptive_mode != "uniform_q2")
+          continue;
+        const auto level = [](const std::optional<unsigned int> &value) {
+          return value ? "level " + std::to_string(*value) :
+                         std::string("never");
+        };
+        text += fmt::format("\n  {}: degree 1 {}, degree 2 {}",
+                            comparison.quantity,
+                            level(comparison.uniform_level),
+                            level(comparison.adaptive_level));
+        if (comparison.dofs_ratio && comparison.cost_ratio)
+          text += fmt::format(
+            " (degree 2: DoFs x{:.2f}, time x{:.2f}{}; faster: degree {})",
+            *comparison.dofs_ratio, *comparison.cost_ratio,
+            comparison.ratios_are_upper_bounds ? ", upper bounds" : "",
+            *comparison.cost_ratio < 1. ? 2 : 1);
+        else
+          text += " (neither reaches it: no comparison)";
+      }
+    return text;
+  }
 } // namespace FloorBlock::Pipeline

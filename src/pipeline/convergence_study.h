@@ -40,4 +40,13 @@ namespace FloorBlock::Pipeline
   target_verdict(
     const std::vector<Convergence::EqualErrorComparison> &comparisons,
     const std::string                                    &adaptive_mode);
+  /**
+   * @brief One line per quantity comparing the uniform ladders of FE
+   * degree 2 ("uniform_q2") and 1 ("uniform") at equal error: the level
+   * each needs, DoFs and time ratio, and which degree gets there faster;
+   * "" without a degree-2 ladder.
+   */
+  std::string
+  degree_comparison_text(
+    const std::vector<Convergence::EqualErrorComparison> &comparisons);
 } // namespace FloorBlock::Pipeline

@@ -247,3 +247,40 @@ TEST(ConvergeCommand, RefusesOneLevel)
   EXPECT_NE(result.output.find("--levels"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(folder));
 }
+
+// Issue 14: the tool shall run the ladders with both FE degrees when asked,
+// keep them apart (uniform, uniform_q2: rows, level folders) and compare the
+// degrees at equal error, naming the faster one.
+TEST(ConvergeCommand, BothDegreesSideBySide)
+{
+  const std::string folder = fresh_output_folder("converge_degrees");
+  const auto        result = run_floorblock(
+    "converge tests/scenarios/three_blocks.prm --levels 2 --mode uniform "
+    "--degrees 1,2 --output " + shell_quoted(folder));
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  const CsvTable table = read_csv(folder + "/convergence.csv");
+  ASSERT_EQ(table.rows.size(), 4u);
+  EXPECT_EQ(table.rows[0].at("mode"), "uniform");
+  EXPECT_EQ(table.rows[2].at("mode"), "uniform_q2");
+  // Same cells, about 3.8 times the DoFs at degree 2 (Q2 has 9 nodes a cell).
+  EXPECT_EQ(number_in(table.rows[2], "n_cells"),
+            number_in(table.rows[0], "n_cells"));
+  EXPECT_GT(number_in(table.rows[2], "n_dofs"),
+            3. * number_in(table.rows[0], "n_dofs"));
+  EXPECT_TRUE(std::filesystem::exists(folder + "/uniform_q2/level_1"));
+  EXPECT_NE(result.output.find("FE degrees at 1 % error"), std::string::npos)
+    << result.output;
+  EXPECT_NE(result.output.find("faster: degree"), std::string::npos)
+    << result.output;
+}
+
+TEST(ConvergeCommand, RefusesAnUnknownDegree)
+{
+  const std::string folder = fresh_output_folder("converge_degree_3");
+  const auto        result = run_floorblock(
+    "converge tests/scenarios/three_blocks.prm --degrees 1,3 --output " +
+    shell_quoted(folder));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("--degrees"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder));
+}
