@@ -1,8 +1,9 @@
+#include <analytic/complex_matrix.h>
 #include <analytic/corner_eigenproblem.h>
+#include <analytic/williams_field.h>
 #include <common/input_error.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,147 +13,20 @@ namespace FloorBlock::Analytic
   namespace
   {
     using Complex = std::complex<double>;
-    using Row     = std::array<Complex, 4>;
     constexpr double pi = 3.14159265358979323846;
-
-    /**
-     * Angular rows of one wedge's Williams field, acting on (A, B, C, D):
-     * with F as in CornerMode and the radial powers dropped,
-     *   sigma_tt = lambda (lambda + 1) F,   sigma_rt = -lambda F',
-     *   2G u_r = -(lambda + 1)(A c+ + B s+) + (kappa - lambda)(C c- + D s-),
-     *   2G u_t =  (lambda + 1)(A s+ - B c+) + (kappa + lambda)(C s- - D c-),
-     * c+- = cos((lambda +- 1) theta), s+- = sin(...) (J. R. Barber,
-     * Elasticity, Table 8.1's r^(lambda+1) terms; the unit test checks
-     * them against Hooke's law). The stress rows are divided by lambda
-     * and lambda + 1, the displacement rows by nothing but 2G, so that no
-     * row vanishes with lambda.
-     */
-    struct WilliamsRows
-    {
-      Row normal_stress; ///< F (sigma_tt / (lambda (lambda + 1)))
-      Row shear_stress;  ///< F' (-sigma_rt / lambda)
-      Row radial_displacement;
-      Row angular_displacement;
-    };
-
-    WilliamsRows
-    williams_rows(const Complex        lambda,
-                  const double         theta,
-                  const WedgeMaterial &material)
-    {
-      const Complex p = lambda + 1., m = lambda - 1.;
-      const Complex cp = std::cos(p * theta), sp = std::sin(p * theta);
-      const Complex cm = std::cos(m * theta), sm = std::sin(m * theta);
-      const double  kappa   = material.kolosov();
-      const double  two_g   = 2. * material.shear_modulus;
-      WilliamsRows  rows;
-      rows.normal_stress = {cp, sp, cm, sm};
-      rows.shear_stress  = {-p * sp, p * cp, -m * sm, m * cm};
-      rows.radial_displacement = {-p * cp / two_g, -p * sp / two_g,
-                                  (kappa - lambda) * cm / two_g,
-                                  (kappa - lambda) * sm / two_g};
-      rows.angular_displacement = {p * sp / two_g, -p * cp / two_g,
-                                   (kappa + lambda) * sm / two_g,
-                                   -(kappa + lambda) * cm / two_g};
-      return rows;
-    }
-
-    /** A square complex matrix, row-major. */
-    struct Matrix
-    {
-      unsigned int         n;
-      std::vector<Complex> entries;
-      Complex &
-      operator()(const unsigned int i, const unsigned int j)
-      {
-        return entries[i * n + j];
-      }
-    };
 
     /** Puts @p row into matrix row @p i at column block @p block. */
     void
-    put(Matrix &matrix, const unsigned int i, const unsigned int block,
-        const Row &row, const Complex factor = 1.)
+    put(ComplexMatrix &matrix, const unsigned int i, const unsigned int block,
+        const WilliamsRow &row, const Complex factor = 1.)
     {
       for (unsigned int j = 0; j < 4; ++j)
         matrix(i, 4 * block + j) += factor * row[j];
     }
 
-    /**
-     * Gaussian elimination with full pivoting. Returns the determinant
-     * and, in @p null_vector, the solution with the last pivot's unknown
-     * set to 1 (the null vector when the matrix is singular).
-     */
-    Complex
-    eliminate(Matrix matrix, std::vector<Complex> *null_vector = nullptr)
-    {
-      const unsigned int        n = matrix.n;
-      std::vector<unsigned int> column(n);
-      for (unsigned int j = 0; j < n; ++j)
-        column[j] = j;
-      Complex determinant = 1.;
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          unsigned int pivot_row = k, pivot_column = k;
-          double       largest   = -1.;
-          for (unsigned int i = k; i < n; ++i)
-            for (unsigned int j = k; j < n; ++j)
-              if (std::abs(matrix(i, j)) > largest)
-                {
-                  largest      = std::abs(matrix(i, j));
-                  pivot_row    = i;
-                  pivot_column = j;
-                }
-          if (pivot_row != k)
-            {
-              for (unsigned int j = 0; j < n; ++j)
-                std::swap(matrix(k, j), matrix(pivot_row, j));
-              determinant = -determinant;
-            }
-          if (pivot_column != k)
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                std::swap(matrix(i, k), matrix(i, pivot_column));
-              std::swap(column[k], column[pivot_column]);
-              determinant = -determinant;
-            }
-          determinant *= matrix(k, k);
-          if (k + 1 == n || std::abs(matrix(k, k)) == 0.)
-            continue;
-          for (unsigned int i = k + 1; i < n; ++i)
-            {
-              const Complex factor = matrix(i, k) / matrix(k, k);
-              for (unsigned int j = k; j < n; ++j)
-                matrix(i, j) -= factor * matrix(k, j);
-            }
-        }
-      if (null_vector)
-        {
-          std::vector<Complex> permuted(n, 0.);
-          permuted[n - 1] = 1.;
-          for (int k = int(n) - 2; k >= 0; --k)
-            {
-              Complex sum = 0.;
-              for (unsigned int j = k + 1; j < n; ++j)
-                sum += matrix(k, j) * permuted[j];
-              permuted[k] = std::abs(matrix(k, k)) > 0. ? -sum / matrix(k, k) :
-                                                          Complex(0.);
-            }
-          null_vector->assign(n, 0.);
-          for (unsigned int k = 0; k < n; ++k)
-            (*null_vector)[column[k]] = permuted[k];
-          double largest = 0.;
-          for (const Complex &value : *null_vector)
-            largest = std::max(largest, std::abs(value));
-          for (Complex &value : *null_vector)
-            value /= largest;
-        }
-      return determinant;
-    }
-
     /** The two conditions of a face of wedge @p block at angle theta. */
     void
-    add_face(Matrix &matrix, const unsigned int first_row,
+    add_face(ComplexMatrix &matrix, const unsigned int first_row,
              const unsigned int block, const FaceCondition condition,
              const WilliamsRows &rows)
     {
@@ -173,10 +47,10 @@ namespace FloorBlock::Analytic
         }
     }
 
-    Matrix
+    ComplexMatrix
     wedge_matrix(const SingleWedge &wedge, const Complex lambda)
     {
-      Matrix matrix{4, std::vector<Complex>(16, 0.)};
+      ComplexMatrix matrix(4);
       add_face(matrix, 0, 0, wedge.first_face,
                williams_rows(lambda, 0., wedge.material));
       add_face(matrix, 2, 0, wedge.second_face,
@@ -184,10 +58,10 @@ namespace FloorBlock::Analytic
       return matrix;
     }
 
-    Matrix
+    ComplexMatrix
     pair_matrix(const WedgePair &pair, const Complex lambda)
     {
-      Matrix matrix{8, std::vector<Complex>(64, 0.)};
+      ComplexMatrix matrix(8);
       add_face(matrix, 0, 0, FaceCondition::traction_free,
                williams_rows(lambda, pair.first_angle, pair.first_material));
       add_face(matrix, 2, 1, FaceCondition::traction_free,
@@ -228,23 +102,6 @@ namespace FloorBlock::Analytic
       return matrix;
     }
 
-    /** F and F' of wedge @p block's coefficients at theta. */
-    std::pair<Complex, Complex>
-    airy_angular(const std::vector<Complex> &coefficients,
-                 const unsigned int          block,
-                 const Complex               lambda,
-                 const double                theta,
-                 const WedgeMaterial        &material)
-    {
-      const WilliamsRows rows = williams_rows(lambda, theta, material);
-      Complex            f = 0., derivative = 0.;
-      for (unsigned int j = 0; j < 4; ++j)
-        {
-          f += rows.normal_stress[j] * coefficients[4 * block + j];
-          derivative += rows.shear_stress[j] * coefficients[4 * block + j];
-        }
-      return {f, derivative};
-    }
 
     /**
      * Largest |sigma_tt|, |sigma_rt| over a few angles of each wedge,
@@ -297,26 +154,6 @@ namespace FloorBlock::Analytic
                          "0 < angle <= " + std::to_string(largest) + " rad");
     }
 
-    /**
-     * |det M| over the product of M's row norms (Hadamard's bound): 1 for
-     * orthogonal rows, ~1e-16 at a root. The secant iteration of
-     * complex_roots() also stops where det M is merely small (rows that
-     * shrink together); this ratio tells those apart.
-     */
-    double
-    hadamard_ratio(Matrix matrix)
-    {
-      double bound = 1.;
-      for (unsigned int i = 0; i < matrix.n; ++i)
-        {
-          double norm = 0.;
-          for (unsigned int j = 0; j < matrix.n; ++j)
-            norm += std::norm(matrix(i, j));
-          bound *= std::sqrt(norm);
-        }
-      return bound > 0. ? std::abs(eliminate(matrix)) / bound : 0.;
-    }
-
     /** Largest hadamard_ratio() accepted as a root. */
     constexpr double root_hadamard_ratio = 1e-10;
 
@@ -332,74 +169,13 @@ namespace FloorBlock::Analytic
      * of the largest entry count as zero).
      */
     std::vector<Complex>
-    unit_exponent_null_vector(Matrix full)
+    unit_exponent_null_vector(const ComplexMatrix &full)
     {
-      const unsigned int        n_rows = full.n;
-      std::vector<unsigned int> kept_columns;
+      std::vector<unsigned int> without_d;
       for (unsigned int j = 0; j < full.n; ++j)
         if (j % 4 != 3)
-          kept_columns.push_back(j);
-      const unsigned int n_columns = kept_columns.size();
-      std::vector<std::vector<Complex>> a(n_rows,
-                                          std::vector<Complex>(n_columns));
-      double largest_entry = 0.;
-      for (unsigned int i = 0; i < n_rows; ++i)
-        for (unsigned int j = 0; j < n_columns; ++j)
-          {
-            a[i][j]       = full(i, kept_columns[j]);
-            largest_entry = std::max(largest_entry, std::abs(a[i][j]));
-          }
-      std::vector<unsigned int> column(n_columns);
-      for (unsigned int j = 0; j < n_columns; ++j)
-        column[j] = j;
-      unsigned int rank = 0;
-      for (; rank < n_columns; ++rank)
-        {
-          unsigned int pivot_row = rank, pivot_column = rank;
-          double       largest   = -1.;
-          for (unsigned int i = rank; i < n_rows; ++i)
-            for (unsigned int j = rank; j < n_columns; ++j)
-              if (std::abs(a[i][j]) > largest)
-                {
-                  largest      = std::abs(a[i][j]);
-                  pivot_row    = i;
-                  pivot_column = j;
-                }
-          if (largest <= 1e-10 * largest_entry)
-            break;
-          std::swap(a[rank], a[pivot_row]);
-          for (unsigned int i = 0; i < n_rows; ++i)
-            std::swap(a[i][rank], a[i][pivot_column]);
-          std::swap(column[rank], column[pivot_column]);
-          for (unsigned int i = rank + 1; i < n_rows; ++i)
-            {
-              const Complex factor = a[i][rank] / a[rank][rank];
-              for (unsigned int j = rank; j < n_columns; ++j)
-                a[i][j] -= factor * a[rank][j];
-            }
-        }
-      if (rank == n_columns)
-        return {};
-      // The first free unknown 1, the others 0; back substitution.
-      std::vector<Complex> permuted(n_columns, 0.);
-      permuted[rank] = 1.;
-      for (int k = int(rank) - 1; k >= 0; --k)
-        {
-          Complex sum = 0.;
-          for (unsigned int j = k + 1; j < n_columns; ++j)
-            sum += a[k][j] * permuted[j];
-          permuted[k] = -sum / a[k][k];
-        }
-      std::vector<Complex> coefficients(full.n, 0.);
-      double               size = 0.;
-      for (unsigned int k = 0; k < n_columns; ++k)
-        {
-          coefficients[kept_columns[column[k]]] = permuted[k];
-          size = std::max(size, std::abs(permuted[k]));
-        }
-      for (Complex &value : coefficients)
-        value /= size;
-      return coefficients;
+          without_d.push_back(j);
+      return null_vector_in_columns(full, without_d, 1e-10);
     }
 
     /** Stress-free solutions are rigid motions, not modes. */

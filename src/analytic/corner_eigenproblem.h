@@ -1,6 +1,7 @@
 #pragma once
 
 #include <analytic/complex_roots.h>
+#include <analytic/williams_field.h>
 
 #include <complex>
 #include <string>
@@ -8,21 +9,6 @@
 
 namespace FloorBlock::Analytic
 {
-  /**
-   * @brief Plane-strain elastic material of a wedge (Pa, -).
-   */
-  struct WedgeMaterial
-  {
-    double shear_modulus  = 1.;
-    double poissons_ratio = 0.3;
-    /** Kolosov's constant of plane strain, 3 - 4 nu. */
-    double
-    kolosov() const
-    {
-      return 3. - 4. * poissons_ratio;
-    }
-  };
-
   /** @brief Dundurs' bimaterial parameters (alpha, beta), plane strain. */
   struct DundursParameters
   {
