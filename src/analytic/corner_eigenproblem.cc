@@ -178,6 +178,23 @@ namespace FloorBlock::Analytic
       return null_vector_in_columns(full, without_d, 1e-10);
     }
 
+    /**
+     * sigma_rt / sigma_tt of wedge 0 at theta = 0 (the interface of a
+     * pair): -lambda F' / (lambda (lambda + 1) F); NaN where sigma_tt
+     * vanishes there.
+     */
+    Complex
+    traction_ratio(const std::vector<Complex> &coefficients,
+                   const Complex               lambda,
+                   const WedgeMaterial        &material)
+    {
+      const auto [f, derivative] =
+        airy_angular(coefficients, 0, lambda, 0., material);
+      const Complex normal = lambda * (lambda + 1.) * f;
+      return std::abs(normal) > 1e-12 ? -lambda * derivative / normal :
+                                        Complex(std::nan(""), std::nan(""));
+    }
+
     /** Stress-free solutions are rigid motions, not modes. */
     constexpr double rigid_motion_stress = 1e-8;
 
@@ -205,12 +222,8 @@ namespace FloorBlock::Analytic
           if (stress_size(mode.coefficients, lambda, ranges, materials) <
               rigid_motion_stress)
             continue;
-          const auto [f, derivative] =
-            airy_angular(mode.coefficients, 0, lambda, 0., materials[0]);
-          const Complex normal = lambda * (lambda + 1.) * f;
           mode.traction_ratio =
-            std::abs(normal) > 1e-12 ? -lambda * derivative / normal :
-                                       Complex(std::nan(""), std::nan(""));
+            traction_ratio(mode.coefficients, lambda, materials[0]);
           modes.push_back(mode);
         }
       const bool has_unit_mode =
@@ -227,13 +240,8 @@ namespace FloorBlock::Analytic
               stress_size(mode.coefficients, 1., ranges, materials) >=
                 rigid_motion_stress)
             {
-              const auto [f, derivative] =
-                airy_angular(mode.coefficients, 0, 1., 0., materials[0]);
-              const Complex normal = 2. * f;
               mode.traction_ratio =
-                std::abs(normal) > 1e-12 ?
-                  -derivative / normal :
-                  Complex(std::nan(""), std::nan(""));
+                traction_ratio(mode.coefficients, 1., materials[0]);
               modes.push_back(mode);
               std::sort(modes.begin(), modes.end(),
                         [](const CornerMode &a, const CornerMode &b) {

@@ -134,32 +134,32 @@ namespace FloorBlock::App
           options.fe_degrees;
       for (const unsigned int degree : degrees)
         {
-        for (const Pipeline::RefinementMode mode :
-             Pipeline::refinement_modes(options.refinement_mode))
-          {
-            Parameters::ScenarioParameters degree_scene = scene;
-            degree_scene.solver.fe_degree                = degree;
-            ladders.push_back(
-              {Pipeline::ladder_name(mode, degree), {}, {}, {}});
-            // One budget for the whole command: each ladder gets what the
-            // ladders before it left.
-            Convergence::LadderBudget budget;
-            budget.seconds  = budget_seconds(options) - command_timer.wall_time();
-            budget.max_dofs = options.max_dofs;
-            const auto run = Pipeline::run_ladder(
-              degree_scene, mode, n_levels(options), refinement,
-              options.coarsen_fraction, folder,
-              [&](const std::vector<Convergence::LevelRecord> &so_far) {
-                ladders.back().levels = so_far;
-                Convergence::estimate_ladder_errors(ladders.back(), quantities);
-                write_tables(folder, ladders, quantities);
-              },
-              budget);
-            ladders.back().stopped_because = run.stopped_because;
-            for (const auto &record : run.levels)
-              all_converged = all_converged && record.converged();
-            std::cout << Output::ladder_text(ladders.back(), quantities);
-          }
+          Parameters::ScenarioParameters degree_scene = scene;
+          degree_scene.solver.fe_degree                = degree;
+          for (const Pipeline::RefinementMode mode :
+               Pipeline::refinement_modes(options.refinement_mode))
+            {
+              ladders.push_back(
+                {Pipeline::ladder_name(mode, degree), {}, {}, {}});
+              // One budget for the whole command: each ladder gets what the
+              // ladders before it left.
+              Convergence::LadderBudget budget;
+              budget.seconds  = budget_seconds(options) - command_timer.wall_time();
+              budget.max_dofs = options.max_dofs;
+              const auto run = Pipeline::run_ladder(
+                degree_scene, mode, n_levels(options), refinement,
+                options.coarsen_fraction, folder,
+                [&](const std::vector<Convergence::LevelRecord> &so_far) {
+                  ladders.back().levels = so_far;
+                  Convergence::estimate_ladder_errors(ladders.back(), quantities);
+                  write_tables(folder, ladders, quantities);
+                },
+                budget);
+              ladders.back().stopped_because = run.stopped_because;
+              for (const auto &record : run.levels)
+                all_converged = all_converged && record.converged();
+              std::cout << Output::ladder_text(ladders.back(), quantities);
+            }
         }
       return all_converged;
     }

@@ -140,7 +140,8 @@ namespace FloorBlock::Verification
     result.one_term_exponent = one_term.lambda1;
     result.fitted_exponent   = two_terms.lambda1;
     result.fit_residual      = two_terms.rms_relative_residual;
-    result.second_over_first = two_terms.k1 != 0. ? two_terms.k2 / two_terms.k1 : 0.;
+    result.second_over_first =
+      two_terms.k1 != 0. ? two_terms.k2 / two_terms.k1 : 0.;
     result.one_term_validity =
       Analytic::one_term_validity_distance(two_terms, 0.1);
     return result;
