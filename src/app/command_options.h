@@ -1,6 +1,7 @@
 #pragma once
 
 #include <common/input_error.h>
+#include <convergence/size_targets.h>
 #include <parameters/scenario_parameters.h>
 
 #include <cstddef>
@@ -25,7 +26,7 @@ namespace FloorBlock::App
     unsigned int             n_levels   = 0;
     std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|remesh|both|all
     double bulk_fraction = 0.1;  ///< converge: cells refined by the Kelly indicator
-    double coarsen_fraction = 0.03; ///< converge adaptive: cells flagged for coarsening
+    double coarsen_fraction = Convergence::default_coarsen_fraction; ///< converge adaptive: cells flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
     double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
     /** converge: wall time of the whole study (s); NaN = not given. */

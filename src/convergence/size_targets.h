@@ -20,6 +20,12 @@ namespace FloorBlock::Convergence
    * (each level is a new Gmsh mesh); `--mode adaptive` applies each level's
    * requests to the previous level's deal.II mesh, which keeps its cells.
    */
+  /**
+   * Fraction of the cells flagged for coarsening per adaptive level
+   * (`converge --coarsen-fraction`'s default, and `run`'s).
+   */
+  constexpr double default_coarsen_fraction = 0.03;
+
   struct RefinementSettings
   {
     /**

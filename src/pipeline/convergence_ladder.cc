@@ -1,4 +1,5 @@
 #include <pipeline/convergence_ladder.h>
+#include <pipeline/adaptive_levels.h>
 #include <pipeline/fem_pipeline.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
@@ -69,14 +70,6 @@ namespace FloorBlock::Pipeline
         record.stage_wall_times[section] = seconds;
       if (outcome.converged && !outcome.result.increments.empty())
         record_answers(outcome.result.increments.back(), n_blocks, record);
-    }
-
-    /** Smallest size request the mesher accepts for this scene (m). */
-    double
-    smallest_local_size(const Parameters::ScenarioParameters &scene)
-    {
-      return Geometry::min_relative_corner_size *
-             std::min(scene.geometry.block_width, scene.geometry.block_height);
     }
 
     /** What a solved level asks of the next adaptive or remesh level. */
@@ -269,11 +262,14 @@ namespace FloorBlock::Pipeline
         after_level(levels);
       }
 
-      /** Whether a further level can start from @p next; says why not. */
+      /**
+       * Whether a further level can start from the last one (it left size
+       * requests, @p has_requests); says why not.
+       */
       bool
-      can_refine_from(const Indicators &next) const
+      can_refine_from(const bool has_requests) const
       {
-        if (!next.requests.empty())
+        if (has_requests)
           return true;
         std::cout << "converge: " << levels.back().mode
                   << " ladder stopped: level " << levels.back().level
@@ -298,16 +294,6 @@ namespace FloorBlock::Pipeline
       double                           cumulative_time = 0.;
       std::string                      stopped_because;
     };
-
-    Convergence::RefinementSettings
-    bounded(const Convergence::RefinementSettings &settings,
-            const Parameters::ScenarioParameters  &scene)
-    {
-      Convergence::RefinementSettings refinement = settings;
-      refinement.smallest_size =
-        std::max(refinement.smallest_size, smallest_local_size(scene));
-      return refinement;
-    }
 
     LadderRun
     run_uniform_ladder(const Parameters::ScenarioParameters  &scene,
@@ -357,7 +343,7 @@ namespace FloorBlock::Pipeline
               return solve_scene(scene, where, false, extras);
             },
             &next));
-          if (level + 1 < n_levels && !log.can_refine_from(next))
+          if (level + 1 < n_levels && !log.can_refine_from(!next.requests.empty()))
             break;
           Convergence::merge_size_requests(local_sizes, next.requests,
                                            scene.mesh.growth_rate);
@@ -365,48 +351,10 @@ namespace FloorBlock::Pipeline
       return log.result();
     }
 
-    std::vector<Convergence::JointSides>
-    joint_sides(const Parameters::ScenarioParameters &scene)
-    {
-      std::vector<Convergence::JointSides> sides;
-      for (const auto &joint :
-           Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)).joints)
-        if (!joint.against_rigid_plane)
-          sides.push_back({joint.side_a, joint.side_b});
-      return sides;
-    }
-
     /**
-     * Refines @p triangulation for the next adaptive level (new vertices on
-     * the scene's curves) and writes it as mesh.msh.
+     * Level 0 from Gmsh, then deal.II refinement with hanging nodes
+     * (AdaptiveLevels).
      */
-    Geometry::MeshStatistics
-    refine_for_next_level(const Geometry::AssemblyDescription         &description,
-                          const std::vector<Convergence::JointSides> &joints,
-                          const Indicators                            &next,
-                          const double                       coarsen_fraction,
-                          const std::string                          &msh_path,
-                          dealii::Triangulation<2>              &triangulation,
-                          Convergence::MatchedRefinementSummary &summary)
-    {
-      // A zone end asks for a quarter of its segment (zone_end_refinement
-      // = 4: two halvings); one more sweep lets the 2:1 grading follow.
-      constexpr unsigned int max_passes = 3;
-      dealii::Timer          timer;
-      Geometry::attach_boundary_manifolds(description, triangulation);
-      summary = Convergence::refine_matched(triangulation, joints,
-                                            next.requests,
-                                            Convergence::touching_cells_only,
-                                            next.kelly, coarsen_fraction,
-                                            max_passes);
-      Geometry::detach_boundary_manifolds(triangulation);
-      Geometry::MeshStatistics statistics;
-      write_solved_mesh(triangulation, msh_path, statistics);
-      statistics.wall_time = timer.wall_time();
-      return statistics;
-    }
-
-    /** Level 0 from Gmsh, then deal.II refinement with hanging nodes. */
     LadderRun
     run_adaptive_ladder(const Parameters::ScenarioParameters  &scene,
                         const unsigned int                     n_levels,
@@ -416,38 +364,25 @@ namespace FloorBlock::Pipeline
                         const LevelCallback                   &after_level,
                         const Convergence::LadderBudget       &budget)
     {
-      LadderLog log(RefinementMode::adaptive, after_level, budget);
-      const auto description = Scene::assembly_description(scene);
-      const auto joints      = joint_sides(scene);
-      dealii::Triangulation<2> triangulation;
-      Indicators               previous;
+      LadderLog      log(RefinementMode::adaptive, after_level, budget);
+      AdaptiveLevels levels(scene, refinement, coarsen_fraction);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
           if (level > 0 && !log.can_afford_next_level())
             break;
-          Indicators                            next;
-          Convergence::MatchedRefinementSummary refinement_done;
           LevelRecord record = solve_level(
-            scene, RefinementMode::adaptive, level, previous.requests.size(),
-            refinement, folder,
+            scene, RefinementMode::adaptive, level, 0, refinement, folder,
             [&](const SolveExtras &extras, const Output::ResultFolder &where) {
-              const auto mesh =
-                level == 0 ?
-                  mesh_scene(scene, where, {}, triangulation) :
-                  refine_for_next_level(description, joints, previous,
-                                        coarsen_fraction,
-                                        where.path_of("mesh.msh"),
-                                        triangulation, refinement_done);
-              return solve_meshed_scene(scene, triangulation, mesh, where,
-                                        false, extras);
+              return levels.solve_next(where, false, extras);
             },
-            &next);
-          record.n_refinement_sweeps = refinement_done.n_passes;
-          record.n_cells_coarsened   = refinement_done.n_cells_coarsened;
+            nullptr);
+          record.n_local_sizes       = levels.n_requests_used();
+          record.n_refinement_sweeps = levels.last_refinement().n_passes;
+          record.n_cells_coarsened   = levels.last_refinement().n_cells_coarsened;
+          record.stage_wall_times["indicator"] = levels.last_indicator_time();
           log.add(record);
-          if (level + 1 < n_levels && !log.can_refine_from(next))
+          if (level + 1 < n_levels && !log.can_refine_from(levels.can_refine()))
             break;
-          previous = std::move(next);
         }
       return log.result();
     }
@@ -463,7 +398,7 @@ namespace FloorBlock::Pipeline
              const LevelCallback                   &after_level,
              const Convergence::LadderBudget       &budget)
   {
-    const auto refinement = bounded(refinement_settings, scene);
+    const auto refinement = bounded_refinement(refinement_settings, scene);
     switch (mode)
       {
         case RefinementMode::uniform:

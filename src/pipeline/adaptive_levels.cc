@@ -1,0 +1,134 @@
+#include <pipeline/adaptive_levels.h>
+#include <contact/contact_solver.h>
+#include <geometry/refinement_manifolds.h>
+#include <scene/assembly_inputs.h>
+#include <scene/contact_inputs.h>
+#include <scene/floor_contact_problem.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+
+namespace FloorBlock::Pipeline
+{
+  namespace
+  {
+    std::vector<Convergence::JointSides>
+    joint_sides(const Parameters::ScenarioParameters &scene)
+    {
+      std::vector<Convergence::JointSides> sides;
+      for (const auto &joint : Scene::make_floor_contact_problem(
+                                 Scene::floor_problem_settings(scene))
+                                 .joints)
+        if (!joint.against_rigid_plane)
+          sides.push_back({joint.side_a, joint.side_b});
+      return sides;
+    }
+  } // namespace
+
+  Convergence::RefinementSettings
+  bounded_refinement(const Convergence::RefinementSettings &settings,
+                     const Parameters::ScenarioParameters  &scene)
+  {
+    Convergence::RefinementSettings refinement = settings;
+    refinement.smallest_size =
+      std::max(refinement.smallest_size,
+               Geometry::min_relative_corner_size *
+                 std::min(scene.geometry.block_width,
+                          scene.geometry.block_height));
+    return refinement;
+  }
+
+  AdaptiveLevels::AdaptiveLevels(
+    const Parameters::ScenarioParameters  &scene,
+    const Convergence::RefinementSettings &refinement,
+    const double                           coarsen_fraction)
+    : scene(scene)
+    , refinement(refinement)
+    , coarsen_fraction(coarsen_fraction)
+    , description(Scene::assembly_description(scene))
+    , joints(joint_sides(scene))
+  {}
+
+  FemOutcome
+  AdaptiveLevels::solve_next(const Output::ResultFolder &folder,
+                             const bool                  write_vtu,
+                             const SolveExtras          &extras)
+  {
+    Geometry::MeshStatistics mesh;
+    refinement_done = {};
+    requests_used   = level == 0 ? 0 : requests.size();
+    if (level == 0)
+      mesh = mesh_scene(scene, folder, {}, triangulation);
+    else
+      {
+        // A zone end asks for a quarter of its segment (zone_end_refinement
+        // = 4: two halvings); one more sweep lets the 2:1 grading follow.
+        constexpr unsigned int max_passes = 3;
+        dealii::Timer          timer;
+        Geometry::attach_boundary_manifolds(description, triangulation);
+        refinement_done = Convergence::refine_matched(
+          triangulation, joints, requests, Convergence::touching_cells_only,
+          kelly, coarsen_fraction, max_passes);
+        Geometry::detach_boundary_manifolds(triangulation);
+        write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
+        mesh.wall_time = timer.wall_time();
+      }
+    ++level;
+    requests.clear();
+    indicator_time = 0.;
+
+    SolveExtras own = extras;
+    own.inspect     = [&](const Contact::ContactSolver &solver) {
+      if (extras.inspect)
+        extras.inspect(solver);
+      dealii::Timer timer;
+      kelly = Convergence::kelly_indicator(solver.space(), solver.solution());
+      requests = Convergence::bulk_size_targets(
+        solver.space().dof_handler().get_triangulation(), kelly, refinement);
+      indicator_time += timer.wall_time();
+    };
+    FemOutcome outcome =
+      solve_meshed_scene(scene, triangulation, mesh, folder, write_vtu, own);
+    if (!outcome.result.increments.empty())
+      {
+        dealii::Timer timer;
+        const auto    joint_targets = Convergence::joint_size_targets(
+          outcome.result.increments.back().joints, refinement);
+        requests.insert(requests.end(), joint_targets.begin(),
+                        joint_targets.end());
+        indicator_time += timer.wall_time();
+      }
+    return outcome;
+  }
+
+  unsigned int
+  AdaptiveLevels::next_level() const
+  {
+    return level;
+  }
+
+  bool
+  AdaptiveLevels::can_refine() const
+  {
+    return !requests.empty();
+  }
+
+  std::size_t
+  AdaptiveLevels::n_requests_used() const
+  {
+    return requests_used;
+  }
+
+  const Convergence::MatchedRefinementSummary &
+  AdaptiveLevels::last_refinement() const
+  {
+    return refinement_done;
+  }
+
+  double
+  AdaptiveLevels::last_indicator_time() const
+  {
+    return indicator_time;
+  }
+} // namespace FloorBlock::Pipeline

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <convergence/matched_refinement.h>
+#include <convergence/size_targets.h>
+#include <geometry/assembly_description.h>
+#include <output/result_folder.h>
+#include <parameters/scenario_parameters.h>
+#include <pipeline/fem_pipeline.h>
+
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace FloorBlock::Pipeline
+{
+  /**
+   * @brief @p settings with its smallest size raised to the smallest size
+   * request the mesher accepts for @p scene
+   * (Geometry::min_relative_corner_size of the smaller block side).
+   */
+  Convergence::RefinementSettings
+  bounded_refinement(const Convergence::RefinementSettings &settings,
+                     const Parameters::ScenarioParameters  &scene);
+
+  /**
+   * @brief A sequence of nested meshes of one scene, each refined where
+   * the solution on the one before asked for it, with one solve per mesh.
+   *
+   * Level 0 is the scene's Gmsh mesh (mesh_scene(): contact-zone sizing and
+   * Scene::global_refinements()). Each further level refines and coarsens
+   * the previous level's deal.II mesh with hanging nodes where the previous
+   * solution's indicators ask (the ends of the closed zones and large
+   * traction jumps along the joints, Convergence::joint_size_targets; the
+   * Kelly indicator in the bodies, Convergence::bulk_size_targets), both
+   * sides of every joint alike (Convergence::refine_matched).
+   *
+   * `converge --mode adaptive` runs it as a ladder; `run` refines with it
+   * until its figures reach Mesh/Target relative error (accuracy_loop.h).
+   */
+  class AdaptiveLevels
+  {
+  public:
+    AdaptiveLevels(const Parameters::ScenarioParameters  &scene,
+                   const Convergence::RefinementSettings &refinement,
+                   double                                 coarsen_fraction);
+
+    /**
+     * @brief Meshes (level 0) or refines the mesh for the next level,
+     * solves it into @p folder (mesh.msh, fem.json, ...; VTU if
+     * @p write_vtu) and keeps what the solution asks of the level after.
+     * Exceptions of the mesher or refinement propagate; a solve that did
+     * not converge is returned (FemOutcome::converged false) and still
+     * leaves indicators from its last converged state.
+     */
+    FemOutcome
+    solve_next(const Output::ResultFolder &folder,
+               bool                         write_vtu,
+               const SolveExtras           &extras = {});
+
+    /** The level solve_next() solves next (0 before the first call). */
+    unsigned int
+    next_level() const;
+
+    /** Whether the last level left size requests to refine from. */
+    bool
+    can_refine() const;
+
+    /** Number of size requests the current level was refined with. */
+    std::size_t
+    n_requests_used() const;
+
+    /** What the refinement of the last level did (empty for level 0). */
+    const Convergence::MatchedRefinementSummary &
+    last_refinement() const;
+
+    /** Wall time of the last level's error indicators (s). */
+    double
+    last_indicator_time() const;
+
+  private:
+    const Parameters::ScenarioParameters         scene;
+    const Convergence::RefinementSettings        refinement;
+    const double                                 coarsen_fraction;
+    const Geometry::AssemblyDescription          description;
+    const std::vector<Convergence::JointSides>   joints;
+    dealii::Triangulation<2>                     triangulation;
+    unsigned int                                 level = 0;
+    std::vector<Geometry::LocalSize>             requests;
+    std::size_t                                  requests_used = 0;
+    dealii::Vector<float>                        kelly;
+    Convergence::MatchedRefinementSummary        refinement_done;
+    double                                       indicator_time = 0.;
+  };
+} // namespace FloorBlock::Pipeline
