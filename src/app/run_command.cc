@@ -8,11 +8,13 @@
 #include <output/result_folder.h>
 #include <output/run_summary.h>
 #include <pipeline/closed_form_comparison.h>
-#include <pipeline/error_estimate.h>
+#include <pipeline/accuracy_loop.h>
 #include <pipeline/fem_pipeline.h>
 #include <scene/closed_forms.h>
 
 #include <deal.II/base/timer.h>
+
+#include <fmt/format.h>
 
 #include <iostream>
 #include <optional>
@@ -68,6 +70,23 @@ namespace FloorBlock::App
       return comparison;
     }
 
+    /// Which level is reported, and whether it met the accuracy target.
+    void
+    print_target(const std::optional<Output::FemErrorEstimate> &estimate)
+    {
+      if (!estimate || !estimate->target)
+        return;
+      const Output::AccuracyTarget &target = *estimate->target;
+      const auto &reported = target.levels.at(target.reported_level);
+      std::cout << fmt::format(
+                     "accuracy: target {:g} % {} after {} levels in {:.1f} "
+                     "s; reporting level {} ({} DoFs): {}\n",
+                     100. * target.relative_error,
+                     target.met ? "met" : "NOT met", target.levels.size(),
+                     target.wall_time, target.reported_level,
+                     reported.n_dofs, target.stop_reason);
+    }
+
     /// The closing line: what was written, and in how long.
     void
     print_written(const Pipeline::FemOutcome &outcome,
@@ -97,10 +116,13 @@ namespace FloorBlock::App
 
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
     write_closed_forms(folder, closed_forms);
-    const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);
+    const Pipeline::TargetedSolve solve =
+      Pipeline::solve_to_target(scene, folder);
+    const Pipeline::FemOutcome &outcome  = solve.outcome;
+    const auto                 &estimate = solve.estimate;
+    print_target(estimate);
     std::cout << Output::fem_summary_text(outcome.report, outcome.result,
                                           outcome.mesh);
-    const auto estimate = Pipeline::estimate_error(scene, outcome, folder);
     std::optional<Output::RunComparison> comparison;
     if (!outcome.result.increments.empty())
       {

@@ -6,13 +6,45 @@ namespace FloorBlock::Output
 {
   using nlohmann::json;
 
+  namespace
+  {
+    json
+    target_json(const AccuracyTarget &target)
+    {
+      json levels = json::array();
+      for (const RefinementLevelRecord &level : target.levels)
+        levels.push_back(
+          {{"level", level.level},
+           {"n_cells", level.n_cells},
+           {"n_dofs", level.n_dofs},
+           {"wall_time_s", level.wall_time},
+           {"status", level.status},
+           {"face", level.face_figures},
+           {"worst_target_relative_error",
+            level.worst_target_error ? json(*level.worst_target_error) :
+                                       json(nullptr)}});
+      return {{"relative_error", target.relative_error},
+              {"figures", target.figures},
+              {"met", target.met},
+              {"reported_level", target.reported_level},
+              {"stop_reason", target.stop_reason},
+              {"wall_time_s", target.wall_time},
+              {"levels", levels}};
+    }
+  } // namespace
+
   json
   fem_error_estimate_json(const FemErrorEstimate &estimate)
   {
+    json result = {{"method", estimate.method}};
+    if (estimate.target)
+      result["target"] = target_json(*estimate.target);
     if (!estimate.available)
-      return {{"method", estimate.method},
-              {"status", "unavailable"},
-              {"status_text", estimate.status_text}};
+      {
+        result["status"]      = "unavailable";
+        result["status_text"] = estimate.status_text;
+        return result;
+      }
     const std::pair<const char *, FigureError JointErrors::*> figures[] = {
       {"normal_force_N_per_m", &JointErrors::normal_force},
       {"contact_length_m", &JointErrors::contact_length},
@@ -35,10 +67,10 @@ namespace FloorBlock::Output
           }
         joints[name] = quantities;
       }
-    return {{"method", estimate.method},
-            {"status", "available"},
-            {"refined_n_dofs", estimate.refined_n_dofs},
-            {"refined_status", estimate.refined_status},
-            {"joints", joints}};
+    result["status"]         = "available";
+    result["refined_n_dofs"] = estimate.refined_n_dofs;
+    result["refined_status"] = estimate.refined_status;
+    result["joints"]         = joints;
+    return result;
   }
 } // namespace FloorBlock::Output

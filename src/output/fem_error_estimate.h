@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace FloorBlock::Output
 {
@@ -31,6 +32,35 @@ namespace FloorBlock::Output
     FigureError sigma_max_averaged; ///< Pa, averaged over the averaging length
   };
 
+  /** One mesh of `run`'s accuracy loop (Pipeline::solve_to_target()). */
+  struct RefinementLevelRecord
+  {
+    unsigned int level   = 0;
+    unsigned int n_cells = 0;
+    unsigned int n_dofs  = 0;
+    double       wall_time = 0.; ///< s: meshing or refinement, and the solve
+    std::string  status;         ///< fem.json's status of the level's solve
+    /** The face joint's figures on this level, by fem.json key (SI). */
+    std::map<std::string, double> face_figures;
+    /**
+     * Largest estimated relative error of the target figures of this level
+     * against the next; none for the last level or if it was not estimated.
+     */
+    std::optional<double> worst_target_error;
+  };
+
+  /** What `run` was asked to reach, and how far it got. */
+  struct AccuracyTarget
+  {
+    double relative_error = 0.;      ///< Mesh/Target relative error
+    std::vector<std::string> figures; ///< fem.json keys of the target figures
+    bool         met            = false;
+    unsigned int reported_level = 0; ///< the level the figures come from
+    std::string  stop_reason;        ///< why the loop stopped, in words
+    double       wall_time = 0.;     ///< s, all levels
+    std::vector<RefinementLevelRecord> levels;
+  };
+
   /**
    * The discretisation error of each FEM figure, estimated from the
    * difference to one refined solve (summary.json's fem_error_estimate).
@@ -44,6 +74,8 @@ namespace FloorBlock::Output
     std::string  refined_status;
     /** By joint name ("vertical 6"), as in fem.json. */
     std::map<std::string, JointErrors> joints;
+    /** The accuracy loop that chose the levels compared; none without one. */
+    std::optional<AccuracyTarget> target;
   };
 
   /**
@@ -51,7 +83,11 @@ namespace FloorBlock::Output
    * available the refined DoFs and status and, per joint and figure (keys
    * of fem.json: normal_force_N_per_m, contact_length_m, sigma_max_Pa,
    * sigma_max_averaged_Pa), value, refined_value, absolute_error and
-   * relative_error (null where the refined value is 0).
+   * relative_error (null where the refined value is 0); with an
+   * accuracy loop its "target": relative_error, figures, met,
+   * reported_level, stop_reason, wall_time_s and per level level, n_cells,
+   * n_dofs, wall_time_s, status, face (figures by fem.json key) and
+   * worst_target_relative_error (null where not estimated).
    */
   nlohmann::json
   fem_error_estimate_json(const FemErrorEstimate &estimate);

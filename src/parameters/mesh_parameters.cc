@@ -7,6 +7,7 @@ namespace FloorBlock::Parameters
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
+  using dealii::Patterns::MultipleSelection;
   using dealii::Patterns::Selection;
 
   void
@@ -45,6 +46,36 @@ namespace FloorBlock::Parameters
       "So the ends of the contact zones sit in cells sized from the scene, "
       "not from the corner grading alone. 0: no contact-zone sizing "
       "(also when no mechanism gives a contact length). Units: none.");
+    prm.declare_entry(
+      "Target relative error", "0.01", Double(1e-6, 1),
+      "Accuracy as the input: `run` solves on the mesh sized from the "
+      "scene, then refines it adaptively (hanging nodes at the contact "
+      "ends, along large traction jumps and where the Kelly indicator is "
+      "largest) level by level, until the estimated error of every target "
+      "figure of the face joint (6 times its difference to the next "
+      "level, plus a contact end's location uncertainty) is at most this "
+      "fraction of the figure, or the levels or the time budget run out "
+      "(then it says so, with the estimate reached). The figures are "
+      "reported from the coarser of the last two levels, with that "
+      "estimate (src/pipeline/accuracy_loop.h). Units: none (0.01 = 1 %).");
+    prm.declare_entry(
+      "Target figures", "normal force, contact length",
+      MultipleSelection("normal force|contact length|sigma_max|"
+                        "sigma_max averaged"),
+      "The face-joint figures Target relative error applies to; the others "
+      "are reported with their estimate but do not refine the mesh. The "
+      "peaks are not targets by default: with exact contact the pointwise "
+      "peak at a corner has no mesh limit, and the averaged one depends on "
+      "Solver/Averaging length (issue 15's corner analysis). Units: none.");
+    prm.declare_entry(
+      "Maximum refinement levels", "6", Integer(1, 20),
+      "Largest number of adaptive levels `run` solves after the first "
+      "mesh (1: one refined solve, only for the estimate). Units: none.");
+    prm.declare_entry(
+      "Refinement time budget", "600", Double(1, 1e6),
+      "`run` starts no further level once the wall time of its solves "
+      "has passed this or the next level's forecast would pass it. "
+      "Units: s.");
     prm.leave_subsection();
   }
 
@@ -62,6 +93,17 @@ namespace FloorBlock::Parameters
       refinements == "auto" ?
         std::nullopt :
         std::optional<unsigned int>(std::stoul(refinements));
+    target_relative_error = prm.get_double("Target relative error");
+    target_figures.clear();
+    for (const std::string &name : dealii::Utilities::split_string_list(
+           prm.get("Target figures")))
+      target_figures.push_back(
+        name == "normal force"   ? TargetFigure::normal_force :
+        name == "contact length" ? TargetFigure::contact_length :
+        name == "sigma_max"      ? TargetFigure::sigma_max :
+                                   TargetFigure::sigma_max_averaged);
+    max_refinement_levels  = prm.get_integer("Maximum refinement levels");
+    refinement_time_budget = prm.get_double("Refinement time budget");
     prm.leave_subsection();
 
     if (corner_size > far_size)

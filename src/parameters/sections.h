@@ -134,6 +134,15 @@ namespace FloorBlock::Parameters
   };
 
   /** Subsection "Mesh": element sizes for the Gmsh block assembly. */
+  /** A face-joint figure that Mesh/Target relative error applies to. */
+  enum class TargetFigure
+  {
+    normal_force,
+    contact_length,
+    sigma_max,
+    sigma_max_averaged
+  };
+
   struct MeshParameters
   {
     double corner_size;  ///< m, target element size at joint corners
@@ -151,6 +160,17 @@ namespace FloorBlock::Parameters
      * length (Scene::contact_zone_sizes()); 0 = no contact-zone sizing.
      */
     unsigned int cells_per_contact_length;
+    /**
+     * `run` refines adaptively until the estimated relative error of each
+     * target figure of the face joint is at most this (1 = 100 %).
+     */
+    double target_relative_error;
+    /** The face-joint figures the target applies to (TargetFigure). */
+    std::vector<TargetFigure> target_figures;
+    /** Largest number of adaptive levels after level 0 (each one solve). */
+    unsigned int max_refinement_levels;
+    /** Wall time (s) after which no further level is started. */
+    double refinement_time_budget;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -174,8 +194,8 @@ namespace FloorBlock::Parameters
     unsigned int       max_cutbacks;
     double             averaging_length; ///< m, for the averaged peak stress
     double             complementarity_factor;
-    /// Whether `run` repeats the solve one uniform ladder level finer and
-    /// reports the differences as the discretisation error estimate.
+    /// Whether `run` solves further adaptive levels and reports the
+    /// differences as the discretisation error estimate (accuracy_loop.h).
     bool               estimate_error_by_refined_solve;
 
     static void

@@ -82,10 +82,12 @@ namespace FloorBlock::Parameters
     prm.declare_entry("Error estimate", "refined solve",
                       Selection("refined solve|none"),
                       "How `run` estimates the discretisation error of each "
-                      "FEM figure: the difference to one solve on the next "
-                      "level of `converge`'s uniform ladder (Mesh/Corner "
-                      "size and Mesh/Far size halved, Mesh/Growth rate - 1 "
-                      "halved), or none. Units: none.");
+                      "FEM figure: refined solve = the difference to a solve "
+                      "on the next adaptive level of the same mesh "
+                      "(src/pipeline/adaptive_levels.h), repeated until "
+                      "Mesh/Target relative error is met (the rigid-block "
+                      "model: one solve with twice the points per joint); "
+                      "none = one solve, no estimate. Units: none.");
     prm.leave_subsection();
   }
 

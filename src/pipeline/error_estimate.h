@@ -8,20 +8,24 @@
 namespace FloorBlock::Pipeline
 {
   /**
-   * @brief The discretisation error of each FEM figure, estimated as the
-   * difference to one solve on refined_scene() (rigid blocks: twice the
-   * points per joint): per joint,
-   * |coarse - fine| and its ratio to |fine| for the normal force, contact
-   * length and the peak stresses.
+   * @brief The discretisation error of each FEM figure of @p coarse,
+   * estimated from its difference to @p fine, a solve on a finer mesh (the
+   * next adaptive level, accuracy_loop.h; rigid blocks: twice the points
+   * per joint): per joint, error_from_refined_difference times
+   * |coarse - fine| (plus the contact ends' location uncertainty) and its
+   * ratio to |fine| for the normal force, contact length and the peak
+   * stresses.
    */
   Output::FemErrorEstimate
   refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine);
 
   /**
-   * @brief The error estimate of a converged @p coarse solve when the scene
-   * asks for one (Solver/Error estimate): solves refined_scene() into
-   * @p folder's refined/ and compares (refined_solve_error()). None when
-   * not asked for or @p coarse did not converge.
+   * @brief The error estimate of a converged @p coarse solve of the
+   * rigid-block model (Model/Blocks), when the scene asks for one
+   * (Solver/Error estimate): solves refined_scene() into @p folder's
+   * refined/ and compares (refined_solve_error()). None when not asked for
+   * or @p coarse did not converge. The elastic FEM refines adaptively
+   * instead (solve_to_target()).
    */
   std::optional<Output::FemErrorEstimate>
   estimate_error(const Parameters::ScenarioParameters &scene,
