@@ -20,6 +20,11 @@ namespace FloorBlock::Output
            {"wall_time_s", level.wall_time},
            {"status", level.status},
            {"face", level.face_figures},
+           {"difference_indicator", level.difference_indicator ?
+                                      json(*level.difference_indicator) :
+                                      json(nullptr)},
+           {"halved_n_dofs", level.halved_n_dofs},
+           {"halved_wall_time_s", level.halved_wall_time},
            {"worst_target_relative_error",
             level.worst_target_error ? json(*level.worst_target_error) :
                                        json(nullptr)}});

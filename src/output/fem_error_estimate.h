@@ -43,8 +43,18 @@ namespace FloorBlock::Output
     /** The face joint's figures on this level, by fem.json key (SI). */
     std::map<std::string, double> face_figures;
     /**
-     * Largest estimated relative error of the target figures of this level
-     * against the next; none for the last level or if it was not estimated.
+     * Largest relative difference-based indicator of the target figures:
+     * Pipeline::error_from_refined_difference times the change from the
+     * previous level; none on level 0. It only decides whether the level
+     * is checked.
+     */
+    std::optional<double> difference_indicator;
+    /** DoFs of the check (the level's mesh, every cell halved); 0: none. */
+    unsigned int halved_n_dofs = 0;
+    double       halved_wall_time = 0.; ///< s, the check's mesh and solve
+    /**
+     * Largest estimated relative error of the target figures from the
+     * check; none if the level was not checked.
      */
     std::optional<double> worst_target_error;
   };
@@ -86,8 +96,9 @@ namespace FloorBlock::Output
    * relative_error (null where the refined value is 0); with an
    * accuracy loop its "target": relative_error, figures, met,
    * reported_level, stop_reason, wall_time_s and per level level, n_cells,
-   * n_dofs, wall_time_s, status, face (figures by fem.json key) and
-   * worst_target_relative_error (null where not estimated).
+   * n_dofs, wall_time_s, status, face (figures by fem.json key),
+   * difference_indicator, halved_n_dofs and worst_target_relative_error
+   * (null where not estimated).
    */
   nlohmann::json
   fem_error_estimate_json(const FemErrorEstimate &estimate);

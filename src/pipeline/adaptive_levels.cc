@@ -8,6 +8,7 @@
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace FloorBlock::Pipeline
 {
@@ -100,6 +101,20 @@ namespace FloorBlock::Pipeline
         indicator_time += timer.wall_time();
       }
     return outcome;
+  }
+
+  FemOutcome
+  AdaptiveLevels::solve_halved(const Output::ResultFolder &folder) const
+  {
+    dealii::Timer            timer;
+    dealii::Triangulation<2> halved;
+    halved.copy_triangulation(triangulation);
+    Geometry::refine_globally_on_curves(description, 1, halved);
+    Geometry::MeshStatistics mesh;
+    std::filesystem::create_directories(folder.path_of(""));
+    write_solved_mesh(halved, folder.path_of("mesh.msh"), mesh);
+    mesh.wall_time = timer.wall_time();
+    return solve_meshed_scene(scene, halved, mesh, folder, false, {});
   }
 
   unsigned int

@@ -58,6 +58,16 @@ namespace FloorBlock::Pipeline
                bool                         write_vtu,
                const SolveExtras           &extras = {});
 
+    /**
+     * @brief Solves a copy of the last level's mesh with every cell halved
+     * (new boundary vertices on the scene's curves) into @p folder,
+     * without VTU: the nested h/2 refinement that run's error estimate
+     * compares the level with (accuracy_loop.h). Leaves the levels as they
+     * are. Pre-condition: solve_next() was called.
+     */
+    FemOutcome
+    solve_halved(const Output::ResultFolder &folder) const;
+
     /** The level solve_next() solves next (0 before the first call). */
     unsigned int
     next_level() const;

@@ -34,9 +34,7 @@ namespace FloorBlock::Pipeline
       error_from_refined_difference,
       coarse.report.model == "rigid blocks" ?
         "one solve with twice the points per joint" :
-        "a solve on the next adaptive level (hanging nodes at the contact "
-        "ends, along large traction jumps and at the largest Kelly "
-        "indicators; src/pipeline/adaptive_levels.h)");
+        "a solve on the same mesh with every cell halved (nested)");
     // A refined solve that stopped early describes a different load state:
     // comparing with it would be no error estimate at all.
     if (!fine.converged)

@@ -9,9 +9,9 @@ namespace FloorBlock::Pipeline
 {
   /**
    * @brief The discretisation error of each FEM figure of @p coarse,
-   * estimated from its difference to @p fine, a solve on a finer mesh (the
-   * next adaptive level, accuracy_loop.h; rigid blocks: twice the points
-   * per joint): per joint, error_from_refined_difference times
+   * estimated from its difference to @p fine, a solve on the same mesh
+   * with every cell halved (accuracy_loop.h; rigid blocks: twice the
+   * points per joint): per joint, error_from_refined_difference times
    * |coarse - fine| (plus the contact ends' location uncertainty) and its
    * ratio to |fine| for the normal force, contact length and the peak
    * stresses.
