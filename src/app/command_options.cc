@@ -10,6 +10,18 @@ namespace FloorBlock::App
     return Parameters::read_scenario(options.scene_path, options.overrides);
   }
 
+  void
+  require_plane_scene(const Parameters::ScenarioParameters &scene,
+                      const std::string                    &command)
+  {
+    if (scene.geometry.dimension != 2)
+      throw InputError("Geometry/Dimension",
+                       std::to_string(scene.geometry.dimension),
+                       "must be 2 for `" + command +
+                         "`: the 3D contact solve is not built yet (issue "
+                         "16); `floorblock mesh` builds the 3D mesh");
+  }
+
   std::string
   output_directory(const CommandOptions &                options,
                    const Parameters::ScenarioParameters &scene)

@@ -41,6 +41,14 @@ namespace FloorBlock::App
   Parameters::ScenarioParameters
   read_scene(const CommandOptions &options);
 
+  /**
+   * @brief Refuses a 3D scene (Geometry/Dimension = 3) for @p command,
+   * which solves in plane strain only: InputError naming the parameter.
+   */
+  void
+  require_plane_scene(const Parameters::ScenarioParameters &scene,
+                      const std::string                    &command);
+
   /** @brief --output if given, otherwise results/<scene name>. */
   std::string
   output_directory(const CommandOptions &                options,

@@ -207,6 +207,7 @@ namespace FloorBlock::App
     dealii::Timer timer;
     check_options(options);
     const auto scene = read_scene(options);
+    require_plane_scene(scene, "converge");
     // The ladder refines the elastic FEM's mesh; rigid blocks have none, and
     // every level would repeat the same rigid answer.
     if (Scene::uses_rigid_blocks(scene))

@@ -1,5 +1,7 @@
 #include <app/command_options.h>
+#include <common/atomic_file.h>
 #include <geometry/assembly_mesher.h>
+#include <geometry/extruded_assembly.h>
 #include <geometry/ids.h>
 #include <geometry/triangulation_reader.h>
 #include <output/mesh_picture.h>
@@ -7,15 +9,47 @@
 #include <scene/assembly_inputs.h>
 #include <scene/contact_zone_sizing.h>
 
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
 
 #include <fmt/format.h>
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace FloorBlock::App
 {
+  namespace
+  {
+    /** The 3D scene: the 2D mesh swept along the face, as <scene>_3d.msh. */
+    void
+    write_extruded_mesh(const Parameters::ScenarioParameters &scene,
+                        const dealii::Triangulation<2>       &assembly,
+                        const std::string                    &mesh_folder)
+    {
+      dealii::Timer            timer;
+      dealii::Triangulation<3> solid;
+      Geometry::extrude_assembly(
+        assembly,
+        Geometry::uniform_slices(scene.geometry.face_length,
+                                 scene.mesh.slice_size),
+        solid);
+      const std::string path =
+        (std::filesystem::path(mesh_folder) / (scene.scene_name + "_3d.msh"))
+          .string();
+      std::ostringstream msh;
+      dealii::GridOut().write_msh(solid, msh);
+      write_file_atomically(path, msh.str());
+      std::cout << fmt::format(
+                     "extruded along the face over {} m: {} hexahedra, {} "
+                     "vertices in {:.3f} s\nwrote {}\n",
+                     scene.geometry.face_length, solid.n_active_cells(),
+                     solid.n_used_vertices(), timer.wall_time(), path);
+    }
+  } // namespace
+
   int
   mesh_command(const CommandOptions &options)
   {
@@ -51,6 +85,8 @@ namespace FloorBlock::App
                    scene.scene_name, statistics.n_cells, statistics.n_nodes,
                    statistics.n_bodies, statistics.n_matched_pairs,
                    statistics.wall_time, msh_path, folder.path_of("mesh.png"));
+    if (scene.geometry.dimension == 3)
+      write_extruded_mesh(scene, triangulation, mesh_folder);
     return 0;
   }
 } // namespace FloorBlock::App

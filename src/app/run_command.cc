@@ -110,6 +110,7 @@ namespace FloorBlock::App
   {
     dealii::Timer timer;
     const auto    scene = read_scene(options);
+    require_plane_scene(scene, "run");
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.mark_unfinished();
     folder.write_inputs(scene);

@@ -10,6 +10,7 @@ namespace FloorBlock::App
   solve_command(const CommandOptions &options)
   {
     const auto scene = read_scene(options);
+    require_plane_scene(scene, "solve");
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);

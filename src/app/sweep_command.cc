@@ -51,7 +51,10 @@ namespace FloorBlock::App
   {
     const auto scene = read_scene(options);
     if (options.with_fem)
-      return fem_sweep_command(options, scene);
+      {
+        require_plane_scene(scene, "sweep --fem");
+        return fem_sweep_command(options, scene);
+      }
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
 

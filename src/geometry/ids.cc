@@ -47,6 +47,10 @@ namespace FloorBlock::Geometry::Ids
                 return "base end, free side";
               case free_side_of_block_1:
                 return "free side of block 1";
+              case end_face_near:
+                return "end face at z = 0 (3D)";
+              case end_face_far:
+                return "end face at z = face length (3D)";
               default:
                 return "outer side of the face block";
             }
@@ -99,10 +103,12 @@ namespace FloorBlock::Geometry::Ids
                                                    base_end_face_side,
                                                    base_end_free_side,
                                                    free_side_of_block_1,
-                                                   face_block_outer_side})
+                                                   face_block_outer_side,
+                                                   end_face_near,
+                                                   end_face_far})
       boundaries.push_back(outer);
 
-    table << "Boundary ids (= Gmsh physical curve tags)\n";
+    table << "Boundary ids (= Gmsh physical curve tags; the end faces: 3D only)\n";
     for (const dealii::types::boundary_id id : boundaries)
       row(id, boundary_name(id, n_blocks));
     table << "Corner fillets: top fillets carry the id of the vertical side "

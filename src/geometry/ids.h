@@ -100,6 +100,12 @@ namespace FloorBlock::Geometry::Ids
   constexpr dealii::types::boundary_id base_end_free_side    = 7003;
   constexpr dealii::types::boundary_id free_side_of_block_1  = 7004;
   constexpr dealii::types::boundary_id face_block_outer_side = 7005;
+  /**
+   * 3D scenes (extruded_assembly.h): the two end faces of every body,
+   * at z = 0 and at z = Geometry/Face length (the face runs along z).
+   */
+  constexpr dealii::types::boundary_id end_face_near = 7006;
+  constexpr dealii::types::boundary_id end_face_far  = 7007;
   ///@}
 
   /** What a boundary id denotes, decoded from its value. */
@@ -133,7 +139,7 @@ namespace FloorBlock::Geometry::Ids
       return BoundaryKind::bedding_base_side;
     if (kind == 6)
       return BoundaryKind::floor_surface;
-    if (id >= base_bottom && id <= face_block_outer_side)
+    if (id >= base_bottom && id <= end_face_far)
       return BoundaryKind::outer;
     return BoundaryKind::unknown;
   }

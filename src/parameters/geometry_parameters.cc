@@ -54,6 +54,17 @@ namespace FloorBlock::Parameters
                       "angle theta). 0 = sharp corners, whose pointwise "
                       "contact stress is singular. Must be below a quarter of "
                       "the smallest block edge. Units: m.");
+    prm.declare_entry("Dimension", "2", dealii::Patterns::Selection("2|3"),
+                      "2: plane strain, per metre of face. 3: the 2D "
+                      "assembly extruded along the face over Face length "
+                      "(issue 16; src/geometry/extruded_assembly.h). So far "
+                      "only `mesh` builds 3D scenes (meshes/<scene>_3d.msh); "
+                      "the commands that solve refuse them. Units: none.");
+    prm.declare_entry("Face length", "4.5",
+                      Double(smallest_length, largest_length),
+                      "Length of the 3D assembly along the face (z), used "
+                      "when Dimension = 3; 4.5 m = 3 b for the default "
+                      "support width. Units: m.");
     prm.leave_subsection();
   }
 
@@ -68,6 +79,8 @@ namespace FloorBlock::Parameters
     face_block_width       = prm.get_double("Face block width");
     base_thickness         = prm.get_double("Base thickness");
     corner_rounding_radius = prm.get_double("Corner rounding radius");
+    dimension              = std::stoul(prm.get("Dimension"));
+    face_length            = prm.get_double("Face length");
     prm.leave_subsection();
 
     // A fillet larger than a quarter edge would consume the straight joint

@@ -76,6 +76,11 @@ namespace FloorBlock::Parameters
       "`run` starts no further level once the wall time of its solves "
       "has passed this or the next level's forecast would pass it. "
       "Units: s.");
+    prm.declare_entry(
+      "Slice size", "0.25", Double(1e-3, 100),
+      "Thickness of the slices a 3D scene (Geometry/Dimension = 3) is "
+      "extruded through along the face: ceil(Face length / Slice size) "
+      "equal slices. Units: m.");
     prm.leave_subsection();
   }
 
@@ -104,6 +109,7 @@ namespace FloorBlock::Parameters
                                    TargetFigure::sigma_max_averaged);
     max_refinement_levels  = prm.get_integer("Maximum refinement levels");
     refinement_time_budget = prm.get_double("Refinement time budget");
+    slice_size             = prm.get_double("Slice size");
     prm.leave_subsection();
 
     if (corner_size > far_size)

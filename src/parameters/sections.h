@@ -30,6 +30,8 @@ namespace FloorBlock::Parameters
     double       face_block_width;        ///< m
     double       base_thickness;          ///< m, the bedding layer below the blocks
     double       corner_rounding_radius;  ///< m, 0 = sharp corners
+    unsigned int dimension;               ///< 2 (plane strain) or 3 (extruded)
+    double       face_length;             ///< m, along the face (z), 3D only
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -171,6 +173,8 @@ namespace FloorBlock::Parameters
     unsigned int max_refinement_levels;
     /** Wall time (s) after which no further level is started. */
     double refinement_time_budget;
+    /** Slice thickness (m) along the face of a 3D scene. */
+    double slice_size;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

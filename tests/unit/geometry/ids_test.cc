@@ -47,7 +47,9 @@ namespace FloorBlock::Geometry::Ids
     EXPECT_EQ(boundary_kind(free_side_of_block_1), BoundaryKind::outer);
     EXPECT_EQ(boundary_kind(0), BoundaryKind::unknown);
     EXPECT_EQ(boundary_kind(2000), BoundaryKind::unknown);
-    EXPECT_EQ(boundary_kind(7006), BoundaryKind::unknown);
+    EXPECT_EQ(boundary_kind(end_face_near), BoundaryKind::outer);
+    EXPECT_EQ(boundary_kind(end_face_far), BoundaryKind::outer);
+    EXPECT_EQ(boundary_kind(7008), BoundaryKind::unknown);
     EXPECT_TRUE(is_joint_side(bedding_base_side(0)));
     EXPECT_FALSE(is_joint_side(floor_surface(1)));
     EXPECT_FALSE(is_joint_side(base_bottom));
@@ -71,9 +73,10 @@ namespace FloorBlock::Geometry::Ids
           }
       }
     // Materials: n blocks + face + base. Boundaries: 2n vertical joint
-    // sides, 2(n+1) bedding sides, n+1 floor surfaces, 5 outer.
+    // sides, 2(n+1) bedding sides, n+1 floor surfaces, 5 outer and the 2
+    // end faces of 3D scenes.
     const unsigned int n = max_n_blocks;
-    EXPECT_EQ(n_rows, (n + 2) + 2 * n + 2 * (n + 1) + (n + 1) + 5);
+    EXPECT_EQ(n_rows, (n + 2) + 2 * n + 2 * (n + 1) + (n + 1) + 5 + 2);
     // Material and boundary ids live in different spaces, so only the
     // boundary ids have to be distinct from each other: 1..101 < 2000.
     EXPECT_EQ(seen.size(), n_rows);
