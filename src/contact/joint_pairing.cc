@@ -386,4 +386,19 @@ namespace FloorBlock::Contact
                         const dealii::Tensor<1, 2> &,
                         const double,
                         const unsigned int);
+  // 3D (issue 16): coincident nodes only; the mirrored fillet pairs of
+  // step 2 are 2D, and a 3D joint with unpaired nodes is refused.
+  template std::vector<ContactNode<3>>
+  pair_joint_nodes(const Fem::FeSpace<3> &,
+                   const dealii::types::boundary_id,
+                   const dealii::types::boundary_id,
+                   const unsigned int,
+                   PairingSummary *);
+  template std::vector<ContactNode<3>>
+  pair_nodes_with_plane(const Fem::FeSpace<3> &,
+                        const dealii::types::boundary_id,
+                        const dealii::Point<3> &,
+                        const dealii::Tensor<1, 3> &,
+                        const double,
+                        const unsigned int);
 } // namespace FloorBlock::Contact

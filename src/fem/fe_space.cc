@@ -106,4 +106,5 @@ namespace FloorBlock::Fem
   }
 
   template class FeSpace<2>;
+  template class FeSpace<3>;
 } // namespace FloorBlock::Fem
