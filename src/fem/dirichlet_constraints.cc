@@ -79,4 +79,9 @@ namespace FloorBlock::Fem
                    const std::vector<DirichletCondition<2>> &,
                    const bool,
                    dealii::IndexSet &);
+  template dealii::AffineConstraints<double>
+  make_constraints(const FeSpace<3> &,
+                   const std::vector<DirichletCondition<3>> &,
+                   const bool,
+                   dealii::IndexSet &);
 } // namespace FloorBlock::Fem

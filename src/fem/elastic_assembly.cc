@@ -186,4 +186,10 @@ namespace FloorBlock::Fem
                           const dealii::TrilinosWrappers::MPI::Vector &,
                           const dealii::AffineConstraints<double> &,
                           const ElasticAssemblyTargets<2> &);
+  template void
+  assemble_elastic_system(const FeSpace<3> &,
+                          const ElasticModel<3> &,
+                          const dealii::TrilinosWrappers::MPI::Vector &,
+                          const dealii::AffineConstraints<double> &,
+                          const ElasticAssemblyTargets<3> &);
 } // namespace FloorBlock::Fem

@@ -35,4 +35,9 @@ namespace FloorBlock::Fem
                 const dealii::AffineConstraints<double> &,
                 const std::vector<std::vector<dealii::types::global_dof_index>> &,
                 dealii::TrilinosWrappers::SparsityPattern &);
+  template void
+  make_sparsity(const FeSpace<3> &,
+                const dealii::AffineConstraints<double> &,
+                const std::vector<std::vector<dealii::types::global_dof_index>> &,
+                dealii::TrilinosWrappers::SparsityPattern &);
 } // namespace FloorBlock::Fem
