@@ -56,25 +56,68 @@ namespace FloorBlock::Pipeline
                              const bool                  write_vtu,
                              const SolveExtras          &extras)
   {
-    Geometry::MeshStatistics mesh;
-    refinement_done = {};
-    requests_used   = level == 0 ? 0 : requests.size();
     if (level == 0)
-      mesh = mesh_scene(scene, folder, {}, triangulation);
-    else
       {
-        // A zone end asks for a quarter of its segment (zone_end_refinement
-        // = 4: two halvings); one more sweep lets the 2:1 grading follow.
-        constexpr unsigned int max_passes = 3;
-        dealii::Timer          timer;
-        Geometry::attach_boundary_manifolds(description, triangulation);
-        refinement_done = Convergence::refine_matched(
-          triangulation, joints, requests, Convergence::touching_cells_only,
-          kelly, coarsen_fraction, max_passes);
-        Geometry::detach_boundary_manifolds(triangulation);
-        write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
-        mesh.wall_time = timer.wall_time();
+        refinement_done = {};
+        requests_used   = 0;
+        const Geometry::MeshStatistics mesh =
+          mesh_scene(scene, folder, {}, triangulation);
+        return solve_level(mesh, folder, write_vtu, extras);
       }
+    // A zone end asks for a quarter of its segment (zone_end_refinement
+    // = 4: two halvings); one more sweep lets the 2:1 grading follow.
+    constexpr unsigned int max_passes = 3;
+    const std::vector<Geometry::LocalSize> own_requests = requests;
+    return refine_and_solve(own_requests, Convergence::touching_cells_only,
+                            coarsen_fraction, max_passes, folder, write_vtu,
+                            extras);
+  }
+
+  FemOutcome
+  AdaptiveLevels::solve_refined_toward(
+    const std::vector<Geometry::LocalSize> &toward,
+    const double                            growth_rate,
+    const Output::ResultFolder             &folder,
+    const bool                              write_vtu,
+    const SolveExtras                      &extras)
+  {
+    Assert(level > 0, dealii::ExcMessage("solve level 0 first"));
+    // Each sweep halves a cell once: enough sweeps to go from the coarsest
+    // cell to the smallest request.
+    constexpr unsigned int max_passes = 40;
+    return refine_and_solve(toward, growth_rate, 0., max_passes, folder,
+                            write_vtu, extras);
+  }
+
+  FemOutcome
+  AdaptiveLevels::refine_and_solve(
+    const std::vector<Geometry::LocalSize> &with,
+    const double                            growth_rate,
+    const double                            coarsening,
+    const unsigned int                      max_passes,
+    const Output::ResultFolder             &folder,
+    const bool                              write_vtu,
+    const SolveExtras                      &extras)
+  {
+    requests_used = with.size();
+    dealii::Timer            timer;
+    Geometry::MeshStatistics mesh;
+    Geometry::attach_boundary_manifolds(description, triangulation);
+    refinement_done = Convergence::refine_matched(
+      triangulation, joints, with, growth_rate, kelly, coarsening, max_passes);
+    Geometry::detach_boundary_manifolds(triangulation);
+    std::filesystem::create_directories(folder.path_of(""));
+    write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
+    mesh.wall_time = timer.wall_time();
+    return solve_level(mesh, folder, write_vtu, extras);
+  }
+
+  FemOutcome
+  AdaptiveLevels::solve_level(const Geometry::MeshStatistics &mesh,
+                              const Output::ResultFolder     &folder,
+                              const bool                      write_vtu,
+                              const SolveExtras              &extras)
+  {
     ++level;
     requests.clear();
     indicator_time = 0.;

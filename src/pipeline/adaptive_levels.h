@@ -59,6 +59,22 @@ namespace FloorBlock::Pipeline
                const SolveExtras           &extras = {});
 
     /**
+     * @brief Refines the last level's mesh toward @p toward (points and
+     * the cell sizes asked there; cells farther away may grow by
+     * @p growth_rate per unit of distance, the 2:1 rule of hanging nodes
+     * grading the rest), both sides of every joint alike, no coarsening,
+     * and solves it as the next level: a zoom on given points, e.g. a
+     * contact corner, below the Gmsh mesher's smallest size. Pre-condition:
+     * solve_next() was called.
+     */
+    FemOutcome
+    solve_refined_toward(const std::vector<Geometry::LocalSize> &toward,
+                         double                                  growth_rate,
+                         const Output::ResultFolder             &folder,
+                         bool                                    write_vtu,
+                         const SolveExtras                      &extras = {});
+
+    /**
      * @brief Solves a copy of the last level's mesh with every cell halved
      * (new boundary vertices on the scene's curves) into @p folder,
      * without VTU: the nested h/2 refinement that run's error estimate
@@ -89,6 +105,23 @@ namespace FloorBlock::Pipeline
     last_indicator_time() const;
 
   private:
+    /** Refines with @p with (refine_matched()) and solves the level. */
+    FemOutcome
+    refine_and_solve(const std::vector<Geometry::LocalSize> &with,
+                     double                                  growth_rate,
+                     double                                  coarsening,
+                     unsigned int                            max_passes,
+                     const Output::ResultFolder             &folder,
+                     bool                                    write_vtu,
+                     const SolveExtras                      &extras);
+
+    /** Solves the current mesh as the next level and keeps its requests. */
+    FemOutcome
+    solve_level(const Geometry::MeshStatistics &mesh,
+                const Output::ResultFolder     &folder,
+                bool                            write_vtu,
+                const SolveExtras              &extras);
+
     const Parameters::ScenarioParameters         scene;
     const Convergence::RefinementSettings        refinement;
     const double                                 coarsen_fraction;

@@ -188,3 +188,79 @@ namespace FloorBlock::Convergence
       }
   }
 } // namespace FloorBlock::Convergence
+
+#include <geometry/assembly_mesher.h>
+#include <geometry/body_outline.h>
+#include <geometry/ids.h>
+#include <geometry/refinement_manifolds.h>
+#include <geometry/triangulation_reader.h>
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace FloorBlock::Convergence
+{
+  // The facing top fillets of a vertical joint leave the joint tangentially
+  // and mirror each other across it. Refined toward the fillets again and
+  // again, both must keep the same nodes, so that every fillet node keeps
+  // its mirrored partner (Contact::pair_joint_nodes); until 2026-11-25 the
+  // first fillet faces counted as coincident, tilted the joint line and
+  // lost every mirror pair from the third refinement on (25 against 26
+  // fillet nodes on a 1 cm fillet), leaving the fillets free.
+  TEST(MatchedRefinement, FacingFilletsStayMirrorImagesUnderLocalRefinement)
+  {
+    Geometry::AssemblyDescription description;
+    description.n_blocks               = 2;
+    description.corner_rounding_radius = 0.01;
+    description.mesh_corner_size       = 0.01;
+    description.bedding_shape          = Geometry::BeddingShape::planar; // level floor: mirror images
+    const auto folder = std::filesystem::temp_directory_path() /
+                        ("floorblock_fillet_refinement_" +
+                         std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    Geometry::write_gmsh_mesh(description, (folder / "mesh.msh").string());
+    dealii::Triangulation<2> mesh;
+    Geometry::read_triangulation((folder / "mesh.msh").string(), mesh);
+    std::filesystem::remove_all(folder);
+
+    const unsigned int              face_joint = description.n_blocks;
+    const std::vector<JointSides>   joints = {
+      {Geometry::Ids::vertical_joint_free_side(face_joint),
+       Geometry::Ids::vertical_joint_face_side(face_joint)}};
+    // Points along both fillets of the face joint's top.
+    const Geometry::AssemblyOutline outline = Geometry::build_outline(description);
+    std::vector<Geometry::Point2>   fillet_points;
+    for (const auto &pair : outline.fillet_pairs)
+      for (const auto &ref : {pair.master, pair.slave})
+        {
+          const auto &arc = outline.bodies[ref.body].segments[ref.segment];
+          fillet_points.push_back(arc.start);
+          fillet_points.push_back(arc.end);
+          fillet_points.push_back({0.5 * (arc.start.x + arc.end.x),
+                                   0.5 * (arc.start.y + arc.end.y)});
+        }
+    ASSERT_FALSE(fillet_points.empty());
+
+    double       size          = 0.01;
+    unsigned int last_mirrored = 0;
+    for (unsigned int level = 1; level <= 6; ++level)
+      {
+        size /= 2.;
+        std::vector<Geometry::LocalSize> requests;
+        for (const auto &point : fillet_points)
+          requests.push_back({point, size});
+        Geometry::attach_boundary_manifolds(description, mesh);
+        refine_matched(mesh, joints, requests, 1.5, dealii::Vector<float>(), 0.,
+                       40);
+        Geometry::detach_boundary_manifolds(mesh);
+
+        const Fem::FeSpace<2>   space(mesh, 1);
+        Contact::PairingSummary summary;
+        Contact::pair_joint_nodes(space, joints[0].side_a, joints[0].side_b, 0,
+                                  &summary);
+        EXPECT_EQ(summary.n_free_a + summary.n_free_b, 0u) << "level " << level;
+        EXPECT_GT(summary.n_mirrored, last_mirrored) << "level " << level;
+        last_mirrored = summary.n_mirrored;
+      }
+  }
+} // namespace FloorBlock::Convergence
