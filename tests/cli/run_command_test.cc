@@ -1,3 +1,4 @@
+#include "estimate_checks.h"
 #include "process.h"
 
 #include <gtest/gtest.h>
@@ -119,18 +120,11 @@ TEST(RunCommand, DefaultSceneErrorEstimatesBracketTheFinestLevel)
   const json summary = read_json(folder + "/summary.json");
   const json &face =
     summary["fem_error_estimate"]["joints"]["vertical 6"];
-  const std::pair<const char *, double> finest[] = {
-    {"normal_force_N_per_m", 2.728901898e+06},
-    {"contact_length_m", 3.477503582e-01},
-    {"sigma_max_Pa", 1.587684071e+07},
-    {"sigma_max_averaged_Pa", 1.454455876e+07}};
-  for (const auto &[figure, reference] : finest)
-    {
-      const double value = face[figure]["value"].get<double>();
-      const double error = face[figure]["absolute_error"].get<double>();
-      EXPECT_LE(std::abs(value - reference), error)
-        << figure << ": value " << value << ", estimate " << error;
-    }
+  expect_estimates_bracket(face,
+                           {{"normal_force_N_per_m", 2.728901898e+06},
+                            {"contact_length_m", 3.477503582e-01},
+                            {"sigma_max_Pa", 1.587684071e+07},
+                            {"sigma_max_averaged_Pa", 1.454455876e+07}});
   // Issue 14: the default mesh (sized from the scene, Mesh/Cells per
   // contact length) gives the face contact length within 1 % of the
   // converged value. Measured 347.07 mm: 0.2 % short of the reference
@@ -240,18 +234,6 @@ TEST(RunCommand, AccuracyLoopThatRunsOutReportsTheLastCheckedLevel)
   EXPECT_EQ(read_json(folder + "/refined/level_3/fem.json")["joints"],
             fem["joints"]);
 
-  // Converged face joint: `converge --mode uniform --levels 5` on this
-  // scene, level 4 (226k DoFs): 684.17 mm, 3722.53 kN/m (levels 2-4:
-  // 683.65, 683.84, 684.17 mm).
-  const json &face = estimate["joints"]["vertical 3"];
-  const std::pair<const char *, double> converged[] = {
-    {"normal_force_N_per_m", 3.722527599e+06},
-    {"contact_length_m", 6.841650920e-01}};
-  for (const auto &[figure, reference] : converged)
-    {
-      const double value = face[figure]["value"].get<double>();
-      const double error = face[figure]["absolute_error"].get<double>();
-      EXPECT_LE(std::abs(value - reference), error)
-        << figure << ": value " << value << ", estimate " << error;
-    }
+  expect_estimates_bracket(estimate["joints"]["vertical 3"],
+                           three_blocks_converged_face);
 }
