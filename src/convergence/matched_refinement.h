@@ -22,13 +22,13 @@ namespace FloorBlock::Convergence
   using ActiveCell = dealii::Triangulation<2>::active_cell_iterator;
 
   /**
-   * @brief Active cells that face each other across a joint: a face on
-   * side A and a face on side B at the same position along the joint (the
-   * projection of the face centre on the joint's mean direction) and of the
-   * same length. These are the coincident faces of the common part and the
-   * mirror-image faces of facing top fillets, i.e. every face whose nodes
-   * Contact::pair_joint_nodes pairs. A cell with faces on two joints appears
-   * in two pairs.
+   * @brief Active cells that face each other across a joint: first the
+   * coincident faces of the common part (centres equal to round-off, 1e-6
+   * of a face), then, beyond it, the mirror images across the line through
+   * the common part (centres within a quarter of a face once reflected,
+   * lengths within a tenth): the facing top fillets. These are every face
+   * whose nodes Contact::pair_joint_nodes pairs. A cell with faces on two
+   * joints appears in two pairs.
    */
   std::vector<std::pair<ActiveCell, ActiveCell>>
   facing_joint_cells(const dealii::Triangulation<2> &triangulation,
