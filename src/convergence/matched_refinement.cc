@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace FloorBlock::Convergence
@@ -243,27 +244,49 @@ namespace FloorBlock::Convergence
         const auto side_b = faces_with_id(triangulation, joint.side_b);
         if (side_a.empty() || side_b.empty())
           continue;
-        std::vector<FaceShape> shapes_b;
+        // Side B's faces sorted by their position along the joint: a match
+        // lies within its tolerance in position too (a projection moves no
+        // more than the point), so each search scans a window, not the side.
+        const dealii::Tensor<1, 2> along_joint = mean_direction(side_a);
+        const dealii::Point<2>     start       = shape_of(side_a.front()).centre;
+        std::vector<FaceShape>     shapes_b;
         for (const auto &face : side_b)
           shapes_b.push_back(shape_of(face));
-        std::vector<bool>         taken_b(side_b.size(), false);
+        std::vector<std::pair<double, std::size_t>> sorted_b;
+        for (std::size_t b = 0; b < side_b.size(); ++b)
+          sorted_b.emplace_back((shapes_b[b].centre - start) * along_joint, b);
+        std::sort(sorted_b.begin(), sorted_b.end());
+        std::vector<bool> taken_b(side_b.size(), false);
+        // The untaken side-B face that is (the reflection of) @p centre.
+        const auto find_b = [&](const dealii::Point<2> &centre,
+                                const double            length,
+                                const double            fraction) {
+          const double position  = (centre - start) * along_joint;
+          const double tolerance = fraction * length;
+          for (auto entry = std::lower_bound(
+                 sorted_b.begin(), sorted_b.end(),
+                 std::make_pair(position - tolerance, std::size_t(0)));
+               entry != sorted_b.end() && entry->first <= position + tolerance;
+               ++entry)
+            if (!taken_b[entry->second] &&
+                same_face(centre, length, shapes_b[entry->second], fraction))
+              return std::optional<std::size_t>(entry->second);
+          return std::optional<std::size_t>();
+        };
         std::vector<BoundaryFace> common_a;
         std::vector<std::size_t>  beyond_a;
         // 1. Coincident faces: the common part of the joint.
         for (std::size_t a = 0; a < side_a.size(); ++a)
           {
             const FaceShape shape = shape_of(side_a[a]);
-            bool            found = false;
-            for (std::size_t b = 0; b < side_b.size() && !found; ++b)
-              if (!taken_b[b] && same_face(shape.centre, shape.length,
-                                           shapes_b[b], coincident_fraction))
-                {
-                  pairs.emplace_back(side_a[a].cell, side_b[b].cell);
-                  taken_b[b] = true;
-                  found      = true;
-                  common_a.push_back(side_a[a]);
-                }
-            if (!found)
+            if (const auto b =
+                  find_b(shape.centre, shape.length, coincident_fraction))
+              {
+                pairs.emplace_back(side_a[a].cell, side_b[*b].cell);
+                taken_b[*b] = true;
+                common_a.push_back(side_a[a]);
+              }
+            else
               beyond_a.push_back(a);
           }
         if (common_a.empty() || beyond_a.empty())
@@ -283,14 +306,11 @@ namespace FloorBlock::Convergence
             const FaceShape        shape = shape_of(side_a[a]);
             const dealii::Point<2> mirror =
               shape.centre - 2. * ((shape.centre - origin) * normal) * normal;
-            for (std::size_t b = 0; b < side_b.size(); ++b)
-              if (!taken_b[b] && same_face(mirror, shape.length, shapes_b[b],
-                                           mirrored_fraction))
-                {
-                  pairs.emplace_back(side_a[a].cell, side_b[b].cell);
-                  taken_b[b] = true;
-                  break;
-                }
+            if (const auto b = find_b(mirror, shape.length, mirrored_fraction))
+              {
+                pairs.emplace_back(side_a[a].cell, side_b[*b].cell);
+                taken_b[*b] = true;
+              }
           }
       }
     return pairs;

@@ -1,6 +1,7 @@
 #include <pipeline/accuracy_loop.h>
 #include <pipeline/adaptive_levels.h>
 #include <pipeline/error_estimate.h>
+#include <convergence/ladder_budget.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/timer.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <stdexcept>
 
 namespace FloorBlock::Pipeline
 {
@@ -19,21 +21,30 @@ namespace FloorBlock::Pipeline
   {
     using Parameters::TargetFigure;
 
-    Output::FigureError Output::JointErrors::*
-    figure_error(const TargetFigure figure)
+    /** A Mesh/Target figures entry: its fem.json key and its estimate. */
+    struct TargetField
     {
-      switch (figure)
-        {
-          case TargetFigure::normal_force:
-            return &Output::JointErrors::normal_force;
-          case TargetFigure::contact_length:
-            return &Output::JointErrors::contact_length;
-          case TargetFigure::sigma_max:
-            return &Output::JointErrors::sigma_max;
-          case TargetFigure::sigma_max_averaged:
-          default:
-            return &Output::JointErrors::sigma_max_averaged;
-        }
+      TargetFigure                              figure;
+      const char                               *key;
+      Output::FigureError Output::JointErrors::*error;
+    };
+
+    constexpr TargetField target_fields[] = {
+      {TargetFigure::normal_force, "normal_force_N_per_m",
+       &Output::JointErrors::normal_force},
+      {TargetFigure::contact_length, "contact_length_m",
+       &Output::JointErrors::contact_length},
+      {TargetFigure::sigma_max, "sigma_max_Pa", &Output::JointErrors::sigma_max},
+      {TargetFigure::sigma_max_averaged, "sigma_max_averaged_Pa",
+       &Output::JointErrors::sigma_max_averaged}};
+
+    const TargetField &
+    field_of(const TargetFigure figure)
+    {
+      for (const TargetField &field : target_fields)
+        if (field.figure == figure)
+          return field;
+      throw std::logic_error("unknown target figure");
     }
 
     std::string
@@ -66,11 +77,12 @@ namespace FloorBlock::Pipeline
     }
 
     /**
-     * Wall time of a check (every cell halved: 4 times the DoFs) per unit
-     * of the level's own: 4^1.3, the growth of the contact solve's time
-     * with its DoFs (Convergence::first_step_time_exponent).
+     * Wall time of a check (every cell halved) per unit of the level's
+     * own: the first step of a uniform ladder (ladder_budget.h).
      */
-    const double check_time_factor = std::pow(4., 1.3);
+    const double check_time_factor =
+      std::pow(Convergence::first_step_dof_growth,
+               Convergence::first_step_time_exponent);
 
     /**
      * The next adaptive level's wall time: the last step's growth repeated;
@@ -123,18 +135,7 @@ namespace FloorBlock::Pipeline
   std::string
   target_figure_key(const TargetFigure figure)
   {
-    switch (figure)
-      {
-        case TargetFigure::normal_force:
-          return "normal_force_N_per_m";
-        case TargetFigure::contact_length:
-          return "contact_length_m";
-        case TargetFigure::sigma_max:
-          return "sigma_max_Pa";
-        case TargetFigure::sigma_max_averaged:
-        default:
-          return "sigma_max_averaged_Pa";
-      }
+    return field_of(figure).key;
   }
 
   std::optional<double>
@@ -148,7 +149,7 @@ namespace FloorBlock::Pipeline
     double                     worst  = 0.;
     for (const TargetFigure figure : figures)
       {
-        const Output::FigureError &error = errors.*figure_error(figure);
+        const Output::FigureError &error = errors.*field_of(figure).error;
         const double               relative =
           error.relative_error ? *error.relative_error :
           error.absolute_error == 0. ?

@@ -160,12 +160,6 @@ namespace FloorBlock::Pipeline
     return solve_meshed_scene(scene, halved, mesh, folder, false, {});
   }
 
-  unsigned int
-  AdaptiveLevels::next_level() const
-  {
-    return level;
-  }
-
   bool
   AdaptiveLevels::can_refine() const
   {

@@ -84,10 +84,6 @@ namespace FloorBlock::Pipeline
     FemOutcome
     solve_halved(const Output::ResultFolder &folder) const;
 
-    /** The level solve_next() solves next (0 before the first call). */
-    unsigned int
-    next_level() const;
-
     /** Whether the last level left size requests to refine from. */
     bool
     can_refine() const;

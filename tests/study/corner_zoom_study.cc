@@ -21,9 +21,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <algorithm>
 #include <cmath>
-#include <map>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -130,24 +128,6 @@ main(int argc, char **argv)
             std::printf("      pairing: %u coincident, %u mirrored, %u + %u free\n",
                         summary.n_coincident, summary.n_mirrored,
                         summary.n_free_a, summary.n_free_b);
-            if (std::getenv("ZOOM_DEBUG") && summary.n_mirrored == 0)
-              for (const auto id : {Geometry::Ids::vertical_joint_free_side(n),
-                                    Geometry::Ids::vertical_joint_face_side(n)})
-                {
-                  std::map<unsigned int, dealii::Point<2>> vertices;
-                  for (const auto &cell : solver.space().dof_handler().get_triangulation().active_cell_iterators())
-                    for (const auto f : cell->face_indices())
-                      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
-                        for (unsigned int v = 0; v < 2; ++v)
-                          if (cell->face(f)->vertex(v)[1] > 1.9899)
-                            vertices[cell->face(f)->vertex_index(v)] = cell->face(f)->vertex(v);
-                  std::vector<std::pair<double,double>> sorted;
-                  for (const auto &[i, x] : vertices) sorted.push_back({x[1], x[0]});
-                  std::sort(sorted.begin(), sorted.end());
-                  std::printf("side %u:", id);
-                  for (const auto &[y, x] : sorted) std::printf(" (%.6f,%.6f)", x, y);
-                  std::printf("\n");
-                }
           };
           outcome = levels.solve_refined_toward(toward, 1.5, folder, false, extras);
         }
