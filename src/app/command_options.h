@@ -70,4 +70,6 @@ namespace FloorBlock::App
   run_command(const CommandOptions &options);
   int
   converge_command(const CommandOptions &options);
+  int
+  corner_command(const CommandOptions &options);
 } // namespace FloorBlock::App

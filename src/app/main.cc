@@ -20,8 +20,9 @@ namespace
   using Command = std::function<int(const App::CommandOptions &)>;
 
   /// Subcommands that run the finite-element engine.
-  const std::set<std::string> needs_mpi = {"mesh",   "solve",    "run",
-                                           "verify", "converge", "sweep"};
+  const std::set<std::string> needs_mpi = {"mesh",     "solve", "run",
+                                           "verify",   "converge", "sweep",
+                                           "corner"};
 
   /** Adds one subcommand with the options every subcommand shares. */
   CLI::App *
@@ -95,7 +96,11 @@ namespace
         {"run", {"The main job: mesh, solve, compare", App::run_command}},
         {"converge",
          {"Refinement study: error against cost, uniform and adaptive meshes",
-          App::converge_command}}};
+          App::converge_command}},
+        {"corner",
+         {"Corner-stress field at a joint's floor-level corner: state, "
+          "asymptotic exponent and intensity, rounding study",
+          App::corner_command}}};
     return commands;
   }
 

@@ -23,6 +23,7 @@ namespace FloorBlock::Parameters
     SolverParameters::declare_parameters(prm);
     VerifyParameters::declare_parameters(prm);
     ModelParameters::declare_parameters(prm);
+    CornerParameters::declare_parameters(prm);
   }
 
   void
@@ -37,6 +38,7 @@ namespace FloorBlock::Parameters
     solver.parse_parameters(prm);
     verify.parse_parameters(prm);
     model.parse_parameters(prm);
+    corner.parse_parameters(prm, geometry.n_blocks);
 
     // Fillet pairs start with a gap; the joint law treats a pair as closed
     // while kn * gap stays below the tensile strength, so any tensile

@@ -26,6 +26,7 @@ namespace FloorBlock::Parameters
     SolverParameters   solver;
     VerifyParameters   verify;
     ModelParameters    model;
+    CornerParameters   corner;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).
     std::string scene_name;

@@ -276,4 +276,24 @@ namespace FloorBlock::Parameters
            const JointParameters &  joints,
            const LoadingParameters &loading);
   };
+
+  /** Subsection "Corner": the `corner` command's analysis (issue 15). */
+  struct CornerParameters
+  {
+    /** Vertical joint whose floor-level corner is analysed (1..n). */
+    unsigned int joint;
+    /** Most zoom levels after the scene's mesh. */
+    unsigned int max_zoom_levels;
+    /** Relative change between zoom levels at which a figure counts as converged. */
+    double converged_change;
+    /** Corner rounding radii of the rounding study (m); empty: no study. */
+    std::vector<double> rounding_radii;
+    /** Wall time of the whole command (s). */
+    double time_budget;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm, unsigned int n_blocks);
+  };
 } // namespace FloorBlock::Parameters

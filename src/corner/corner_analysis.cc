@@ -1,0 +1,162 @@
+#include <corner/corner_analysis.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace FloorBlock::Corner
+{
+  namespace
+  {
+    double
+    relative_change(const double now, const double before)
+    {
+      return before != 0. ? std::abs(now / before - 1.) : 1.;
+    }
+
+    /** The fit range of @p fine against the level before. */
+    DistanceRange
+    fit_range(const CornerProfile &fine,
+              const CornerProfile &coarse,
+              const double         tolerance)
+    {
+      return converged_range(fine.samples, coarse.samples, tolerance,
+                             fit_from_spacings * fine.edge_spacing,
+                             fit_to_peak_fraction * fine.peak_distance);
+    }
+
+    /**
+     * The length l from the contact's end over which the mean traction
+     * equals @p target: trapezoid integral of the samples, the traction
+     * taken as 0 at the end itself (zones that end between nodes).
+     */
+    double
+    averaging_length_for(const std::vector<Analytic::RadialSample> &samples,
+                         const double                                target)
+    {
+      double integral = 0., d_before = 0., t_before = 0., best = 0.;
+      for (const auto &sample : samples)
+        {
+          integral += 0.5 * (t_before + sample.traction) *
+                      (sample.distance - d_before);
+          d_before = sample.distance;
+          t_before = sample.traction;
+          const double mean = integral / sample.distance;
+          // The mean rises to its largest near the peak and then falls:
+          // the length wanted is where it falls through the target.
+          if (mean >= target)
+            best = sample.distance;
+        }
+      return best;
+    }
+  } // namespace
+
+  CornerAnalysis
+  analyse_corner(const Parameters::ScenarioParameters &scene,
+                 const Output::ResultFolder           &folder,
+                 const std::function<double()>        &seconds_left,
+                 const Progress                       &progress)
+  {
+    CornerAnalysis analysis;
+    analysis.site = floor_corner_site(scene, scene.corner.joint);
+    analysis.materials.rock = {scene.material.shear_modulus,
+                               scene.material.poissons_ratio()};
+    analysis.materials.friction_coefficient =
+      std::tan(scene.joints.vertical_friction_angle);
+    analysis.materials.exact_contact =
+      scene.joints.law == Contact::JointLawKind::rigid;
+    analysis.materials.compliant_length =
+      scene.material.youngs_modulus() / scene.joints.normal_stiffness;
+    const double tolerance = scene.corner.converged_change;
+
+    CornerZoom zoom(scene, analysis.site);
+    unsigned int n_calm_peaks = 0;
+    for (unsigned int level = 0; level <= scene.corner.max_zoom_levels; ++level)
+      {
+        if (level > 0 && !analysis.levels.empty() &&
+            seconds_left() < 2. * analysis.levels.back().wall_time)
+          {
+            analysis.stop_reason = "time budget (Corner/Time budget) spent";
+            break;
+          }
+        const auto record = zoom.next(
+          Output::ResultFolder(folder.path_of("level_" + std::to_string(level))));
+        if (!record)
+          {
+            analysis.stop_reason = fmt::format(
+              "the solve of zoom level {} did not converge (see its fem.json)",
+              level);
+            break;
+          }
+        analysis.levels.push_back(*record);
+        LevelFigures figures;
+        if (level > 0)
+          figures.peak_change =
+            relative_change(record->profile.peak_traction,
+                            analysis.levels[level - 1].profile.peak_traction);
+        analysis.figures.push_back(figures);
+        n_calm_peaks = level > 0 && figures.peak_change <= tolerance ?
+                         n_calm_peaks + 1 :
+                         0;
+
+        analysis.theory = corner_theory(record->profile, analysis.materials);
+        double intensity_change = 1.;
+        if (level > 0 && analysis.theory.covered)
+          {
+            // K1 of this level and the one before over this level's range.
+            const DistanceRange range =
+              fit_range(record->profile, analysis.levels[level - 1].profile,
+                        tolerance);
+            if (range.n_samples > 0)
+              {
+                const auto now = intensities_with_exponents(
+                  samples_within(record->profile.samples, range),
+                  analysis.theory.exponent, analysis.theory.next_exponent);
+                const auto before = intensities_with_exponents(
+                  samples_within(analysis.levels[level - 1].profile.samples,
+                                 range),
+                  analysis.theory.exponent, analysis.theory.next_exponent);
+                intensity_change = relative_change(now.first, before.first);
+                analysis.figures.back().intensity        = now;
+                analysis.figures.back().intensity_change = intensity_change;
+              }
+          }
+        progress(fmt::format(
+          "level {:2d}: {:6d} DoFs, cells {:.2e} m, {}, peak {:.4e} Pa "
+          "(change {:.2e}), K1 change {:.2e}, {:.1f} s",
+          level, record->n_dofs, record->requested_size,
+          to_string(record->profile.kind), record->profile.peak_traction,
+          figures.peak_change, level > 0 ? intensity_change : 0.,
+          record->wall_time));
+        // Without a theory there is no K1: the peak alone decides.
+        if (n_calm_peaks >= 2 &&
+            (!analysis.theory.covered || intensity_change <= tolerance))
+          {
+            analysis.converged   = true;
+            analysis.stop_reason = fmt::format(
+              analysis.theory.covered ?
+                "peak and K1 changed by at most {} between the last levels" :
+                "the peak changed by at most {} twice in a row",
+              tolerance);
+            break;
+          }
+      }
+    if (analysis.stop_reason.empty())
+      analysis.stop_reason = "zoom levels (Corner/Zoom levels) used up";
+
+    const std::size_t n = analysis.levels.size();
+    if (n >= 2 && analysis.theory.covered)
+      analysis.fit = fit_corner(
+        analysis.levels[n - 1].profile.samples,
+        fit_range(analysis.levels[n - 1].profile,
+                  analysis.levels[n - 2].profile, tolerance),
+        analysis.theory);
+    if (n >= 1)
+      {
+        analysis.closed_form_peak = analysis.levels.back().closed_form_peak;
+        analysis.matching_averaging_length = averaging_length_for(
+          analysis.levels.back().profile.samples, analysis.closed_form_peak);
+      }
+    return analysis;
+  }
+} // namespace FloorBlock::Corner

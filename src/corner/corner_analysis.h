@@ -1,0 +1,71 @@
+#pragma once
+
+#include <corner/corner_fit.h>
+#include <corner/corner_theory.h>
+#include <corner/corner_zoom.h>
+#include <output/result_folder.h>
+#include <parameters/scenario_parameters.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace FloorBlock::Corner
+{
+  /** @brief One level's figures as the analysis compares them. */
+  struct LevelFigures
+  {
+    /** K1, K2 over the final fit range, exponents the theory's. */
+    Intensities intensity;
+    /** Relative change of the peak and of K1 from the level before. */
+    double peak_change      = 0.;
+    double intensity_change = 0.;
+  };
+
+  /** @brief Everything `floorblock corner` finds at one corner. */
+  struct CornerAnalysis
+  {
+    CornerSite             site;
+    CornerMaterials        materials;
+    std::vector<ZoomLevel> levels;
+    std::vector<LevelFigures> figures; ///< one per level
+    CornerTheory           theory;   ///< for the last level's state
+    CornerFit              fit;      ///< of the last level's traction
+    /** Whether the peak and K1 met Corner/Converged change. */
+    bool        converged = false;
+    std::string stop_reason;
+    /** Eq. 6.53's sigma_max with the last level's Q and rotation (Pa). */
+    double closed_form_peak = 0.;
+    /**
+     * Length over which the traction nearest the corner, averaged from
+     * the contact's end, equals closed_form_peak (m); 0 if no length does.
+     */
+    double matching_averaging_length = 0.;
+  };
+
+  /** Progress lines (one per level). */
+  using Progress = std::function<void(const std::string &)>;
+
+  /**
+   * @brief Zooms on @p scene's Corner/Joint floor-level corner until the
+   * pointwise peak (twice in a row) and the leading intensity K1 (where
+   * the theory covers the state) change by at most Corner/Converged change
+   * between levels, or the levels or
+   * @p deadline (s of @p clock_start's timer) run out; then fits the last
+   * level's traction near the contact's end (fit_corner) over the
+   * distances where it agrees with the level before within Corner/
+   * Converged change, from 8 node spacings at the end to half the
+   * distance of the peak (the zone's own length scale). Level files go to
+   * @p folder/level_<k>.
+   */
+  CornerAnalysis
+  analyse_corner(const Parameters::ScenarioParameters &scene,
+                 const Output::ResultFolder           &folder,
+                 const std::function<double()>        &seconds_left,
+                 const Progress                       &progress);
+
+  /** Smallest distance fitted, in node spacings at the contact's end. */
+  constexpr double fit_from_spacings = 8.;
+  /** Largest distance fitted, as a fraction of the peak's distance from the end. */
+  constexpr double fit_to_peak_fraction = 0.5;
+} // namespace FloorBlock::Corner

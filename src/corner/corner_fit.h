@@ -1,0 +1,74 @@
+#pragma once
+
+#include <analytic/asymptotic_fit.h>
+#include <corner/corner_theory.h>
+
+#include <vector>
+
+namespace FloorBlock::Corner
+{
+  /**
+   * @brief Distances from the edge over which a refinement level's traction
+   * is mesh-converged: the longest run of consecutive samples of @p fine,
+   * from the edge outwards, whose traction differs from @p coarse's
+   * (interpolated linearly in log t against log d) by at most @p tolerance
+   * relative, among the samples with @p from_at_least <= d <= @p up_to.
+   * from = to = 0 when there is no such run of at least 4 samples.
+   */
+  struct DistanceRange
+  {
+    double       from = 0.; ///< m
+    double       to   = 0.; ///< m
+    unsigned int n_samples = 0;
+  };
+  DistanceRange
+  converged_range(const std::vector<Analytic::RadialSample> &fine,
+                  const std::vector<Analytic::RadialSample> &coarse,
+                  double                                      tolerance,
+                  double                                      from_at_least,
+                  double                                      up_to);
+
+  /** @brief The samples with from <= d <= to. */
+  std::vector<Analytic::RadialSample>
+  samples_within(const std::vector<Analytic::RadialSample> &samples,
+                 const DistanceRange                        &range);
+
+  /**
+   * @brief The intensities of t = K1 d^(lambda1 - 1) + K2 d^(lambda2 - 1)
+   * with both exponents given (the theory's leading and next), linear
+   * least squares in the relative residual (t_fit - t) / t. K1 (Pa
+   * m^(1 - lambda1)) is the leading term's intensity, the figure compared
+   * between refinement levels; fitting the second term keeps it from
+   * absorbing the next one where the range reaches beyond the one-term
+   * field. Zeros with fewer than 2 samples.
+   */
+  struct Intensities
+  {
+    double first  = 0.; ///< K1
+    double second = 0.; ///< K2
+  };
+  Intensities
+  intensities_with_exponents(const std::vector<Analytic::RadialSample> &samples,
+                             double lambda1,
+                             double lambda2);
+
+  /** @brief Every fit of the traction near a corner's edge. */
+  struct CornerFit
+  {
+    DistanceRange range;
+    /** t = K1 d^(lambda1 - 1) + K2 d^(lambda2 - 1), lambda2 = the theory's next. */
+    Analytic::AsymptoticFit two_terms;
+    /** 1 + the slope of log t against log d. */
+    Analytic::AsymptoticFit one_term;
+    /** K1, K2 with both exponents the theory's. */
+    Intensities intensity;
+    /** Distance within which the first term alone describes the two-term field within 10 % (m). */
+    double validity_distance = 0.;
+  };
+
+  /** @brief The fits of @p samples over @p range for @p theory. */
+  CornerFit
+  fit_corner(const std::vector<Analytic::RadialSample> &samples,
+             const DistanceRange                        &range,
+             const CornerTheory                         &theory);
+} // namespace FloorBlock::Corner

@@ -1,0 +1,133 @@
+#include <corner/corner_zoom.h>
+#include <pipeline/closed_form_comparison.h>
+#include <scene/closed_forms.h>
+#include <scene/mesh_refinement.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace FloorBlock::Corner
+{
+  CornerZoom::CornerZoom(const Parameters::ScenarioParameters &scene,
+                         const CornerSite                     &site)
+    : scene(scene)
+    , site(site)
+    , adaptive(scene, Pipeline::bounded_refinement({}, scene), 0.)
+    , corner_size(scene.mesh.corner_size *
+                  std::exp2(-double(Scene::global_refinements(scene))))
+  {}
+
+  const std::vector<ZoomLevel> &
+  CornerZoom::levels() const
+  {
+    return done;
+  }
+
+  std::vector<Geometry::LocalSize>
+  CornerZoom::window(const double size) const
+  {
+    const CornerProfile &last = done.back().profile;
+    const double zone_length =
+      last.samples.empty() ? size : last.samples.back().distance;
+    double from = 0., to = 0.; // "height" (arc towards the top), m
+    if (last.kind == CornerContactKind::edge_in_fillet)
+      {
+        const double reach = std::max(last.edge_beyond_corner, 4. * size);
+        from               = last.corner_arc - reach;
+        to                 = last.edge_arc + reach;
+      }
+    else
+      {
+        const double reach = std::max(0.1 * zone_length, 4. * size);
+        from               = last.edge_arc - reach;
+        to                 = last.edge_arc + reach;
+      }
+
+    // Points every `size` along the polyline of the joint side's nodes.
+    std::vector<Contact::JointNodeSample> nodes = last_joint_profile;
+    std::sort(nodes.begin(), nodes.end(), [](const auto &a, const auto &b) {
+      return a.arc_position < b.arc_position;
+    });
+    const double up =
+      nodes.back().position[1] >= nodes.front().position[1] ? 1. : -1.;
+    std::vector<Geometry::LocalSize> points;
+    for (std::size_t k = 1; k < nodes.size(); ++k)
+      {
+        const double h0 = up * nodes[k - 1].arc_position;
+        const double h1 = up * nodes[k].arc_position;
+        const double lo = std::max(std::min(h0, h1), from);
+        const double hi = std::min(std::max(h0, h1), to);
+        if (lo > hi || h0 == h1)
+          continue;
+        const unsigned int n_points =
+          1 + static_cast<unsigned int>(std::ceil((hi - lo) / size));
+        for (unsigned int i = 0; i <= n_points; ++i)
+          {
+            const double h = lo + (hi - lo) * i / n_points;
+            const double w = (h - h0) / (h1 - h0);
+            const auto  &a = nodes[k - 1].position, &b = nodes[k].position;
+            points.push_back({{a[0] + w * (b[0] - a[0]),
+                               a[1] + w * (b[1] - a[1])},
+                              size});
+          }
+      }
+    return points;
+  }
+
+  std::optional<ZoomLevel>
+  CornerZoom::next(const Output::ResultFolder &folder)
+  {
+    dealii::Timer        clock;
+    ZoomLevel            record;
+    record.level = static_cast<unsigned int>(done.size());
+    Pipeline::FemOutcome outcome;
+    if (done.empty())
+      {
+        record.requested_size = corner_size;
+        outcome               = adaptive.solve_next(folder, false);
+      }
+    else
+      {
+        record.requested_size = corner_size * std::exp2(-double(record.level));
+        outcome = adaptive.solve_refined_toward(window(record.requested_size),
+                                                zoom_growth_rate, folder,
+                                                false);
+      }
+    if (!outcome.converged || outcome.result.increments.empty())
+      return std::nullopt;
+    record.wall_time = clock.wall_time();
+    record.n_dofs    = outcome.result.n_dofs;
+    bool found       = false;
+    for (const auto &joint : outcome.result.increments.back().joints)
+      if (joint.name == site.joint_name)
+        {
+          record.profile                = corner_profile(joint, site);
+          record.normal_force           = joint.normal_force;
+          record.closed_length          = joint.closed_length;
+          record.peak_normal_stress     = joint.peak_normal_stress;
+          record.averaged_peak_stress   = joint.averaged_peak_normal_stress;
+          record.averaging_length       = joint.averaging_length;
+          last_joint_profile            = joint.profile;
+          found                         = true;
+        }
+    if (!found)
+      throw std::logic_error("CornerZoom: no joint '" + site.joint_name +
+                             "' in the solution");
+    for (const auto &joint :
+         Pipeline::compare_with_closed_forms(
+           outcome, Scene::evaluate_closed_forms(scene), scene)
+           .final_joints)
+      if (joint.joint == site.joint)
+        {
+          record.relative_rotation = joint.contact.relative_rotation;
+          record.closed_form_contact_length =
+            joint.contact.closed_form.contact_length;
+          record.closed_form_peak = joint.contact.closed_form.max_stress;
+        }
+    done.push_back(record);
+    return record;
+  }
+} // namespace FloorBlock::Corner

@@ -1,0 +1,39 @@
+#include <corner/rounding_study.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace FloorBlock;
+
+  std::vector<Corner::ZoomLevel>
+  levels_with_peaks(const std::vector<double> &peaks)
+  {
+    std::vector<Corner::ZoomLevel> levels;
+    for (const double peak : peaks)
+      {
+        Corner::ZoomLevel level;
+        level.level                 = levels.size();
+        level.profile.peak_traction = peak;
+        level.wall_time             = 2.;
+        levels.push_back(level);
+      }
+    return levels;
+  }
+} // namespace
+
+TEST(RoundingPoint, ConvergedNeedsTwoSmallChangesInARow)
+{
+  // 3.00 -> 3.09 (3 %), -> 3.10 (0.3 %), -> 3.105 (0.2 %).
+  const auto point = Corner::rounding_point(
+    0.01, levels_with_peaks({3e8, 3.09e8, 3.10e8, 3.105e8}), 0.01);
+  EXPECT_TRUE(point.converged);
+  EXPECT_EQ(point.n_levels, 4u);
+  EXPECT_DOUBLE_EQ(point.peak, 3.105e8);
+  EXPECT_NEAR(point.last_change, 0.005 / 3.10, 1e-12);
+  EXPECT_DOUBLE_EQ(point.wall_time, 8.);
+
+  const auto once = Corner::rounding_point(
+    0.01, levels_with_peaks({3e8, 3.2e8, 3.201e8}), 0.01);
+  EXPECT_FALSE(once.converged);
+}
