@@ -1,5 +1,6 @@
 #include <analytic/asymptotic_fit.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -7,45 +8,88 @@ namespace FloorBlock::Analytic
 {
   namespace
   {
-    /** K1, K2 and the squared relative residual for a given lambda1. */
+    /**
+     * The K's of the terms with exponents @p lambdas (least squares in
+     * the relative residual) and the residual, for a given lambda1 =
+     * lambdas[0]; lambda2 and K2 are the second term's (0 without one).
+     */
     AsymptoticFit
     project(const std::vector<RadialSample> &samples,
-            const double                     lambda1,
-            const double                     lambda2)
+            const std::vector<double>       &lambdas)
     {
-      // Rows a_i = r^(l1-1)/p, b_i = r^(l2-1)/p; solve c1 a + c2 b ~ 1.
-      double saa = 0., sbb = 0., sab = 0., sa = 0., sb = 0.;
+      // Rows a_ij = r_i^(l_j - 1) / p_i; solve sum_j c_j a_ij ~ 1 by the
+      // normal equations (at most 4 terms), Gaussian elimination with
+      // partial pivoting.
+      const std::size_t                n = lambdas.size();
+      std::vector<std::vector<double>> normal(n, std::vector<double>(n + 1, 0.));
       for (const RadialSample &s : samples)
         {
-          const double a = std::pow(s.distance, lambda1 - 1.) / s.traction;
-          const double b = std::pow(s.distance, lambda2 - 1.) / s.traction;
-          saa += a * a;
-          sbb += b * b;
-          sab += a * b;
-          sa += a;
-          sb += b;
+          std::vector<double> row(n);
+          for (std::size_t j = 0; j < n; ++j)
+            row[j] = std::pow(s.distance, lambdas[j] - 1.) / s.traction;
+          for (std::size_t j = 0; j < n; ++j)
+            {
+              for (std::size_t k = 0; k < n; ++k)
+                normal[j][k] += row[j] * row[k];
+              normal[j][n] += row[j];
+            }
         }
       AsymptoticFit fit;
-      fit.lambda1             = lambda1;
-      fit.lambda2             = lambda2;
-      fit.n_samples           = samples.size();
-      const double determinant = saa * sbb - sab * sab;
-      if (!(std::abs(determinant) > 0.))
+      fit.lambda1   = lambdas[0];
+      fit.lambda2   = n > 1 ? lambdas[1] : 0.;
+      fit.n_samples = samples.size();
+      double largest_diagonal = 0.;
+      for (std::size_t j = 0; j < n; ++j)
+        largest_diagonal = std::max(largest_diagonal, std::abs(normal[j][j]));
+      for (std::size_t column = 0; column < n; ++column)
         {
-          fit.rms_relative_residual = std::numeric_limits<double>::infinity();
-          return fit;
+          std::size_t pivot = column;
+          for (std::size_t row = column + 1; row < n; ++row)
+            if (std::abs(normal[row][column]) > std::abs(normal[pivot][column]))
+              pivot = row;
+          if (!(std::abs(normal[pivot][column]) > 1e-14 * largest_diagonal))
+            {
+              fit.rms_relative_residual = std::numeric_limits<double>::infinity();
+              return fit;
+            }
+          std::swap(normal[pivot], normal[column]);
+          for (std::size_t row = column + 1; row < n; ++row)
+            {
+              const double factor = normal[row][column] / normal[column][column];
+              for (std::size_t k = column; k <= n; ++k)
+                normal[row][k] -= factor * normal[column][k];
+            }
         }
-      fit.k1 = (sa * sbb - sb * sab) / determinant;
-      fit.k2 = (saa * sb - sab * sa) / determinant;
+      std::vector<double> k(n);
+      for (std::size_t j = n; j-- > 0;)
+        {
+          double value = normal[j][n];
+          for (std::size_t m = j + 1; m < n; ++m)
+            value -= normal[j][m] * k[m];
+          k[j] = value / normal[j][j];
+        }
+      fit.k1 = k[0];
+      fit.k2 = n > 1 ? k[1] : 0.;
       double squares = 0.;
       for (const RadialSample &s : samples)
         {
-          const double model = fit.k1 * std::pow(s.distance, lambda1 - 1.) +
-                               fit.k2 * std::pow(s.distance, lambda2 - 1.);
+          double model = 0.;
+          for (std::size_t j = 0; j < n; ++j)
+            model += k[j] * std::pow(s.distance, lambdas[j] - 1.);
           squares += std::pow((model - s.traction) / s.traction, 2);
         }
       fit.rms_relative_residual = std::sqrt(squares / samples.size());
       return fit;
+    }
+
+    AsymptoticFit
+    project(const std::vector<RadialSample> &samples,
+            const double                     lambda1,
+            const std::vector<double>       &further)
+    {
+      std::vector<double> lambdas{lambda1};
+      lambdas.insert(lambdas.end(), further.begin(), further.end());
+      return project(samples, lambdas);
     }
 
     std::vector<RadialSample>
@@ -94,22 +138,23 @@ namespace FloorBlock::Analytic
   }
 
   AsymptoticFit
-  two_term_fit(const std::vector<RadialSample> &all_samples,
-               const double                     lambda2)
+  expansion_fit(const std::vector<RadialSample> &all_samples,
+                const std::vector<double>       &further,
+                const double                     scan_from,
+                const double                     scan_to)
   {
     const std::vector<RadialSample> samples = positive(all_samples);
-    if (samples.size() < 3 || !(lambda2 > 0.02))
+    if (samples.size() < further.size() + 2 || !(scan_to > scan_from))
       {
         AsymptoticFit fit;
         fit.n_samples = samples.size();
         return fit;
       }
     constexpr double step = 1e-3;
-    AsymptoticFit    best = project(samples, 0.01, lambda2);
-    for (double lambda1 = 0.01 + step; lambda1 < lambda2 - 0.01;
-         lambda1 += step)
+    AsymptoticFit    best = project(samples, scan_from, further);
+    for (double lambda1 = scan_from + step; lambda1 < scan_to; lambda1 += step)
       {
-        const AsymptoticFit trial = project(samples, lambda1, lambda2);
+        const AsymptoticFit trial = project(samples, lambda1, further);
         if (trial.rms_relative_residual < best.rms_relative_residual)
           best = trial;
       }
@@ -120,17 +165,44 @@ namespace FloorBlock::Analytic
       {
         const double left  = high - ratio * (high - low);
         const double right = low + ratio * (high - low);
-        if (project(samples, left, lambda2).rms_relative_residual <
-            project(samples, right, lambda2).rms_relative_residual)
+        if (project(samples, left, further).rms_relative_residual <
+            project(samples, right, further).rms_relative_residual)
           high = right;
         else
           low = left;
       }
     const AsymptoticFit refined =
-      project(samples, 0.5 * (low + high), lambda2);
+      project(samples, 0.5 * (low + high), further);
     return refined.rms_relative_residual <= best.rms_relative_residual ?
              refined :
              best;
+  }
+
+  AsymptoticFit
+  fixed_exponent_fit(const std::vector<RadialSample> &samples,
+                     const std::vector<double>       &lambdas)
+  {
+    const std::vector<RadialSample> kept = positive(samples);
+    if (lambdas.empty() || kept.size() < lambdas.size())
+      {
+        AsymptoticFit fit;
+        fit.n_samples             = kept.size();
+        fit.rms_relative_residual = std::numeric_limits<double>::infinity();
+        return fit;
+      }
+    return project(kept, lambdas);
+  }
+
+  AsymptoticFit
+  two_term_fit(const std::vector<RadialSample> &samples, const double lambda2)
+  {
+    if (!(lambda2 > 0.02))
+      {
+        AsymptoticFit fit;
+        fit.n_samples = positive(samples).size();
+        return fit;
+      }
+    return expansion_fit(samples, {lambda2}, 0.01, lambda2 - 0.01);
   }
 
   double

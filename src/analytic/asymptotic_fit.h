@@ -49,6 +49,36 @@ namespace FloorBlock::Analytic
   two_term_fit(const std::vector<RadialSample> &samples, double lambda2);
 
   /**
+   * @brief Several terms of the eigen-expansion: lambda1 fitted, the
+   * exponents of the further terms given (@p further, from the
+   * eigen-solver), every K by linear least squares in the relative
+   * residual (variable projection), lambda1 scanned over
+   * (@p scan_from, @p scan_to) in steps of 1e-3 and refined by golden-
+   * section search. Returns lambda1, K1 and, as lambda2 and K2, the first
+   * further term (the one the validity distance compares with).
+   *
+   * Why more than two: at a smooth contact edge the exponents 3/2, 2, 5/2
+   * lie 1/2 apart, so over a fit range that reaches a fair fraction of
+   * the zone the third term still biases a two-term fit (measured on
+   * `floorblock corner`: 1.531 and 1.554 with two terms, theory 1.5).
+   */
+  AsymptoticFit
+  expansion_fit(const std::vector<RadialSample> &samples,
+                const std::vector<double>       &further,
+                double                           scan_from,
+                double                           scan_to);
+
+  /**
+   * @brief The K's of the terms with the exponents @p lambdas, all given
+   * (at most 4), by linear least squares in the relative residual: lambda1,
+   * K1 of the first, lambda2, K2 of the second (0 without one). Residual
+   * infinite for a singular system (too few samples, equal exponents).
+   */
+  AsymptoticFit
+  fixed_exponent_fit(const std::vector<RadialSample> &samples,
+                     const std::vector<double>       &lambdas);
+
+  /**
    * @brief Distance within which the first term alone describes the
    * two-term field within @p relative (|K2/K1| r^(lambda2 - lambda1) <=
    * relative), m; infinite when K2 = 0.

@@ -68,11 +68,18 @@ namespace FloorBlock::Corner
     analysis.materials.compliant_length =
       scene.material.youngs_modulus() / scene.joints.normal_stiffness;
     const double tolerance = scene.corner.converged_change;
+    const double k_tolerance = scene.corner.intensity_change;
 
     CornerZoom zoom(scene, analysis.site);
     unsigned int n_calm_peaks = 0;
     for (unsigned int level = 0; level <= scene.corner.max_zoom_levels; ++level)
       {
+        if (level > 0 && !zoom.can_refine())
+          {
+            analysis.stop_reason =
+              "the smallest zoom cell (3e-7 of the block side) is reached";
+            break;
+          }
         if (level > 0 && !analysis.levels.empty() &&
             seconds_left() < 2. * analysis.levels.back().wall_time)
           {
@@ -99,8 +106,10 @@ namespace FloorBlock::Corner
                          n_calm_peaks + 1 :
                          0;
 
-        analysis.theory = corner_theory(record->profile, analysis.materials);
+        analysis.theory = corner_theory(record->profile, analysis.materials,
+                                        analysis.site.rounding_radius);
         double intensity_change = 1.;
+        double fit_span         = 0.;
         if (level > 0 && analysis.theory.covered)
           {
             // K1 of this level and the one before over this level's range.
@@ -109,13 +118,14 @@ namespace FloorBlock::Corner
                         tolerance);
             if (range.n_samples > 0)
               {
-                const auto now = intensities_with_exponents(
+                fit_span = range.to / range.from;
+                const auto now = theory_intensities(
                   samples_within(record->profile.samples, range),
-                  analysis.theory.exponent, analysis.theory.next_exponent);
-                const auto before = intensities_with_exponents(
+                  analysis.theory);
+                const auto before = theory_intensities(
                   samples_within(analysis.levels[level - 1].profile.samples,
                                  range),
-                  analysis.theory.exponent, analysis.theory.next_exponent);
+                  analysis.theory);
                 intensity_change = relative_change(now.first, before.first);
                 analysis.figures.back().intensity        = now;
                 analysis.figures.back().intensity_change = intensity_change;
@@ -130,14 +140,18 @@ namespace FloorBlock::Corner
           record->wall_time));
         // Without a theory there is no K1: the peak alone decides.
         if (n_calm_peaks >= 2 &&
-            (!analysis.theory.covered || intensity_change <= tolerance))
+            (!analysis.theory.covered ||
+             (intensity_change <= k_tolerance && fit_span >= smallest_fit_span)))
           {
             analysis.converged   = true;
-            analysis.stop_reason = fmt::format(
+            analysis.stop_reason =
               analysis.theory.covered ?
-                "peak and K1 changed by at most {} between the last levels" :
-                "the peak changed by at most {} twice in a row",
-              tolerance);
+                fmt::format("the peak changed by at most {} twice in a row "
+                            "and K1 by at most {}, over a fit range of a "
+                            "decade",
+                            tolerance, k_tolerance) :
+                fmt::format("the peak changed by at most {} twice in a row",
+                            tolerance);
             break;
           }
       }

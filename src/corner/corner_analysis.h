@@ -49,8 +49,8 @@ namespace FloorBlock::Corner
   /**
    * @brief Zooms on @p scene's Corner/Joint floor-level corner until the
    * pointwise peak (twice in a row) and the leading intensity K1 (where
-   * the theory covers the state) change by at most Corner/Converged change
-   * between levels, or the levels or
+   * the theory covers the state, over a fit range of at least a decade)
+   * change by at most Corner/Converged change between levels, or the levels or
    * @p deadline (s of @p clock_start's timer) run out; then fits the last
    * level's traction near the contact's end (fit_corner) over the
    * distances where it agrees with the level before within Corner/
@@ -68,4 +68,9 @@ namespace FloorBlock::Corner
   constexpr double fit_from_spacings = 8.;
   /** Largest distance fitted, as a fraction of the peak's distance from the end. */
   constexpr double fit_to_peak_fraction = 0.5;
+  /**
+   * Smallest ratio of the fit range's ends at which the zoom may stop: an
+   * exponent needs a decade of distance.
+   */
+  constexpr double smallest_fit_span = 10.;
 } // namespace FloorBlock::Corner

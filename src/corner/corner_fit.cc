@@ -71,32 +71,31 @@ namespace FloorBlock::Corner
     return within;
   }
 
-  Intensities
-  intensities_with_exponents(const std::vector<Analytic::RadialSample> &samples,
-                             const double lambda1,
-                             const double lambda2)
+  namespace
   {
-    // Normal equations of min sum ((K1 f1 + K2 f2 - t) / t)^2,
-    // f = d^(lambda - 1), in the scaled basis g = f / t.
-    double a11 = 0., a12 = 0., a22 = 0., b1 = 0., b2 = 0.;
-    for (const auto &sample : samples)
-      if (sample.traction > 0. && sample.distance > 0.)
-        {
-          const double g1 =
-            std::pow(sample.distance, lambda1 - 1.) / sample.traction;
-          const double g2 =
-            std::pow(sample.distance, lambda2 - 1.) / sample.traction;
-          a11 += g1 * g1;
-          a12 += g1 * g2;
-          a22 += g2 * g2;
-          b1 += g1;
-          b2 += g2;
-        }
-    const double determinant = a11 * a22 - a12 * a12;
-    if (!(determinant > 1e-14 * a11 * a22))
+    /** The theory's further exponents: next and, if any, third. */
+    std::vector<double>
+    further_exponents(const CornerTheory &theory)
+    {
+      std::vector<double> further{theory.next_exponent};
+      if (theory.third_exponent > theory.next_exponent)
+        further.push_back(theory.third_exponent);
+      return further;
+    }
+  } // namespace
+
+  Intensities
+  theory_intensities(const std::vector<Analytic::RadialSample> &samples,
+                     const CornerTheory                         &theory)
+  {
+    std::vector<double> exponents{theory.exponent};
+    for (const double further : further_exponents(theory))
+      exponents.push_back(further);
+    const Analytic::AsymptoticFit fit =
+      Analytic::fixed_exponent_fit(samples, exponents);
+    if (!std::isfinite(fit.rms_relative_residual))
       return {};
-    return {(a22 * b1 - a12 * b2) / determinant,
-            (a11 * b2 - a12 * b1) / determinant};
+    return {fit.k1, fit.k2};
   }
 
   CornerFit
@@ -109,10 +108,11 @@ namespace FloorBlock::Corner
     const auto within = samples_within(samples, range);
     fit.one_term      = Analytic::one_term_fit(within);
     fit.two_terms     = Analytic::two_term_fit(within, theory.next_exponent);
-    fit.intensity = intensities_with_exponents(within, theory.exponent,
-                                                theory.next_exponent);
+    fit.expansion     = Analytic::expansion_fit(
+      within, further_exponents(theory), 0.01, theory.next_exponent - 0.01);
+    fit.intensity = theory_intensities(within, theory);
     fit.validity_distance =
-      Analytic::one_term_validity_distance(fit.two_terms, 0.1);
+      Analytic::one_term_validity_distance(fit.expansion, 0.1);
     return fit;
   }
 } // namespace FloorBlock::Corner

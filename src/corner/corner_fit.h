@@ -33,30 +33,37 @@ namespace FloorBlock::Corner
   samples_within(const std::vector<Analytic::RadialSample> &samples,
                  const DistanceRange                        &range);
 
-  /**
-   * @brief The intensities of t = K1 d^(lambda1 - 1) + K2 d^(lambda2 - 1)
-   * with both exponents given (the theory's leading and next), linear
-   * least squares in the relative residual (t_fit - t) / t. K1 (Pa
-   * m^(1 - lambda1)) is the leading term's intensity, the figure compared
-   * between refinement levels; fitting the second term keeps it from
-   * absorbing the next one where the range reaches beyond the one-term
-   * field. Zeros with fewer than 2 samples.
-   */
+  /** @brief K1 and K2 of a fit with every exponent given. */
   struct Intensities
   {
-    double first  = 0.; ///< K1
-    double second = 0.; ///< K2
+    double first  = 0.; ///< K1 (Pa m^(1 - lambda1))
+    double second = 0.; ///< K2 (Pa m^(1 - lambda2))
   };
+
+  /**
+   * @brief K1, K2 of the theory's expansion (its exponent, next and third
+   * exponents all given; Analytic::fixed_exponent_fit()): K1 is the
+   * leading term's intensity, the figure compared between refinement
+   * levels; fitting the further terms keeps it from absorbing them where
+   * the range reaches beyond the one-term field. Zeros when the fit is
+   * singular.
+   */
   Intensities
-  intensities_with_exponents(const std::vector<Analytic::RadialSample> &samples,
-                             double lambda1,
-                             double lambda2);
+  theory_intensities(const std::vector<Analytic::RadialSample> &samples,
+                     const CornerTheory                         &theory);
 
   /** @brief Every fit of the traction near a corner's edge. */
   struct CornerFit
   {
     DistanceRange range;
-    /** t = K1 d^(lambda1 - 1) + K2 d^(lambda2 - 1), lambda2 = the theory's next. */
+    /**
+     * t = K1 d^(lambda1 - 1) + K2 d^(lambda2 - 1) + K3 d^(lambda3 - 1),
+     * lambda1 fitted, lambda2 and lambda3 the theory's next exponents
+     * (Analytic::expansion_fit()): the fitted exponent. Two terms where
+     * the theory has no third.
+     */
+    Analytic::AsymptoticFit expansion;
+    /** The same with two terms, for comparison. */
     Analytic::AsymptoticFit two_terms;
     /** 1 + the slope of log t against log d. */
     Analytic::AsymptoticFit one_term;

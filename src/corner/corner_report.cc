@@ -33,7 +33,7 @@ namespace FloorBlock::Corner
       return 0.;
     CornerProfile sharp = analysis.levels.back().profile;
     sharp.kind          = CornerContactKind::reaches_corner;
-    const CornerTheory theory = corner_theory(sharp, analysis.materials);
+    const CornerTheory theory = corner_theory(sharp, analysis.materials, 0.);
     return theory.covered ? theory.exponent : 0.;
   }
 
@@ -130,10 +130,14 @@ namespace FloorBlock::Corner
                      "{} of the peak's distance from it",
                      scene.corner.converged_change, fit_from_spacings,
                      fit_to_peak_fraction)},
-        {"n_samples", fit.two_terms.n_samples},
+        {"n_samples", fit.expansion.n_samples},
+        {"terms", theory.third_exponent > theory.next_exponent ? 3 : 2},
+        {"exponent", fit.expansion.lambda1},
+        {"exponent_difference", fit.expansion.lambda1 - theory.exponent},
+        {"expansion_K1", fit.expansion.k1},
+        {"expansion_rms_relative_residual", fit.expansion.rms_relative_residual},
         {"exponent_two_term", fit.two_terms.lambda1},
         {"exponent_one_term", fit.one_term.lambda1},
-        {"exponent_difference_two_term", fit.two_terms.lambda1 - theory.exponent},
         {"two_term_K1", fit.two_terms.k1},
         {"two_term_K2", fit.two_terms.k2},
         {"two_term_rms_relative_residual", fit.two_terms.rms_relative_residual},
@@ -166,6 +170,7 @@ namespace FloorBlock::Corner
     std::string traction =
       "distance_from_edge_m,normal_traction_Pa,fitted,two_term_fit_Pa,"
       "leading_term_Pa\n";
+    const Analytic::AsymptoticFit &leading = fit.expansion;
     std::string fitted_points, other_points, fit_line;
     if (!analysis.levels.empty())
       for (const auto &sample : analysis.levels.back().profile.samples)
@@ -174,7 +179,7 @@ namespace FloorBlock::Corner
             sample.distance >= fit.range.from && sample.distance <= fit.range.to;
           const double two = two_term_value(fit.two_terms, sample.distance);
           const double lead =
-            fit.two_terms.k1 * std::pow(sample.distance, fit.two_terms.lambda1 - 1.);
+            leading.k1 * std::pow(sample.distance, leading.lambda1 - 1.);
           traction += fmt::format("{:.9e},{:.9e},{},{:.9e},{:.9e}\n",
                                   sample.distance, sample.traction,
                                   inside ? 1 : 0, two, lead);
@@ -233,10 +238,11 @@ namespace FloorBlock::Corner
           "plot '-' with points pt 7 ps 0.4 lc rgb 'gray' title 'FEM nodes', "
           "'-' with points pt 7 ps 0.6 lc rgb 'blue' title 'fitted nodes', "
           "'-' using 1:2 with lines lw 2 lc rgb 'red' title 'two-term fit', "
-          "'-' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'leading term'\n"
+          "'-' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title "
+          "'leading term of the expansion fit'\n"
           "{}e\n{}e\n{}e\n{}e\n",
           to_string(analysis.levels.back().profile.kind), fit.range.from,
-          fit.range.to, fit.two_terms.lambda1, analysis.theory.exponent,
+          fit.range.to, fit.expansion.lambda1, analysis.theory.exponent,
           other_points.empty() ? "NaN NaN\n" : other_points,
           fitted_points.empty() ? "NaN NaN\n" : fitted_points,
           fit_line.empty() ? "NaN NaN NaN\n" : fit_line,
@@ -280,11 +286,12 @@ namespace FloorBlock::Corner
                         analysis.matching_averaging_length);
     if (analysis.theory.covered)
       text += fmt::format(
-        "exponent: theory {:.4f} ({}), fitted {:.4f} (two terms), {:.4f} "
-        "(one term) over {:.3e}-{:.3e} m; K1 {:.4e} Pa m^{:.3g} (last "
-        "change {:.2e})\n",
+        "exponent: theory {:.4f} ({}), fitted {:.4f} (expansion), {:.4f} "
+        "(two terms), {:.4f} (one term) over {:.3e}-{:.3e} m; K1 {:.4e} Pa "
+        "m^{:.3g} (last change {:.2e})\n",
         analysis.theory.exponent, to_string(analysis.theory.pair.state),
-        analysis.fit.two_terms.lambda1, analysis.fit.one_term.lambda1,
+        analysis.fit.expansion.lambda1, analysis.fit.two_terms.lambda1,
+        analysis.fit.one_term.lambda1,
         analysis.fit.range.from, analysis.fit.range.to,
         analysis.fit.intensity.first, 1. - analysis.theory.exponent,
         analysis.figures.back().intensity_change);

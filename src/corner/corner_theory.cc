@@ -54,7 +54,9 @@ namespace FloorBlock::Corner
   }
 
   CornerTheory
-  corner_theory(const CornerProfile &profile, const CornerMaterials &materials)
+  corner_theory(const CornerProfile   &profile,
+                const CornerMaterials &materials,
+                const double           rounding_radius)
   {
     CornerTheory theory;
     theory.pair.first_material  = materials.rock;
@@ -103,13 +105,25 @@ namespace FloorBlock::Corner
                                  "modes above lambda = 1";
                 return theory;
               }
-            theory.exponent      = kept[0];
-            theory.next_exponent = kept[1];
-            theory.covered       = true;
+            theory.exponent       = kept[0];
+            theory.next_exponent  = kept[1];
+            theory.third_exponent = kept.size() > 2 ? kept[2] : 0.;
+            theory.covered        = true;
             return theory;
           }
         case CornerContactKind::reaches_corner:
           {
+            if (rounding_radius > 0.)
+              {
+                theory.configuration =
+                  "the contact covers the whole corner fillet up to the "
+                  "block top";
+                theory.why_not =
+                  "a fillet closed to its end is not a corner the wedge "
+                  "eigenproblem describes (nor expected under a small "
+                  "rotation: check the mesh)";
+                return theory;
+              }
             theory.configuration =
               "the contact reaches the sharp corner: two flush block "
               "corners (pi/2 on pi/2) in complete contact";
@@ -123,7 +137,9 @@ namespace FloorBlock::Corner
               }
             theory.exponent      = theory.modes[0].exponent.real();
             theory.next_exponent = theory.modes[1].exponent.real();
-            theory.covered       = true;
+            theory.third_exponent =
+              theory.modes.size() > 2 ? theory.modes[2].exponent.real() : 0.;
+            theory.covered = true;
             if (theory.exponent >= 1.)
               theory.configuration +=
                 "; no singular mode (lowest lambda " +

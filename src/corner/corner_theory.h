@@ -54,13 +54,20 @@ namespace FloorBlock::Corner
     std::vector<Analytic::CornerMode> modes;
     /** lambda of the leading term of the traction, t ~ d^(lambda - 1). */
     double exponent = 0.;
-    /** lambda of the next term with interface traction (fit's second term). */
+    /** lambda of the next term (the fits' second term). */
     double next_exponent = 0.;
+    /** lambda of the term after it (the expansion fit's third term; 0 if none). */
+    double third_exponent = 0.;
   };
 
-  /** @brief The theory for the state @p profile shows. */
+  /**
+   * @brief The theory for the state @p profile shows at a corner rounded
+   * with @p rounding_radius (m, 0: sharp).
+   */
   CornerTheory
-  corner_theory(const CornerProfile &profile, const CornerMaterials &materials);
+  corner_theory(const CornerProfile   &profile,
+                const CornerMaterials &materials,
+                double                 rounding_radius);
 
   /** @brief "stuck", "frictionless", "slipping". */
   const char *

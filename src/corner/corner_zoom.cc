@@ -26,6 +26,16 @@ namespace FloorBlock::Corner
     return done;
   }
 
+  bool
+  CornerZoom::can_refine() const
+  {
+    const double next_size =
+      corner_size * std::exp2(-double(done.size()));
+    return next_size >= smallest_zoom_cell *
+                          std::min(scene.geometry.block_width,
+                                   scene.geometry.block_height);
+  }
+
   std::vector<Geometry::LocalSize>
   CornerZoom::window(const double size) const
   {

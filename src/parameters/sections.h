@@ -284,8 +284,10 @@ namespace FloorBlock::Parameters
     unsigned int joint;
     /** Most zoom levels after the scene's mesh. */
     unsigned int max_zoom_levels;
-    /** Relative change between zoom levels at which a figure counts as converged. */
+    /** Relative change between zoom levels at which the peak counts as converged. */
     double converged_change;
+    /** Relative change between zoom levels at which K1 counts as converged. */
+    double intensity_change;
     /** Corner rounding radii of the rounding study (m); empty: no study. */
     std::vector<double> rounding_radii;
     /** Wall time of the whole command (s). */

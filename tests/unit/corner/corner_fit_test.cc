@@ -19,20 +19,42 @@ namespace
   }
 } // namespace
 
-TEST(CornerFit, IntensitiesWithGivenExponentsRecoverBothTerms)
+static Corner::CornerTheory
+edge_theory()
 {
-  const auto samples = edge_field(2e10, -1.5e11);
-  const auto k       = Corner::intensities_with_exponents(samples, 1.5, 2.);
-  EXPECT_NEAR(k.first / 2e10, 1., 1e-9);
-  EXPECT_NEAR(k.second / -1.5e11, 1., 1e-9);
+  Corner::CornerTheory theory;
+  theory.exponent       = 1.5;
+  theory.next_exponent  = 2.;
+  theory.third_exponent = 2.5;
+  return theory;
+}
+
+TEST(CornerFit, IntensitiesWithTheTheorysExponentsRecoverEveryTerm)
+{
+  auto samples = edge_field(2e10, -1.5e11);
+  for (auto &sample : samples)
+    sample.traction += 4e11 * std::pow(sample.distance, 1.5);
+  const auto k = Corner::theory_intensities(samples, edge_theory());
+  EXPECT_NEAR(k.first / 2e10, 1., 1e-8);
+  EXPECT_NEAR(k.second / -1.5e11, 1., 1e-8);
+}
+
+// A third term biases the two-term fit; the three-term expansion is exact.
+TEST(CornerFit, ExpansionFitRemovesTheThirdTermsBias)
+{
+  auto samples = edge_field(2e10, -1.5e11);
+  for (auto &sample : samples)
+    sample.traction += 1.5e13 * std::pow(sample.distance, 1.5);
+  const auto fit = Corner::fit_corner(samples, {1e-5, 3e-4, 0}, edge_theory());
+  EXPECT_NEAR(fit.expansion.lambda1, 1.5, 1e-3);
+  EXPECT_GT(std::abs(fit.two_terms.lambda1 - 1.5), 5e-3);
 }
 
 TEST(CornerFit, TwoTermFitFindsTheSquareRootExponent)
 {
-  Corner::CornerTheory theory;
-  theory.exponent      = 1.5;
-  theory.next_exponent = 2.;
-  const auto samples   = edge_field(2e10, -1.5e11);
+  Corner::CornerTheory theory = edge_theory();
+  theory.third_exponent       = 0.; // two terms
+  const auto samples          = edge_field(2e10, -1.5e11);
   const auto fit = Corner::fit_corner(samples, {1e-5, 1e-4, 0}, theory);
   EXPECT_NEAR(fit.two_terms.lambda1, 1.5, 1e-3);
   // The one-term slope is biased by the second term: that is why both exist.

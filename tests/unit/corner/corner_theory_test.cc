@@ -31,7 +31,7 @@ TEST(CornerTheory, ASmoothEdgeInAFilletFallsLikeTheSquareRoot)
         Corner::CornerProfile profile;
         profile.kind       = Corner::CornerContactKind::edge_in_fillet;
         profile.edge_state = state;
-        const auto theory  = Corner::corner_theory(profile, rock(friction));
+        const auto theory  = Corner::corner_theory(profile, rock(friction), 0.01);
         ASSERT_TRUE(theory.covered);
         EXPECT_NEAR(theory.exponent, 1.5, 1e-6);
         EXPECT_NEAR(theory.next_exponent, 2., 1e-6);
@@ -52,7 +52,7 @@ TEST(CornerTheory, FlushSquareCornersStuckHaveABoundedField)
   Corner::CornerProfile profile;
   profile.kind       = Corner::CornerContactKind::reaches_corner;
   profile.edge_state = Contact::JointState::stick;
-  const auto theory  = Corner::corner_theory(profile, rock(0.577));
+  const auto theory  = Corner::corner_theory(profile, rock(0.577), 0.);
   ASSERT_TRUE(theory.covered);
   EXPECT_NEAR(theory.exponent, 1., 1e-6);
   EXPECT_NE(theory.configuration.find("bounded"), std::string::npos);
@@ -62,7 +62,7 @@ TEST(CornerTheory, AnOpenCornerIsNotCovered)
 {
   Corner::CornerProfile profile;
   profile.kind      = Corner::CornerContactKind::open_at_corner;
-  const auto theory = Corner::corner_theory(profile, rock(0.577));
+  const auto theory = Corner::corner_theory(profile, rock(0.577), 0.);
   EXPECT_FALSE(theory.covered);
   EXPECT_FALSE(theory.why_not.empty());
 }
@@ -74,7 +74,17 @@ TEST(CornerTheory, CompliantJointsAreNotCovered)
   auto materials             = rock(0.577);
   materials.exact_contact    = false;
   materials.compliant_length = 1.79;
-  const auto theory          = Corner::corner_theory(profile, materials);
+  const auto theory          = Corner::corner_theory(profile, materials, 0.01);
   EXPECT_FALSE(theory.covered);
   EXPECT_NE(theory.configuration.find("1.79"), std::string::npos);
+}
+
+TEST(CornerTheory, AFilletClosedToItsEndIsNotCovered)
+{
+  Corner::CornerProfile profile;
+  profile.kind       = Corner::CornerContactKind::reaches_corner;
+  profile.edge_state = Contact::JointState::stick;
+  const auto theory  = Corner::corner_theory(profile, rock(0.577), 0.02);
+  EXPECT_FALSE(theory.covered);
+  EXPECT_NE(theory.configuration.find("whole corner fillet"), std::string::npos);
 }

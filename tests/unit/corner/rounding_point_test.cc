@@ -15,6 +15,8 @@ namespace
         Corner::ZoomLevel level;
         level.level                 = levels.size();
         level.profile.peak_traction = peak;
+        level.profile.edge_beyond_corner = 4e-4;
+        level.requested_size             = 4e-6;
         level.wall_time             = 2.;
         levels.push_back(level);
       }
@@ -36,4 +38,11 @@ TEST(RoundingPoint, ConvergedNeedsTwoSmallChangesInARow)
   const auto once = Corner::rounding_point(
     0.01, levels_with_peaks({3e8, 3.2e8, 3.201e8}), 0.01);
   EXPECT_FALSE(once.converged);
+}
+
+TEST(RoundingPoint, ACoarseFilletContactIsNotConvergedYet)
+{
+  auto levels = levels_with_peaks({3e8, 3.09e8, 3.10e8, 3.105e8});
+  levels.back().requested_size = 5e-6; // 80 cells over the 0.4 mm reach
+  EXPECT_FALSE(Corner::rounding_point(0.01, levels, 0.01).converged);
 }
