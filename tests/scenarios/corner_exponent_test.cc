@@ -1,8 +1,10 @@
 // Issue 15, the corner field under exact contact: `floorblock corner` must
 // zoom until the peak and the intensity settle, find the face corner's
 // state, and fit an exponent that agrees with the theory for that state.
-// Release only (scenario label): about 20 s per scene, 14 zoom levels down
-// to cells of 0.3 um, too slow under the sanitizers' debug deal.II.
+// Release only (scenario label): about 20 s, 14 zoom levels down to cells
+// of 1.5 um, too slow under the sanitizers' debug deal.II. Further scenes
+// (2 cm fillets and 20 deg friction, the default scene) are measured in
+// README.md, "Corner stress": each takes 1-3 minutes.
 #include "process.h"
 
 #include <gtest/gtest.h>
@@ -55,12 +57,4 @@ namespace
 TEST(CornerExponent, FiveCentimetreFilletsMeetTheSmoothEdgeExponent)
 {
   expect_exponent_of_the_state("");
-}
-
-// ... and with 2 cm fillets and a lower joint friction (20 deg).
-TEST(CornerExponent, TwoCentimetreFilletsAndLowFrictionMeetItToo)
-{
-  expect_exponent_of_the_state(
-    "--set 'Geometry/Corner rounding radius=0.02' "
-    "--set 'Joints/Vertical friction angle=20'");
 }
