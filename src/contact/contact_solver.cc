@@ -29,8 +29,9 @@ namespace FloorBlock::Contact
     /** kn h / E above which a failure suggests the rigid law (-). */
     constexpr double ill_conditioned_joint_ratio = 3.;
 
+    template <int dim>
     std::vector<JointState>
-    states_of(const std::vector<JointResponse<2>> &responses)
+    states_of(const std::vector<JointResponse<dim>> &responses)
     {
       std::vector<JointState> states;
       states.reserve(responses.size());
@@ -40,8 +41,9 @@ namespace FloorBlock::Contact
     }
   } // namespace
 
-  ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
-                               const ContactProblem<2>       &problem,
+  template <int dim>
+  ContactSolver<dim>::ContactSolver(const dealii::Triangulation<dim> &triangulation,
+                               const ContactProblem<dim>       &problem,
                                const ContactSolverSettings    &settings)
     : problem(problem)
     , settings(settings)
@@ -62,12 +64,12 @@ namespace FloorBlock::Contact
                              "process (a serial Triangulation); run cases "
                              "in parallel instead");
     dealii::TimerOutput::Scope scope(timer, "Contact: setup");
-    std::vector<Fem::DirichletCondition<2>> zero_conditions;
+    std::vector<Fem::DirichletCondition<dim>> zero_conditions;
     for (const auto &support : problem.supports)
       zero_conditions.push_back({support.boundary_id,
                                  support.constrained_components,
-                                 [](const dealii::Point<2> &) {
-                                   return dealii::Tensor<1, 2>();
+                                 [](const dealii::Point<dim> &) {
+                                   return dealii::Tensor<1, dim>();
                                  }});
     homogeneous_constraints =
       Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
@@ -78,7 +80,7 @@ namespace FloorBlock::Contact
                        pair_dof_groups(nodes),
                        pattern);
     matrix.reinit(pattern);
-    bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
+    bulk = std::make_unique<Fem::StoredElasticSystem<dim>>(
       fe_space, problem.model, homogeneous_constraints, pattern);
     if (std::any_of(exact_laws.begin(),
                     exact_laws.end(),
@@ -110,7 +112,7 @@ namespace FloorBlock::Contact
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
     // The members, not the constructor's arguments: it keeps references.
-    post_processor = std::make_unique<IncrementPostProcessor>(
+    post_processor = std::make_unique<IncrementPostProcessor<dim>>(
       fe_space,
       this->problem,
       nodes,
@@ -118,8 +120,9 @@ namespace FloorBlock::Contact
       this->settings.averaging_length);
   }
 
+  template <int dim>
   void
-  ContactSolver::setup_contact()
+  ContactSolver<dim>::setup_contact()
   {
     double largest_modulus = 0.;
     for (const auto &entry : problem.model.laws)
@@ -128,7 +131,7 @@ namespace FloorBlock::Contact
     const double smallest_cell = fe_space.minimal_cell_diameter();
     for (unsigned int j = 0; j < problem.joints.size(); ++j)
       {
-        const JointDefinition<2> &joint = problem.joints[j];
+        const JointDefinition<dim> &joint = problem.joints[j];
         if (joint.obstacle_curvature != 0. &&
             (!(joint.obstacle_curvature > 0.) || !joint.against_rigid_plane ||
              joint.plane_moves_with_uplift))
@@ -142,8 +145,8 @@ namespace FloorBlock::Contact
           throw InputError("joint '" + joint.name +
                            "': compliant law needs kn > 0 and ks > 0 Pa/m");
         joint_laws.push_back(
-          std::make_unique<CoulombJoint<2>>(joint.parameters));
-        const std::vector<ContactNode<2>> joint_nodes =
+          std::make_unique<CoulombJoint<dim>>(joint.parameters));
+        const std::vector<ContactNode<dim>> joint_nodes =
           joint.against_rigid_plane ?
             pair_nodes_with_plane(fe_space,
                                   joint.side_a,
@@ -169,8 +172,8 @@ namespace FloorBlock::Contact
 
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
-        const ContactNode<2>     &node  = nodes[p];
-        const JointDefinition<2> &joint = problem.joints[node.joint];
+        const ContactNode<dim>     &node  = nodes[p];
+        const JointDefinition<dim> &joint = problem.joints[node.joint];
         if (joint.law == JointLawKind::compliant)
           {
             pair_laws.push_back(joint_laws[node.joint].get());
@@ -203,7 +206,7 @@ namespace FloorBlock::Contact
             // complementarity parameter, which must not change a result).
             springs.normal_stiffness = law.surface_stiffness;
             springs.shear_stiffness  = law.surface_stiffness;
-            penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+            penalty_laws.push_back(std::make_unique<CoulombJoint<dim>>(springs));
             pair_laws.push_back(penalty_laws.back().get());
             penalty_pair_laws.push_back(pair_laws.back());
             exact_laws.emplace_back();
@@ -211,10 +214,10 @@ namespace FloorBlock::Contact
           }
         exact_laws.push_back(law);
         pair_laws.push_back(nullptr);
-        penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+        penalty_laws.push_back(std::make_unique<CoulombJoint<dim>>(springs));
         penalty_pair_laws.push_back(penalty_laws.back().get());
       }
-    committed_history.assign(nodes.size(), JointHistory<2>());
+    committed_history.assign(nodes.size(), JointHistory<dim>());
     working_history = committed_history;
 
     // Compliant joints much stiffer than the cells they join make the
@@ -239,11 +242,12 @@ namespace FloorBlock::Contact
       }
   }
 
+  template <int dim>
   void
-  ContactSolver::setup_exact_system()
+  ContactSolver<dim>::setup_exact_system()
   {
     const unsigned int n_u = fe_space.dof_handler().n_dofs();
-    exact                  = std::make_unique<ExactContact<2>>(
+    exact                  = std::make_unique<ExactContact<dim>>(
       nodes, exact_laws, homogeneous_constraints, n_u);
     const unsigned int n_total = n_u + exact->n_multipliers();
     dealii::DynamicSparsityPattern couplings(n_total, n_total);
@@ -276,10 +280,11 @@ namespace FloorBlock::Contact
               << std::endl;
   }
 
+  template <int dim>
   dealii::AffineConstraints<double>
-  ContactSolver::constraints_at(const double uplift_factor)
+  ContactSolver<dim>::constraints_at(const double uplift_factor)
   {
-    std::vector<Fem::DirichletCondition<2>> conditions;
+    std::vector<Fem::DirichletCondition<dim>> conditions;
     const UpliftSettings uplift = problem.uplift;
     for (const auto &support : problem.supports)
       {
@@ -287,17 +292,18 @@ namespace FloorBlock::Contact
         conditions.push_back(
           {support.boundary_id,
            support.constrained_components,
-           [uplift, uplift_factor, moves](const dealii::Point<2> &point) {
+           [uplift, uplift_factor, moves](const dealii::Point<dim> &point) {
              return moves ?
                       uplift_displacement(uplift, uplift_factor, point) :
-                      dealii::Tensor<1, 2>();
+                      dealii::Tensor<1, dim>();
            }});
       }
     return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
   }
 
+  template <int dim>
   void
-  ContactSolver::move_obstacles(const double uplift_factor)
+  ContactSolver<dim>::move_obstacles(const double uplift_factor)
   {
     for (auto &node : nodes)
       if (problem.joints[node.joint].plane_moves_with_uplift)
@@ -305,8 +311,9 @@ namespace FloorBlock::Contact
           uplift_displacement(problem.uplift, uplift_factor, node.position);
   }
 
+  template <int dim>
   double
-  ContactSolver::load_norm(const Loading::LoadFactors &factors)
+  ContactSolver<dim>::load_norm(const Loading::LoadFactors &factors)
   {
     dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
     zero = 0.;
@@ -314,8 +321,9 @@ namespace FloorBlock::Contact
     return residual.l2_norm();
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_linear(std::string &message)
+  ContactSolver<dim>::solve_linear(std::string &message)
   {
     ++n_linear_solves;
     if (exact_equations())
@@ -353,8 +361,9 @@ namespace FloorBlock::Contact
     return info.success;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_load_state(const Loading::LoadFactors &factors,
+  ContactSolver<dim>::solve_load_state(const Loading::LoadFactors &factors,
                                   const double       prediction,
                                   IncrementResult   &increment,
                                   std::string       &failure_reason)
@@ -370,7 +379,7 @@ namespace FloorBlock::Contact
     NewtonCallbacks callbacks;
     callbacks.assemble = [&]() {
       dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
-      const std::vector<JointResponse<2>> responses = responses_at_iterate();
+      const std::vector<JointResponse<dim>> responses = responses_at_iterate();
       matrix.copy_from(exact_equations() ? base_matrix :
                                            bulk->condensed_stiffness());
       bulk->residual(
@@ -457,10 +466,11 @@ namespace FloorBlock::Contact
     return report.converged;
   }
 
-  std::vector<JointResponse<2>>
-  ContactSolver::responses_at_iterate()
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  ContactSolver<dim>::responses_at_iterate()
   {
-    std::vector<JointResponse<2>> responses =
+    std::vector<JointResponse<dim>> responses =
       evaluate_contact(nodes,
                        penalty_start ? penalty_pair_laws : pair_laws,
                        working_history,
@@ -470,14 +480,16 @@ namespace FloorBlock::Contact
     return responses;
   }
 
+  template <int dim>
   bool
-  ContactSolver::exact_equations() const
+  ContactSolver<dim>::exact_equations() const
   {
     return exact && !penalty_start;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_from_penalty_start(const Loading::LoadFactors &factors,
+  ContactSolver<dim>::solve_from_penalty_start(const Loading::LoadFactors &factors,
                                           IncrementResult   &increment,
                                           std::string       &failure_reason)
   {
@@ -506,8 +518,9 @@ namespace FloorBlock::Contact
     return solved;
   }
 
+  template <int dim>
   void
-  ContactSolver::commit(const std::vector<JointResponse<2>> &responses)
+  ContactSolver<dim>::commit(const std::vector<JointResponse<dim>> &responses)
   {
     committed_solution  = current_solution;
     committed_responses = responses;
@@ -515,8 +528,8 @@ namespace FloorBlock::Contact
       committed_multipliers = exact->multipliers();
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
-        const JointResponse<2> &response = responses[p];
-        JointHistory<2>        &history  = committed_history[p];
+        const JointResponse<dim> &response = responses[p];
+        JointHistory<dim>        &history  = committed_history[p];
         history.tangential_base = response.tangential_traction;
         history.reference_slip  = response.slip;
         // UDEC convention: cohesion and tensile strength are lost for good
@@ -526,8 +539,9 @@ namespace FloorBlock::Contact
     working_history = committed_history;
   }
 
+  template <int dim>
   SolveResult
-  ContactSolver::run()
+  ContactSolver<dim>::run()
   {
     SolveResult result;
     result.n_dofs          = fe_space.dof_handler().n_dofs();
@@ -580,8 +594,9 @@ namespace FloorBlock::Contact
     return result;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_increment(
+  ContactSolver<dim>::solve_increment(
     const Loading::LoadState            &state,
     const Loading::FailedStartRecorder &record_failed_start,
     IncrementResult                     &increment,
@@ -611,14 +626,15 @@ namespace FloorBlock::Contact
     return solve_from_penalty_start(state.factors, increment, failure_reason);
   }
 
+  template <int dim>
   void
-  ContactSolver::commit_increment(const Loading::LoadState &state,
+  ContactSolver<dim>::commit_increment(const Loading::LoadState &state,
                                   const dealii::Timer      &clock,
                                   IncrementResult          &increment,
                                   SolveResult              &result)
   {
     dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
-    const std::vector<JointResponse<2>> responses = responses_at_iterate();
+    const std::vector<JointResponse<dim>> responses = responses_at_iterate();
     increment.stage        = state.stage;
     increment.stage_factor = state.stage_factor;
     increment.n_cutbacks   = state.n_cutbacks;
@@ -648,8 +664,9 @@ namespace FloorBlock::Contact
     result.increments.push_back(increment);
   }
 
+  template <int dim>
   void
-  ContactSolver::discard_attempt(const std::string     &attempt,
+  ContactSolver<dim>::discard_attempt(const std::string     &attempt,
                                  const IncrementResult &increment)
   {
     n_failed_newton_iterations += increment.n_newton_iterations;
@@ -660,8 +677,9 @@ namespace FloorBlock::Contact
       exact->multipliers() = committed_multipliers;
   }
 
+  template <int dim>
   void
-  ContactSolver::add_statistics(SolveResult &result) const
+  ContactSolver<dim>::add_statistics(SolveResult &result) const
   {
     result.wall_times =
       timer.get_summary_data(dealii::TimerOutput::total_wall_time);
@@ -677,27 +695,33 @@ namespace FloorBlock::Contact
       }
   }
 
+  template <int dim>
   const dealii::TrilinosWrappers::MPI::Vector &
-  ContactSolver::solution() const
+  ContactSolver<dim>::solution() const
   {
     return committed_solution;
   }
 
-  const Fem::FeSpace<2> &
-  ContactSolver::space() const
+  template <int dim>
+  const Fem::FeSpace<dim> &
+  ContactSolver<dim>::space() const
   {
     return fe_space;
   }
 
-  const std::vector<ContactNode<2>> &
-  ContactSolver::contact_nodes() const
+  template <int dim>
+  const std::vector<ContactNode<dim>> &
+  ContactSolver<dim>::contact_nodes() const
   {
     return nodes;
   }
 
-  std::vector<JointResponse<2>>
-  ContactSolver::responses_at_solution() const
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  ContactSolver<dim>::responses_at_solution() const
   {
     return committed_responses;
   }
+
+  template class ContactSolver<2>;
 } // namespace FloorBlock::Contact

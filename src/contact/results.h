@@ -59,12 +59,16 @@ namespace FloorBlock::Contact
     std::vector<JointNodeSample> profile;
   };
 
-  /** @brief Global equilibrium check of one converged state (2D, N/m). */
+  /**
+   * @brief Global equilibrium check of one converged state, per metre of
+   * face (N/m; 3D: the totals over the face length divided by it; 2D: the
+   * z components are 0).
+   */
   struct ForceBalance
   {
-    dealii::Tensor<1, 2> applied_load;
+    dealii::Tensor<1, 3> applied_load;
     /** Dirichlet reactions plus the forces on rigid obstacles (N/m). */
-    dealii::Tensor<1, 2> support_reaction;
+    dealii::Tensor<1, 3> support_reaction;
     /** |applied + reaction| / (|applied| + sum of |nodal reactions|) (-). */
     double relative_imbalance = 0.;
   };

@@ -141,7 +141,7 @@ namespace FloorBlock::Pipeline
   {
     FemOutcome outcome;
     outcome.mesh = mesh;
-    Contact::ContactSolver solver(
+    Contact::ContactSolver<2> solver(
       triangulation,
       Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
       Scene::contact_solver_settings(scene,

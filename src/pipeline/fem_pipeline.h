@@ -13,6 +13,7 @@
 
 namespace FloorBlock::Contact
 {
+  template <int dim>
   class ContactSolver;
 } // namespace FloorBlock::Contact
 
@@ -37,7 +38,7 @@ namespace FloorBlock::Pipeline
      * not; its solution() is then the last converged state), e.g. to
      * evaluate error indicators while the solution still exists.
      */
-    std::function<void(const Contact::ContactSolver &)> inspect;
+    std::function<void(const Contact::ContactSolver<2> &)> inspect;
   };
 
   /**

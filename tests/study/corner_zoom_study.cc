@@ -117,7 +117,7 @@ main(int argc, char **argv)
           for (const auto &point : points)
             toward.push_back({point, size});
           Pipeline::SolveExtras extras;
-          extras.inspect = [&](const Contact::ContactSolver &solver) {
+          extras.inspect = [&](const Contact::ContactSolver<2> &solver) {
             // Whether the facing fillets still pair (mirror images).
             const unsigned int      n = scene.geometry.n_blocks;
             Contact::PairingSummary summary;
