@@ -724,4 +724,5 @@ namespace FloorBlock::Contact
   }
 
   template class ContactSolver<2>;
+  template class ContactSolver<3>;
 } // namespace FloorBlock::Contact

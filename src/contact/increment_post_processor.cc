@@ -1,6 +1,7 @@
 #include <contact/contact_assembly.h>
 #include <contact/increment_post_processor.h>
 #include <contact/joint_report.h>
+#include <contact/swept_joint_report.h>
 #include <fem/rigid_motion.h>
 #include <fem/vtu_writer.h>
 
@@ -70,9 +71,26 @@ namespace FloorBlock::Contact
     IncrementResult                             &increment)
   {
     increment.balance = force_balance(factors, responses, solution);
-    increment.joints =
-      make_joint_reports(nodes, responses, joint_names, averaging_length);
-    increment.motions = Fem::fit_rigid_motions(fe_space, solution);
+    if constexpr (dim == 2)
+      {
+        increment.joints =
+          make_joint_reports(nodes, responses, joint_names, averaging_length);
+        increment.motions = Fem::fit_rigid_motions(fe_space, solution);
+      }
+    else
+      {
+        increment.joints = make_swept_joint_reports(
+          nodes, responses, joint_names, averaging_length, face_length);
+        for (const auto &[material, motion] :
+             Fem::fit_rigid_motions(fe_space, solution))
+          {
+            Fem::RigidMotion<2> in_plane;
+            in_plane.translation[0]     = motion.translation[0];
+            in_plane.translation[1]     = motion.translation[1];
+            in_plane.rotation           = motion.rotation;
+            increment.motions[material] = in_plane;
+          }
+      }
   }
 
   template <int dim>
@@ -169,4 +187,5 @@ namespace FloorBlock::Contact
   }
 
   template class IncrementPostProcessor<2>;
+  template class IncrementPostProcessor<3>;
 } // namespace FloorBlock::Contact
