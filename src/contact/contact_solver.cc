@@ -5,6 +5,7 @@
 #include <contact/crosspoints.h>
 #include <contact/joint_pairing.h>
 #include <contact/newton_driver.h>
+#include <contact/swept_sections.h>
 #include <contact/uplift.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
@@ -128,7 +129,11 @@ namespace FloorBlock::Contact
     for (const auto &entry : problem.model.laws)
       largest_modulus =
         std::max(largest_modulus, entry.second.youngs_modulus());
-    const double smallest_cell = fe_space.minimal_cell_diameter();
+    // The pairs' scales are lengths along the joint line, as in 2D: in 3D
+    // a pair's weight is an area, and the joint's contact ends run along
+    // the face, resolved by the in-plane cells (swept_sections.h).
+    const auto  &triangulation = fe_space.dof_handler().get_triangulation();
+    const double smallest_cell = smallest_in_plane_cell(triangulation);
     for (unsigned int j = 0; j < problem.joints.size(); ++j)
       {
         const JointDefinition<dim> &joint = problem.joints[j];
@@ -170,6 +175,8 @@ namespace FloorBlock::Contact
                  "surface stiffness"
               << std::endl;
 
+    const std::vector<double> pair_lengths = weights_along_joint(
+      nodes, problem.joints.size(), face_length_of(triangulation));
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
         const ContactNode<dim>     &node  = nodes[p];
@@ -186,7 +193,7 @@ namespace FloorBlock::Contact
         // gap terms of the augmented multipliers weigh alike at every pair
         // whatever its cell size. It changes the Newton iterates, never
         // the converged answer.
-        const double length = std::max(node.weight, smallest_cell);
+        const double length = std::max(pair_lengths[p], smallest_cell);
         ExactPairLaw law;
         law.surface_stiffness = largest_modulus / length;
         law.complementarity.friction_coefficient =

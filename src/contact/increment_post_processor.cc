@@ -2,10 +2,10 @@
 #include <contact/increment_post_processor.h>
 #include <contact/joint_report.h>
 #include <contact/swept_joint_report.h>
+#include <contact/swept_sections.h>
 #include <fem/rigid_motion.h>
 #include <fem/vtu_writer.h>
 
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
@@ -13,28 +13,6 @@
 
 namespace FloorBlock::Contact
 {
-  namespace
-  {
-    /**
-     * The length of face the model stands for (m): 1 in 2D (plane strain,
-     * everything per metre of face), the mesh's extent along z in 3D (an
-     * assembly swept along the face, Geometry::extrude_assembly).
-     */
-    template <int dim>
-    double
-    extent_along_face(const Fem::FeSpace<dim> &fe_space)
-    {
-      if constexpr (dim == 2)
-        return 1.;
-      else
-        {
-          const auto box = dealii::GridTools::compute_bounding_box(
-            fe_space.dof_handler().get_triangulation());
-          return box.side_length(dim - 1);
-        }
-    }
-  } // namespace
-
   template <int dim>
   IncrementPostProcessor<dim>::IncrementPostProcessor(
     const Fem::FeSpace<dim>             &fe_space,
@@ -47,7 +25,7 @@ namespace FloorBlock::Contact
     , nodes(nodes)
     , dirichlet_dofs(dirichlet_dofs)
     , averaging_length(averaging_length)
-    , face_length(extent_along_face(fe_space))
+    , face_length(face_length_of(fe_space.dof_handler().get_triangulation()))
   {
     for (const auto &joint : problem.joints)
       joint_names.push_back(joint.name);

@@ -1,5 +1,6 @@
 #include <contact/joint_report.h>
 #include <contact/swept_joint_report.h>
+#include <contact/swept_sections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,48 +10,14 @@ namespace FloorBlock::Contact
 {
   namespace
   {
-    /**
-     * Slice positions closer than this fraction of the face length are one
-     * line: the swept mesh copies the slice coordinates into every node, so
-     * only round-off separates a line's nodes.
-     */
-    constexpr double same_slice_tolerance = 1e-9;
-
     /** In-plane (x, y) part of a 3D vector. */
-    template <int spacedim>
     dealii::Tensor<1, 2>
-    in_plane(const dealii::Tensor<1, spacedim> &vector)
+    in_plane(const dealii::Tensor<1, 3> &vector)
     {
       dealii::Tensor<1, 2> result;
       result[0] = vector[0];
       result[1] = vector[1];
       return result;
-    }
-
-    /** The pairs of one joint grouped by their z, in increasing z. */
-    std::vector<std::vector<unsigned int>>
-    lines_along_face(const std::vector<ContactNode<3>> &nodes,
-                     std::vector<unsigned int>          members,
-                     const double                       face_length)
-    {
-      std::sort(members.begin(),
-                members.end(),
-                [&](const unsigned int a, const unsigned int b) {
-                  return nodes[a].position[2] < nodes[b].position[2];
-                });
-      std::vector<std::vector<unsigned int>> lines;
-      double line_z = -std::numeric_limits<double>::infinity();
-      for (const unsigned int p : members)
-        {
-          const double z = nodes[p].position[2];
-          if (z - line_z > same_slice_tolerance * face_length)
-            {
-              lines.emplace_back();
-              line_z = z;
-            }
-          lines.back().push_back(p);
-        }
-      return lines;
     }
 
     /**
@@ -115,22 +82,17 @@ namespace FloorBlock::Contact
         report.name             = names[j];
         report.averaging_length = averaging_length;
         report.face_length      = face_length;
-        double joint_weight     = 0.;
-        for (const unsigned int p : members[j])
-          joint_weight += nodes[p].weight;
-        if (!(joint_weight > 0.))
-          continue;
+        const auto sections =
+          sections_along_face(nodes, members[j], face_length);
+        const auto lengths = section_lengths(nodes, sections, face_length);
         const double middle_z       = face_length / 2.;
         double       profile_offset = std::numeric_limits<double>::infinity();
         double       contact_area   = 0.;
         double       uncertainty    = 0.;
-        for (const auto &line :
-             lines_along_face(nodes, members[j], face_length))
+        for (unsigned int k = 0; k < sections.size(); ++k)
           {
-            double line_weight = 0.;
-            for (const unsigned int p : line)
-              line_weight += nodes[p].weight;
-            const double line_length = face_length * line_weight / joint_weight;
+            const auto  &line        = sections[k];
+            const double line_length = lengths[k];
             if (!(line_length > 0.))
               continue;
             const JointReport part = line_report(
