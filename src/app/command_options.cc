@@ -18,8 +18,9 @@ namespace FloorBlock::App
       throw InputError("Geometry/Dimension",
                        std::to_string(scene.geometry.dimension),
                        "must be 2 for `" + command +
-                         "`: the 3D contact solve is not built yet (issue "
-                         "16); `floorblock mesh` builds the 3D mesh");
+                         "`: so far only `floorblock solve` solves 3D "
+                         "scenes (issue 16); `floorblock mesh` builds the 3D "
+                         "mesh");
   }
 
   std::string

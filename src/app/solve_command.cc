@@ -9,8 +9,10 @@ namespace FloorBlock::App
   int
   solve_command(const CommandOptions &options)
   {
+    // Geometry/Dimension = 3 too: one process, Pipeline::solve_swept_scene.
     const auto scene = read_scene(options);
-    require_plane_scene(scene, "solve");
+    if (scene.geometry.dimension == 3)
+      Pipeline::check_swept_scene(scene);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
     const Pipeline::FemOutcome outcome = Pipeline::solve_scene(scene, folder);

@@ -131,4 +131,17 @@ namespace FloorBlock::Contact
                    dealii::TrilinosWrappers::MPI::Vector *);
   template std::vector<std::vector<dealii::types::global_dof_index>>
   pair_dof_groups(const std::vector<ContactNode<2>> &);
+  template std::vector<JointResponse<3>>
+  evaluate_contact(const std::vector<ContactNode<3>> &,
+                   const std::vector<const CoulombJoint<3> *> &,
+                   const std::vector<JointHistory<3>> &,
+                   const dealii::TrilinosWrappers::MPI::Vector &);
+  template void
+  assemble_contact(const std::vector<ContactNode<3>> &,
+                   const std::vector<JointResponse<3>> &,
+                   const dealii::AffineConstraints<double> &,
+                   dealii::TrilinosWrappers::SparseMatrix *,
+                   dealii::TrilinosWrappers::MPI::Vector *);
+  template std::vector<std::vector<dealii::types::global_dof_index>>
+  pair_dof_groups(const std::vector<ContactNode<3>> &);
 } // namespace FloorBlock::Contact

@@ -5,6 +5,7 @@
 #include <contact/crosspoints.h>
 #include <contact/joint_pairing.h>
 #include <contact/newton_driver.h>
+#include <contact/swept_sections.h>
 #include <contact/uplift.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
@@ -29,8 +30,9 @@ namespace FloorBlock::Contact
     /** kn h / E above which a failure suggests the rigid law (-). */
     constexpr double ill_conditioned_joint_ratio = 3.;
 
+    template <int dim>
     std::vector<JointState>
-    states_of(const std::vector<JointResponse<2>> &responses)
+    states_of(const std::vector<JointResponse<dim>> &responses)
     {
       std::vector<JointState> states;
       states.reserve(responses.size());
@@ -40,8 +42,9 @@ namespace FloorBlock::Contact
     }
   } // namespace
 
-  ContactSolver::ContactSolver(const dealii::Triangulation<2> &triangulation,
-                               const ContactProblem<2>       &problem,
+  template <int dim>
+  ContactSolver<dim>::ContactSolver(const dealii::Triangulation<dim> &triangulation,
+                               const ContactProblem<dim>       &problem,
                                const ContactSolverSettings    &settings)
     : problem(problem)
     , settings(settings)
@@ -62,12 +65,12 @@ namespace FloorBlock::Contact
                              "process (a serial Triangulation); run cases "
                              "in parallel instead");
     dealii::TimerOutput::Scope scope(timer, "Contact: setup");
-    std::vector<Fem::DirichletCondition<2>> zero_conditions;
+    std::vector<Fem::DirichletCondition<dim>> zero_conditions;
     for (const auto &support : problem.supports)
       zero_conditions.push_back({support.boundary_id,
                                  support.constrained_components,
-                                 [](const dealii::Point<2> &) {
-                                   return dealii::Tensor<1, 2>();
+                                 [](const dealii::Point<dim> &) {
+                                   return dealii::Tensor<1, dim>();
                                  }});
     homogeneous_constraints =
       Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
@@ -78,7 +81,7 @@ namespace FloorBlock::Contact
                        pair_dof_groups(nodes),
                        pattern);
     matrix.reinit(pattern);
-    bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
+    bulk = std::make_unique<Fem::StoredElasticSystem<dim>>(
       fe_space, problem.model, homogeneous_constraints, pattern);
     if (std::any_of(exact_laws.begin(),
                     exact_laws.end(),
@@ -110,7 +113,7 @@ namespace FloorBlock::Contact
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
     // The members, not the constructor's arguments: it keeps references.
-    post_processor = std::make_unique<IncrementPostProcessor>(
+    post_processor = std::make_unique<IncrementPostProcessor<dim>>(
       fe_space,
       this->problem,
       nodes,
@@ -118,17 +121,22 @@ namespace FloorBlock::Contact
       this->settings.averaging_length);
   }
 
+  template <int dim>
   void
-  ContactSolver::setup_contact()
+  ContactSolver<dim>::setup_contact()
   {
     double largest_modulus = 0.;
     for (const auto &entry : problem.model.laws)
       largest_modulus =
         std::max(largest_modulus, entry.second.youngs_modulus());
-    const double smallest_cell = fe_space.minimal_cell_diameter();
+    // The pairs' scales are lengths along the joint line, as in 2D: in 3D
+    // a pair's weight is an area, and the joint's contact ends run along
+    // the face, resolved by the in-plane cells (swept_sections.h).
+    const auto  &triangulation = fe_space.dof_handler().get_triangulation();
+    const double smallest_cell = smallest_in_plane_cell(triangulation);
     for (unsigned int j = 0; j < problem.joints.size(); ++j)
       {
-        const JointDefinition<2> &joint = problem.joints[j];
+        const JointDefinition<dim> &joint = problem.joints[j];
         if (joint.obstacle_curvature != 0. &&
             (!(joint.obstacle_curvature > 0.) || !joint.against_rigid_plane ||
              joint.plane_moves_with_uplift))
@@ -142,8 +150,8 @@ namespace FloorBlock::Contact
           throw InputError("joint '" + joint.name +
                            "': compliant law needs kn > 0 and ks > 0 Pa/m");
         joint_laws.push_back(
-          std::make_unique<CoulombJoint<2>>(joint.parameters));
-        const std::vector<ContactNode<2>> joint_nodes =
+          std::make_unique<CoulombJoint<dim>>(joint.parameters));
+        const std::vector<ContactNode<dim>> joint_nodes =
           joint.against_rigid_plane ?
             pair_nodes_with_plane(fe_space,
                                   joint.side_a,
@@ -167,10 +175,12 @@ namespace FloorBlock::Contact
                  "surface stiffness"
               << std::endl;
 
+    const std::vector<double> pair_lengths = weights_along_joint(
+      nodes, problem.joints.size(), face_length_of(triangulation));
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
-        const ContactNode<2>     &node  = nodes[p];
-        const JointDefinition<2> &joint = problem.joints[node.joint];
+        const ContactNode<dim>     &node  = nodes[p];
+        const JointDefinition<dim> &joint = problem.joints[node.joint];
         if (joint.law == JointLawKind::compliant)
           {
             pair_laws.push_back(joint_laws[node.joint].get());
@@ -183,7 +193,7 @@ namespace FloorBlock::Contact
         // gap terms of the augmented multipliers weigh alike at every pair
         // whatever its cell size. It changes the Newton iterates, never
         // the converged answer.
-        const double length = std::max(node.weight, smallest_cell);
+        const double length = std::max(pair_lengths[p], smallest_cell);
         ExactPairLaw law;
         law.surface_stiffness = largest_modulus / length;
         law.complementarity.friction_coefficient =
@@ -203,7 +213,7 @@ namespace FloorBlock::Contact
             // complementarity parameter, which must not change a result).
             springs.normal_stiffness = law.surface_stiffness;
             springs.shear_stiffness  = law.surface_stiffness;
-            penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+            penalty_laws.push_back(std::make_unique<CoulombJoint<dim>>(springs));
             pair_laws.push_back(penalty_laws.back().get());
             penalty_pair_laws.push_back(pair_laws.back());
             exact_laws.emplace_back();
@@ -211,10 +221,10 @@ namespace FloorBlock::Contact
           }
         exact_laws.push_back(law);
         pair_laws.push_back(nullptr);
-        penalty_laws.push_back(std::make_unique<CoulombJoint<2>>(springs));
+        penalty_laws.push_back(std::make_unique<CoulombJoint<dim>>(springs));
         penalty_pair_laws.push_back(penalty_laws.back().get());
       }
-    committed_history.assign(nodes.size(), JointHistory<2>());
+    committed_history.assign(nodes.size(), JointHistory<dim>());
     working_history = committed_history;
 
     // Compliant joints much stiffer than the cells they join make the
@@ -239,11 +249,12 @@ namespace FloorBlock::Contact
       }
   }
 
+  template <int dim>
   void
-  ContactSolver::setup_exact_system()
+  ContactSolver<dim>::setup_exact_system()
   {
     const unsigned int n_u = fe_space.dof_handler().n_dofs();
-    exact                  = std::make_unique<ExactContact<2>>(
+    exact                  = std::make_unique<ExactContact<dim>>(
       nodes, exact_laws, homogeneous_constraints, n_u);
     const unsigned int n_total = n_u + exact->n_multipliers();
     dealii::DynamicSparsityPattern couplings(n_total, n_total);
@@ -276,10 +287,11 @@ namespace FloorBlock::Contact
               << std::endl;
   }
 
+  template <int dim>
   dealii::AffineConstraints<double>
-  ContactSolver::constraints_at(const double uplift_factor)
+  ContactSolver<dim>::constraints_at(const double uplift_factor)
   {
-    std::vector<Fem::DirichletCondition<2>> conditions;
+    std::vector<Fem::DirichletCondition<dim>> conditions;
     const UpliftSettings uplift = problem.uplift;
     for (const auto &support : problem.supports)
       {
@@ -287,17 +299,18 @@ namespace FloorBlock::Contact
         conditions.push_back(
           {support.boundary_id,
            support.constrained_components,
-           [uplift, uplift_factor, moves](const dealii::Point<2> &point) {
+           [uplift, uplift_factor, moves](const dealii::Point<dim> &point) {
              return moves ?
                       uplift_displacement(uplift, uplift_factor, point) :
-                      dealii::Tensor<1, 2>();
+                      dealii::Tensor<1, dim>();
            }});
       }
     return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
   }
 
+  template <int dim>
   void
-  ContactSolver::move_obstacles(const double uplift_factor)
+  ContactSolver<dim>::move_obstacles(const double uplift_factor)
   {
     for (auto &node : nodes)
       if (problem.joints[node.joint].plane_moves_with_uplift)
@@ -305,8 +318,9 @@ namespace FloorBlock::Contact
           uplift_displacement(problem.uplift, uplift_factor, node.position);
   }
 
+  template <int dim>
   double
-  ContactSolver::load_norm(const Loading::LoadFactors &factors)
+  ContactSolver<dim>::load_norm(const Loading::LoadFactors &factors)
   {
     dealii::TrilinosWrappers::MPI::Vector zero(current_solution);
     zero = 0.;
@@ -314,8 +328,9 @@ namespace FloorBlock::Contact
     return residual.l2_norm();
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_linear(std::string &message)
+  ContactSolver<dim>::solve_linear(std::string &message)
   {
     ++n_linear_solves;
     if (exact_equations())
@@ -353,8 +368,9 @@ namespace FloorBlock::Contact
     return info.success;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_load_state(const Loading::LoadFactors &factors,
+  ContactSolver<dim>::solve_load_state(const Loading::LoadFactors &factors,
                                   const double       prediction,
                                   IncrementResult   &increment,
                                   std::string       &failure_reason)
@@ -370,7 +386,7 @@ namespace FloorBlock::Contact
     NewtonCallbacks callbacks;
     callbacks.assemble = [&]() {
       dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
-      const std::vector<JointResponse<2>> responses = responses_at_iterate();
+      const std::vector<JointResponse<dim>> responses = responses_at_iterate();
       matrix.copy_from(exact_equations() ? base_matrix :
                                            bulk->condensed_stiffness());
       bulk->residual(
@@ -457,10 +473,11 @@ namespace FloorBlock::Contact
     return report.converged;
   }
 
-  std::vector<JointResponse<2>>
-  ContactSolver::responses_at_iterate()
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  ContactSolver<dim>::responses_at_iterate()
   {
-    std::vector<JointResponse<2>> responses =
+    std::vector<JointResponse<dim>> responses =
       evaluate_contact(nodes,
                        penalty_start ? penalty_pair_laws : pair_laws,
                        working_history,
@@ -470,14 +487,16 @@ namespace FloorBlock::Contact
     return responses;
   }
 
+  template <int dim>
   bool
-  ContactSolver::exact_equations() const
+  ContactSolver<dim>::exact_equations() const
   {
     return exact && !penalty_start;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_from_penalty_start(const Loading::LoadFactors &factors,
+  ContactSolver<dim>::solve_from_penalty_start(const Loading::LoadFactors &factors,
                                           IncrementResult   &increment,
                                           std::string       &failure_reason)
   {
@@ -506,8 +525,9 @@ namespace FloorBlock::Contact
     return solved;
   }
 
+  template <int dim>
   void
-  ContactSolver::commit(const std::vector<JointResponse<2>> &responses)
+  ContactSolver<dim>::commit(const std::vector<JointResponse<dim>> &responses)
   {
     committed_solution  = current_solution;
     committed_responses = responses;
@@ -515,8 +535,8 @@ namespace FloorBlock::Contact
       committed_multipliers = exact->multipliers();
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
-        const JointResponse<2> &response = responses[p];
-        JointHistory<2>        &history  = committed_history[p];
+        const JointResponse<dim> &response = responses[p];
+        JointHistory<dim>        &history  = committed_history[p];
         history.tangential_base = response.tangential_traction;
         history.reference_slip  = response.slip;
         // UDEC convention: cohesion and tensile strength are lost for good
@@ -526,8 +546,9 @@ namespace FloorBlock::Contact
     working_history = committed_history;
   }
 
+  template <int dim>
   SolveResult
-  ContactSolver::run()
+  ContactSolver<dim>::run()
   {
     SolveResult result;
     result.n_dofs          = fe_space.dof_handler().n_dofs();
@@ -580,8 +601,9 @@ namespace FloorBlock::Contact
     return result;
   }
 
+  template <int dim>
   bool
-  ContactSolver::solve_increment(
+  ContactSolver<dim>::solve_increment(
     const Loading::LoadState            &state,
     const Loading::FailedStartRecorder &record_failed_start,
     IncrementResult                     &increment,
@@ -611,14 +633,15 @@ namespace FloorBlock::Contact
     return solve_from_penalty_start(state.factors, increment, failure_reason);
   }
 
+  template <int dim>
   void
-  ContactSolver::commit_increment(const Loading::LoadState &state,
+  ContactSolver<dim>::commit_increment(const Loading::LoadState &state,
                                   const dealii::Timer      &clock,
                                   IncrementResult          &increment,
                                   SolveResult              &result)
   {
     dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
-    const std::vector<JointResponse<2>> responses = responses_at_iterate();
+    const std::vector<JointResponse<dim>> responses = responses_at_iterate();
     increment.stage        = state.stage;
     increment.stage_factor = state.stage_factor;
     increment.n_cutbacks   = state.n_cutbacks;
@@ -648,8 +671,9 @@ namespace FloorBlock::Contact
     result.increments.push_back(increment);
   }
 
+  template <int dim>
   void
-  ContactSolver::discard_attempt(const std::string     &attempt,
+  ContactSolver<dim>::discard_attempt(const std::string     &attempt,
                                  const IncrementResult &increment)
   {
     n_failed_newton_iterations += increment.n_newton_iterations;
@@ -660,8 +684,9 @@ namespace FloorBlock::Contact
       exact->multipliers() = committed_multipliers;
   }
 
+  template <int dim>
   void
-  ContactSolver::add_statistics(SolveResult &result) const
+  ContactSolver<dim>::add_statistics(SolveResult &result) const
   {
     result.wall_times =
       timer.get_summary_data(dealii::TimerOutput::total_wall_time);
@@ -677,27 +702,34 @@ namespace FloorBlock::Contact
       }
   }
 
+  template <int dim>
   const dealii::TrilinosWrappers::MPI::Vector &
-  ContactSolver::solution() const
+  ContactSolver<dim>::solution() const
   {
     return committed_solution;
   }
 
-  const Fem::FeSpace<2> &
-  ContactSolver::space() const
+  template <int dim>
+  const Fem::FeSpace<dim> &
+  ContactSolver<dim>::space() const
   {
     return fe_space;
   }
 
-  const std::vector<ContactNode<2>> &
-  ContactSolver::contact_nodes() const
+  template <int dim>
+  const std::vector<ContactNode<dim>> &
+  ContactSolver<dim>::contact_nodes() const
   {
     return nodes;
   }
 
-  std::vector<JointResponse<2>>
-  ContactSolver::responses_at_solution() const
+  template <int dim>
+  std::vector<JointResponse<dim>>
+  ContactSolver<dim>::responses_at_solution() const
   {
     return committed_responses;
   }
+
+  template class ContactSolver<2>;
+  template class ContactSolver<3>;
 } // namespace FloorBlock::Contact

@@ -29,9 +29,10 @@
 namespace FloorBlock::Contact
 {
   /**
-   * @brief Quasi-static frictional multi-body contact in 2D plane strain:
-   * follows the loading path gravity -> support pressure -> floor uplift
-   * in increments, each a converged equilibrium, with automatic cutback.
+   * @brief Quasi-static frictional multi-body contact, 2D plane strain
+   * (dim = 2) or 3D (dim = 3, one process): follows the loading path
+   * gravity -> support pressure -> floor uplift in increments, each a
+   * converged equilibrium, with automatic cutback.
    *
    * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
    * the joints from CoulombJoint through evaluate_contact/assemble_contact,
@@ -40,6 +41,7 @@ namespace FloorBlock::Contact
    * Loading::follow_load_path, the increment reports and VTU files from
    * IncrementPostProcessor.
    */
+  template <int dim>
   class ContactSolver
   {
   public:
@@ -51,8 +53,8 @@ namespace FloorBlock::Contact
      * Throws InputError if a joint's sides do not match or a material has
      * no law.
      */
-    ContactSolver(const dealii::Triangulation<2> &triangulation,
-                  const ContactProblem<2>       &problem,
+    ContactSolver(const dealii::Triangulation<dim> &triangulation,
+                  const ContactProblem<dim>       &problem,
                   const ContactSolverSettings    &settings);
 
     /**
@@ -69,14 +71,14 @@ namespace FloorBlock::Contact
     const dealii::TrilinosWrappers::MPI::Vector &
     solution() const;
 
-    const Fem::FeSpace<2> &
+    const Fem::FeSpace<dim> &
     space() const;
 
-    const std::vector<ContactNode<2>> &
+    const std::vector<ContactNode<dim>> &
     contact_nodes() const;
 
     /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
-    std::vector<JointResponse<2>>
+    std::vector<JointResponse<dim>>
     responses_at_solution() const;
 
   private:
@@ -120,7 +122,7 @@ namespace FloorBlock::Contact
     void
     setup_exact_system();
     /** Every pair's law at the current iterate. */
-    std::vector<JointResponse<2>>
+    std::vector<JointResponse<dim>>
     responses_at_iterate();
     /** The Newton equations include the exact law's multipliers. */
     bool
@@ -144,27 +146,27 @@ namespace FloorBlock::Contact
     bool
     solve_linear(std::string &message);
     void
-    commit(const std::vector<JointResponse<2>> &responses);
+    commit(const std::vector<JointResponse<dim>> &responses);
 
-    const ContactProblem<2>      problem;
+    const ContactProblem<dim>      problem;
     const ContactSolverSettings   settings;
-    const Fem::FeSpace<2>         fe_space;
-    std::vector<ContactNode<2>>   nodes;
-    std::vector<std::unique_ptr<CoulombJoint<2>>> joint_laws;
-    std::vector<const CoulombJoint<2> *>           pair_laws;
+    const Fem::FeSpace<dim>         fe_space;
+    std::vector<ContactNode<dim>>   nodes;
+    std::vector<std::unique_ptr<CoulombJoint<dim>>> joint_laws;
+    std::vector<const CoulombJoint<dim> *>           pair_laws;
     /** Per pair: the exact law, empty for a compliant pair. */
     std::vector<std::optional<ExactPairLaw>>       exact_laws;
     /**
      * Owns the springs of rigid-law pairs: kn = ks = c_n for the penalty
      * start, E/h for the pairs that yield at crosspoints.
      */
-    std::vector<std::unique_ptr<CoulombJoint<2>>> penalty_laws;
+    std::vector<std::unique_ptr<CoulombJoint<dim>>> penalty_laws;
     /** pair_laws with the penalty springs in place of the exact law. */
-    std::vector<const CoulombJoint<2> *>           penalty_pair_laws;
+    std::vector<const CoulombJoint<dim> *>           penalty_pair_laws;
     /** Solving the penalty start (solve_from_penalty_start). */
     bool                                           penalty_start = false;
     /** The exact law's equations; null when every pair is compliant. */
-    std::unique_ptr<ExactContact<2>>               exact;
+    std::unique_ptr<ExactContact<dim>>               exact;
     /** Displacements and multipliers (exact law only). */
     dealii::TrilinosWrappers::SparsityPattern      system_pattern;
     /** K and B^T, the constant part of the Newton matrix (exact law). */
@@ -174,14 +176,14 @@ namespace FloorBlock::Contact
     dealii::Vector<double>                         multiplier_update;
     dealii::Vector<double>                         multiplier_base;
     dealii::Vector<double>                         committed_multipliers;
-    std::vector<JointHistory<2>>  committed_history;
-    std::vector<JointHistory<2>>  working_history;
-    std::vector<JointResponse<2>> committed_responses;
+    std::vector<JointHistory<dim>>  committed_history;
+    std::vector<JointHistory<dim>>  working_history;
+    std::vector<JointResponse<dim>> committed_responses;
     dealii::AffineConstraints<double> homogeneous_constraints;
     dealii::IndexSet                  dirichlet_dofs;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
-    std::unique_ptr<Fem::StoredElasticSystem<2>> bulk;
+    std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
     /** Set when the linear systems are solved directly (see run()). */
     std::unique_ptr<Solver::ReusedFactorization> direct_solver;
     unsigned int                                 n_linear_solves = 0;
@@ -199,7 +201,7 @@ namespace FloorBlock::Contact
     /** Appended to a failure message when compliant joints are very stiff. */
     std::string                               stiffness_hint;
     /** Reports and VTU files of the converged increments. */
-    std::unique_ptr<IncrementPostProcessor>   post_processor;
+    std::unique_ptr<IncrementPostProcessor<dim>>   post_processor;
     dealii::ConditionalOStream                console;
     dealii::TimerOutput                       timer;
   };

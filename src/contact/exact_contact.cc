@@ -412,4 +412,5 @@ namespace FloorBlock::Contact
   }
 
   template class ExactContact<2>;
+  template class ExactContact<3>;
 } // namespace FloorBlock::Contact

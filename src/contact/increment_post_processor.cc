@@ -1,6 +1,8 @@
 #include <contact/contact_assembly.h>
 #include <contact/increment_post_processor.h>
 #include <contact/joint_report.h>
+#include <contact/swept_joint_report.h>
+#include <contact/swept_sections.h>
 #include <fem/rigid_motion.h>
 #include <fem/vtu_writer.h>
 
@@ -11,10 +13,11 @@
 
 namespace FloorBlock::Contact
 {
-  IncrementPostProcessor::IncrementPostProcessor(
-    const Fem::FeSpace<2>             &fe_space,
-    const ContactProblem<2>           &problem,
-    const std::vector<ContactNode<2>> &nodes,
+  template <int dim>
+  IncrementPostProcessor<dim>::IncrementPostProcessor(
+    const Fem::FeSpace<dim>             &fe_space,
+    const ContactProblem<dim>           &problem,
+    const std::vector<ContactNode<dim>> &nodes,
     const dealii::IndexSet            &dirichlet_dofs,
     const double                       averaging_length)
     : fe_space(fe_space)
@@ -22,6 +25,7 @@ namespace FloorBlock::Contact
     , nodes(nodes)
     , dirichlet_dofs(dirichlet_dofs)
     , averaging_length(averaging_length)
+    , face_length(face_length_of(fe_space.dof_handler().get_triangulation()))
   {
     for (const auto &joint : problem.joints)
       joint_names.push_back(joint.name);
@@ -36,26 +40,45 @@ namespace FloorBlock::Contact
       }
   }
 
+  template <int dim>
   void
-  IncrementPostProcessor::describe(
+  IncrementPostProcessor<dim>::describe(
     const Loading::LoadFactors                  &factors,
-    const std::vector<JointResponse<2>>         &responses,
+    const std::vector<JointResponse<dim>>         &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution,
     IncrementResult                             &increment)
   {
     increment.balance = force_balance(factors, responses, solution);
-    increment.joints =
-      make_joint_reports(nodes, responses, joint_names, averaging_length);
-    increment.motions = Fem::fit_rigid_motions(fe_space, solution);
+    if constexpr (dim == 2)
+      {
+        increment.joints =
+          make_joint_reports(nodes, responses, joint_names, averaging_length);
+        increment.motions = Fem::fit_rigid_motions(fe_space, solution);
+      }
+    else
+      {
+        increment.joints = make_swept_joint_reports(
+          nodes, responses, joint_names, averaging_length, face_length);
+        for (const auto &[material, motion] :
+             Fem::fit_rigid_motions(fe_space, solution))
+          {
+            Fem::RigidMotion<2> in_plane;
+            in_plane.translation[0]     = motion.translation[0];
+            in_plane.translation[1]     = motion.translation[1];
+            in_plane.rotation           = motion.rotation;
+            increment.motions[material] = in_plane;
+          }
+      }
   }
 
+  template <int dim>
   ForceBalance
-  IncrementPostProcessor::force_balance(
+  IncrementPostProcessor<dim>::force_balance(
     const Loading::LoadFactors                  &factors,
-    const std::vector<JointResponse<2>>         &responses,
+    const std::vector<JointResponse<dim>>         &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
-    Fem::ElasticModel<2> model = problem.model;
+    Fem::ElasticModel<dim> model = problem.model;
     model.gravity *= factors.gravity;
     for (auto &entry : model.pressures)
       entry.second *= factors.support;
@@ -64,11 +87,13 @@ namespace FloorBlock::Contact
     no_constraints.close();
     dealii::TrilinosWrappers::MPI::Vector raw(solution);
     raw = 0.;
-    ForceBalance                   balance;
-    Fem::ElasticAssemblyTargets<2> targets;
+    ForceBalance                     balance;
+    dealii::Tensor<1, dim>           applied_load;
+    dealii::Tensor<1, dim>           support_reaction;
+    Fem::ElasticAssemblyTargets<dim> targets;
     targets.cache              = &cell_matrices;
     targets.residual           = &raw;
-    targets.applied_load_total = &balance.applied_load;
+    targets.applied_load_total = &applied_load;
     Fem::assemble_elastic_system(
       fe_space, model, solution, no_constraints, targets);
     assemble_contact(nodes, responses, no_constraints, nullptr, &raw);
@@ -88,7 +113,7 @@ namespace FloorBlock::Contact
     double reaction_magnitude = 0.;
     for (const auto dof : dirichlet_dofs)
       {
-        balance.support_reaction[dof_component[dof]] += condensed(dof);
+        support_reaction[dof_component[dof]] += condensed(dof);
         reaction_magnitude += std::abs(condensed(dof));
       }
     // A rigid obstacle is a support too: it receives +w f (the force
@@ -96,22 +121,31 @@ namespace FloorBlock::Contact
     for (unsigned int p = 0; p < nodes.size(); ++p)
       if (nodes[p].against_rigid_obstacle())
         {
-          const dealii::Tensor<1, 2> force =
+          const dealii::Tensor<1, dim> force =
             nodes[p].weight * responses[p].force_density;
-          balance.support_reaction += force;
-          reaction_magnitude += std::abs(force[0]) + std::abs(force[1]);
+          support_reaction += force;
+          double magnitude = 0.;
+          for (unsigned int c = 0; c < dim; ++c)
+            magnitude += std::abs(force[c]);
+          reaction_magnitude += magnitude;
         }
-    const double scale = balance.applied_load.norm() + reaction_magnitude;
+    const double scale = applied_load.norm() + reaction_magnitude;
     balance.relative_imbalance =
-      scale > 0. ?
-        (balance.applied_load + balance.support_reaction).norm() / scale :
-        0.;
+      scale > 0. ? (applied_load + support_reaction).norm() / scale : 0.;
+    // Per metre of face, as every force of the reports (3D: the totals
+    // over the face length).
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        balance.applied_load[c]     = applied_load[c] / face_length;
+        balance.support_reaction[c] = support_reaction[c] / face_length;
+      }
     return balance;
   }
 
+  template <int dim>
   void
-  IncrementPostProcessor::write_vtu(
-    const std::vector<JointResponse<2>>         &responses,
+  IncrementPostProcessor<dim>::write_vtu(
+    const std::vector<JointResponse<dim>>         &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution,
     const std::string                           &directory)
   {
@@ -129,4 +163,7 @@ namespace FloorBlock::Contact
                              directory,
                              output_records);
   }
+
+  template class IncrementPostProcessor<2>;
+  template class IncrementPostProcessor<3>;
 } // namespace FloorBlock::Contact

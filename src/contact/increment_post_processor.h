@@ -25,6 +25,7 @@ namespace FloorBlock::Contact
    * Reads the solver's mesh, problem and contact nodes; changes nothing
    * of the solver's state.
    */
+  template <int dim>
   class IncrementPostProcessor
   {
   public:
@@ -34,9 +35,9 @@ namespace FloorBlock::Contact
      * @param[in] averaging_length Length of the averaged peak normal
      *   stress (m).
      */
-    IncrementPostProcessor(const Fem::FeSpace<2>             &fe_space,
-                           const ContactProblem<2>           &problem,
-                           const std::vector<ContactNode<2>> &nodes,
+    IncrementPostProcessor(const Fem::FeSpace<dim>             &fe_space,
+                           const ContactProblem<dim>           &problem,
+                           const std::vector<ContactNode<dim>> &nodes,
                            const dealii::IndexSet            &dirichlet_dofs,
                            const double averaging_length);
 
@@ -49,7 +50,7 @@ namespace FloorBlock::Contact
      */
     void
     describe(const Loading::LoadFactors                  &factors,
-             const std::vector<JointResponse<2>>         &responses,
+             const std::vector<JointResponse<dim>>         &responses,
              const dealii::TrilinosWrappers::MPI::Vector &solution,
              IncrementResult                             &increment);
 
@@ -58,23 +59,28 @@ namespace FloorBlock::Contact
      * @p directory, with the pairs' states as a debug field.
      */
     void
-    write_vtu(const std::vector<JointResponse<2>>         &responses,
+    write_vtu(const std::vector<JointResponse<dim>>         &responses,
               const dealii::TrilinosWrappers::MPI::Vector &solution,
               const std::string                           &directory);
 
   private:
     ForceBalance
     force_balance(const Loading::LoadFactors                  &factors,
-                  const std::vector<JointResponse<2>>         &responses,
+                  const std::vector<JointResponse<dim>>         &responses,
                   const dealii::TrilinosWrappers::MPI::Vector &solution);
 
-    const Fem::FeSpace<2>             &fe_space;
-    const ContactProblem<2>           &problem;
-    const std::vector<ContactNode<2>> &nodes;
+    const Fem::FeSpace<dim>             &fe_space;
+    const ContactProblem<dim>           &problem;
+    const std::vector<ContactNode<dim>> &nodes;
     const dealii::IndexSet            &dirichlet_dofs;
     const double                       averaging_length;
+    /**
+     * Length of face the mesh stands for (m): 1 in 2D, the extent along
+     * z in 3D; the reports give forces per metre of it.
+     */
+    const double                       face_length;
     std::vector<std::string>           joint_names;
-    /** Vector component (x 0, y 1) of every DoF. */
+    /** Vector component (x 0, y 1, z 2) of every DoF. */
     std::vector<unsigned int> dof_component;
     Fem::CellMatrixCache      cell_matrices;
     /** Time and file of every .vtu written, for the .pvd. */

@@ -110,7 +110,35 @@ namespace FloorBlock::Contact
 
   namespace
   {
-    /** Straight line through the common part of a joint (2D). */
+    /**
+     * In-plane (x, y) part of a position or direction: the 2D joint line
+     * of a 3D joint swept along z (Geometry::extrude_assembly).
+     */
+    template <int dim>
+    dealii::Tensor<1, 2>
+    in_plane(const dealii::Tensor<1, dim> &vector)
+    {
+      if constexpr (dim == 2)
+        return vector;
+      else
+        return dealii::Tensor<1, 2>({vector[0], vector[1]});
+    }
+
+    /** A 2D direction as a dim vector (z = 0 in 3D). */
+    template <int dim>
+    dealii::Tensor<1, dim>
+    from_plane(const dealii::Tensor<1, 2> &vector)
+    {
+      if constexpr (dim == 2)
+        return vector;
+      else
+        return dealii::Tensor<1, dim>({vector[0], vector[1], 0.});
+    }
+
+    /**
+     * Straight line through the common part of a joint, in the x-y plane
+     * (2D; in 3D the line every cross-section of the swept joint shares).
+     */
     struct JointLine
     {
       dealii::Point<2>     origin;
@@ -127,22 +155,27 @@ namespace FloorBlock::Contact
      * (for a straight joint exactly its line). The normal is oriented like
      * side A's summed face normals.
      */
+    template <int dim>
     JointLine
-    joint_line(const std::vector<SideNode<2>> &common)
+    joint_line(const std::vector<SideNode<dim>> &common)
     {
       const auto farthest_from = [&](const dealii::Point<2> &from) {
         dealii::Point<2> far = from;
         for (const auto &node : common)
-          if (node.position.distance(from) > far.distance(from))
-            far = node.position;
+          {
+            const dealii::Point<2> position(in_plane(node.position));
+            if (position.distance(from) > far.distance(from))
+              far = position;
+          }
         return far;
       };
       JointLine              line;
-      const dealii::Point<2> first = farthest_from(common.front().position);
-      const dealii::Point<2> last  = farthest_from(first);
+      const dealii::Point<2> first =
+        farthest_from(dealii::Point<2>(in_plane(common.front().position)));
+      const dealii::Point<2> last = farthest_from(first);
       dealii::Tensor<1, 2>   normal_sum;
       for (const auto &node : common)
-        normal_sum += node.normal_sum;
+        normal_sum += in_plane(node.normal_sum);
       line.origin = first;
       if (first.distance(last) > 0.)
         {
@@ -164,40 +197,40 @@ namespace FloorBlock::Contact
     }
 
     /** Unpaired nodes of one side beyond the two ends of the common part. */
+    template <int dim>
     struct EndNodes
     {
-      std::vector<const SideNode<2> *> low;
-      std::vector<const SideNode<2> *> high;
+      std::vector<const SideNode<dim> *> low;
+      std::vector<const SideNode<dim> *> high;
     };
 
     /**
-     * Sorts a side's unpaired nodes to the two ends of the common part,
-     * nearest first; a node on the common part itself has no place here:
-     * the meshes do not match.
+     * Sorts the unpaired nodes @p nodes of a side (of one cross-section in
+     * 3D) to the two ends of the common part, nearest first; a node on the
+     * common part itself has no place here: the meshes do not match.
      */
-    EndNodes
-    split_by_end(const std::vector<SideNode<2>> &nodes,
-                 const std::vector<bool>        &taken,
-                 const JointLine                &line,
-                 const double                    tolerance,
-                 const std::string              &joint_name)
+    template <int dim>
+    EndNodes<dim>
+    split_by_end(const std::vector<const SideNode<dim> *> &nodes,
+                 const JointLine                          &line,
+                 const double                              tolerance,
+                 const std::string                        &joint_name)
     {
-      EndNodes ends;
-      const auto along = [&](const SideNode<2> *node) {
-        return (node->position - line.origin) * line.tangent;
+      EndNodes<dim> ends;
+      const auto    along = [&](const SideNode<dim> *node) {
+        return (dealii::Point<2>(in_plane(node->position)) - line.origin) *
+               line.tangent;
       };
-      for (unsigned int k = 0; k < nodes.size(); ++k)
+      for (const SideNode<dim> *node : nodes)
         {
-          if (taken[k])
-            continue;
-          const double position = along(&nodes[k]);
+          const double position = along(node);
           if (position < line.low - tolerance)
-            ends.low.push_back(&nodes[k]);
+            ends.low.push_back(node);
           else if (position > line.high + tolerance)
-            ends.high.push_back(&nodes[k]);
+            ends.high.push_back(node);
           else
             throw InputError(joint_name + ": node at " +
-                             describe(nodes[k].position) +
+                             describe(node->position) +
                              " has no coincident partner");
         }
       std::sort(ends.low.begin(), ends.low.end(), [&](auto a, auto b) {
@@ -212,36 +245,83 @@ namespace FloorBlock::Contact
     /**
      * Pairs the nodes beyond one end if the two sides are mirror images
      * there: equal numbers of nodes, and the k-th of side B on the normal
-     * line of the k-th of side A, not behind it. Otherwise no pair.
+     * line of the k-th of side A (in 3D in the same cross-section), not
+     * behind it. Otherwise no pair.
      */
-    std::vector<ContactNode<2>>
-    mirror_pairs(const std::vector<const SideNode<2> *> &nodes_a,
-                 const std::vector<const SideNode<2> *> &nodes_b,
-                 const JointLine                        &line,
-                 const double                            tolerance,
-                 const unsigned int                      joint)
+    template <int dim>
+    std::vector<ContactNode<dim>>
+    mirror_pairs(const std::vector<const SideNode<dim> *> &nodes_a,
+                 const std::vector<const SideNode<dim> *> &nodes_b,
+                 const JointLine                          &line,
+                 const double                              tolerance,
+                 const unsigned int                        joint)
     {
       if (nodes_a.empty() || nodes_a.size() != nodes_b.size())
         return {};
-      std::vector<ContactNode<2>> pairs;
+      std::vector<ContactNode<dim>> pairs;
       for (unsigned int k = 0; k < nodes_a.size(); ++k)
         {
-          const dealii::Tensor<1, 2> offset =
+          const dealii::Tensor<1, dim> offset =
             nodes_b[k]->position - nodes_a[k]->position;
-          const double gap = offset * line.normal;
-          if (std::abs(offset * line.tangent) > tolerance || gap < -tolerance)
+          const double gap = in_plane(offset) * line.normal;
+          if (std::abs(in_plane(offset) * line.tangent) > tolerance ||
+              gap < -tolerance)
             return {};
-          ContactNode<2> pair = make_contact_node(*nodes_a[k], joint);
-          pair.normal         = line.normal;
-          pair.weight         = std::max(0., nodes_a[k]->normal_sum * line.normal);
-          pair.initial_gap    = std::max(0., gap);
-          pair.dofs_b         = nodes_b[k]->dofs;
+          if constexpr (dim == 3)
+            if (std::abs(offset[2]) > tolerance)
+              return {};
+          ContactNode<dim> pair = make_contact_node(*nodes_a[k], joint);
+          pair.normal           = from_plane<dim>(line.normal);
+          pair.weight =
+            std::max(0., in_plane(nodes_a[k]->normal_sum) * line.normal);
+          pair.initial_gap = std::max(0., gap);
+          pair.dofs_b      = nodes_b[k]->dofs;
           pairs.push_back(pair);
         }
       return pairs;
     }
 
-    /** The nodes of both sides that have no coincident partner, paired where they mirror each other. */
+    /**
+     * The unpaired nodes of a side grouped by cross-section: one group in
+     * 2D, one per z (to @p tolerance) in 3D, where the swept mesh repeats
+     * the 2D joint's nodes at every slice position.
+     */
+    template <int dim>
+    std::vector<std::vector<const SideNode<dim> *>>
+    unpaired_by_section(const std::vector<SideNode<dim>> &nodes,
+                        const std::vector<bool>          &taken,
+                        const double                      tolerance)
+    {
+      std::vector<const SideNode<dim> *> unpaired;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        if (!taken[k])
+          unpaired.push_back(&nodes[k]);
+      if constexpr (dim == 2)
+        return {unpaired};
+      else
+        {
+          std::sort(unpaired.begin(), unpaired.end(), [](auto a, auto b) {
+            return a->position[2] < b->position[2];
+          });
+          std::vector<std::vector<const SideNode<dim> *>> sections;
+          for (const SideNode<dim> *node : unpaired)
+            {
+              if (sections.empty() ||
+                  node->position[2] - sections.back().front()->position[2] >
+                    tolerance)
+                sections.emplace_back();
+              sections.back().push_back(node);
+            }
+          return sections;
+        }
+    }
+
+    /**
+     * The nodes of both sides that have no coincident partner, paired
+     * where they mirror each other; in 3D cross-section by cross-section
+     * (a side-A section without side-B nodes at its z leaves its nodes
+     * free).
+     */
     template <int dim>
     std::vector<ContactNode<dim>>
     pair_beyond_common_part(const std::vector<SideNode<dim>> &nodes_a,
@@ -253,37 +333,43 @@ namespace FloorBlock::Contact
                             const unsigned int                joint,
                             PairingSummary                   &summary)
     {
-      if constexpr (dim != 2)
+      std::vector<SideNode<dim>> common;
+      for (unsigned int k = 0; k < nodes_a.size(); ++k)
+        if (taken_a[k])
+          common.push_back(nodes_a[k]);
+      const JointLine line = joint_line(common);
+      const auto      sections_a =
+        unpaired_by_section(nodes_a, taken_a, tolerance);
+      const auto sections_b = unpaired_by_section(nodes_b, taken_b, tolerance);
+      const auto section_z  = [](const auto &section) {
+        if constexpr (dim == 2)
+          return 0.;
+        else
+          return section.front()->position[2];
+      };
+      std::vector<ContactNode<dim>> pairs;
+      std::vector<bool> b_section_used(sections_b.size(), false);
+      for (const auto &section_a : sections_a)
         {
-          for (unsigned int k = 0; k < nodes_a.size(); ++k)
-            if (!taken_a[k])
-              throw InputError(joint_name + ": node at " +
-                               describe(nodes_a[k].position) +
-                               " has no coincident partner");
-          for (unsigned int k = 0; k < nodes_b.size(); ++k)
-            if (!taken_b[k])
-              throw InputError(joint_name + ": node at " +
-                               describe(nodes_b[k].position) +
-                               " has no coincident partner");
-          return {};
-        }
-      else
-        {
-          std::vector<SideNode<2>> common;
-          for (unsigned int k = 0; k < nodes_a.size(); ++k)
-            if (taken_a[k])
-              common.push_back(nodes_a[k]);
-          const JointLine line = joint_line(common);
-          const EndNodes  ends_a =
-            split_by_end(nodes_a, taken_a, line, tolerance, joint_name);
-          const EndNodes ends_b =
-            split_by_end(nodes_b, taken_b, line, tolerance, joint_name);
-          std::vector<ContactNode<2>> pairs;
+          // The side-B nodes of the same cross-section, if any.
+          static const std::vector<const SideNode<dim> *> none;
+          const std::vector<const SideNode<dim> *>       *section_b = &none;
+          for (unsigned int s = 0; s < sections_b.size(); ++s)
+            if (std::abs(section_z(sections_b[s]) - section_z(section_a)) <=
+                tolerance)
+              {
+                section_b         = &sections_b[s];
+                b_section_used[s] = true;
+              }
+          const EndNodes<dim> ends_a =
+            split_by_end(section_a, line, tolerance, joint_name);
+          const EndNodes<dim> ends_b =
+            split_by_end(*section_b, line, tolerance, joint_name);
           for (const auto &[end_a, end_b] :
                {std::make_pair(&ends_a.low, &ends_b.low),
                 std::make_pair(&ends_a.high, &ends_b.high)})
             {
-              const std::vector<ContactNode<2>> mirrored =
+              const std::vector<ContactNode<dim>> mirrored =
                 mirror_pairs(*end_a, *end_b, line, tolerance, joint);
               pairs.insert(pairs.end(), mirrored.begin(), mirrored.end());
               summary.n_mirrored += mirrored.size();
@@ -293,8 +379,17 @@ namespace FloorBlock::Contact
                   summary.n_free_b += end_b->size();
                 }
             }
-          return pairs;
         }
+      // Side-B sections without side-A nodes: free, unless they lie on
+      // the common part (non-matching meshes).
+      for (unsigned int s = 0; s < sections_b.size(); ++s)
+        if (!b_section_used[s])
+          {
+            const EndNodes<dim> ends_b =
+              split_by_end(sections_b[s], line, tolerance, joint_name);
+            summary.n_free_b += ends_b.low.size() + ends_b.high.size();
+          }
+      return pairs;
     }
   } // namespace
 
@@ -386,8 +481,8 @@ namespace FloorBlock::Contact
                         const dealii::Tensor<1, 2> &,
                         const double,
                         const unsigned int);
-  // 3D (issue 16): coincident nodes only; the mirrored fillet pairs of
-  // step 2 are 2D, and a 3D joint with unpaired nodes is refused.
+  // 3D: the joint swept along z (Geometry::extrude_assembly), its
+  // fillets mirrored cross-section by cross-section.
   template std::vector<ContactNode<3>>
   pair_joint_nodes(const Fem::FeSpace<3> &,
                    const dealii::types::boundary_id,

@@ -29,7 +29,8 @@ namespace FloorBlock::Contact
    *    of side A's nodal shape function along the joint (degree 1 and 2
    *    alike); normal = weighted mean of side A's outward face normals.
    *    They span the common part of the joint.
-   * 2. Nodes beyond either end of the common part (2D only): where the two
+   * 2. Nodes beyond either end of the common part (in 3D, a joint swept
+   *    along z, cross-section by cross-section): where the two
    *    sides leave the joint line as mirror images -- the top fillets of a
    *    vertical joint on a level floor, meshed with identical node heights
    *    by Geometry::write_gmsh_mesh -- each side-A node pairs with the

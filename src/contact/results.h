@@ -30,7 +30,11 @@ namespace FloorBlock::Contact
     bool exact_traction = false;
   };
 
-  /** @brief Post-processed forces of one joint (2D: per metre out of plane). */
+  /**
+   * @brief Post-processed forces of one joint, per metre of face (2D: the
+   * plane-strain model's metre; 3D: the totals over the face length
+   * divided by it, make_swept_joint_reports()).
+   */
   struct JointReport
   {
     std::string name;
@@ -38,7 +42,10 @@ namespace FloorBlock::Contact
     double normal_force = 0.;
     /** Integrated shear traction along the tangent (-n_y, n_x) (N/m). */
     double shear_force = 0.;
-    /** Length of the closed part (m); area = length x b. */
+    /**
+     * Length of the closed part (m); area = length x b in the 2D reading
+     * over the support width. 3D: the contact area over the face length.
+     */
     double closed_length = 0.;
     /**
      * Location uncertainty of the closed part's ends (m): over the ends
@@ -50,21 +57,41 @@ namespace FloorBlock::Contact
     /** Largest nodal normal traction (Pa) and where (m). */
     double           peak_normal_stress = 0.;
     dealii::Point<2> peak_position;
+    /** 3D: z of the pointwise peak (m); 0 in 2D. */
+    double peak_position_z = 0.;
     /** Largest normal traction averaged over ContactSolverSettings::averaging_length (Pa). */
     double averaged_peak_normal_stress = 0.;
     double averaging_length            = 0.;
     /** normal_force / closed_length, 0 when open (Pa). */
     double      mean_normal_stress = 0.;
     StateCounts counts;
+    /** 3D: the cross-section nearest the middle of the face. */
     std::vector<JointNodeSample> profile;
+    /**
+     * 3D scenes: length of face the joint runs along (m); the contact
+     * area is closed_length x face_length, the total normal force
+     * normal_force x face_length. 0 in 2D.
+     */
+    double face_length = 0.;
+
+    /** @brief True for a joint of a 3D scene (face_length > 0). */
+    bool
+    swept() const
+    {
+      return face_length > 0.;
+    }
   };
 
-  /** @brief Global equilibrium check of one converged state (2D, N/m). */
+  /**
+   * @brief Global equilibrium check of one converged state, per metre of
+   * face (N/m; 3D: the totals over the face length divided by it; 2D: the
+   * z components are 0).
+   */
   struct ForceBalance
   {
-    dealii::Tensor<1, 2> applied_load;
+    dealii::Tensor<1, 3> applied_load;
     /** Dirichlet reactions plus the forces on rigid obstacles (N/m). */
-    dealii::Tensor<1, 2> support_reaction;
+    dealii::Tensor<1, 3> support_reaction;
     /** |applied + reaction| / (|applied| + sum of |nodal reactions|) (-). */
     double relative_imbalance = 0.;
   };
@@ -94,6 +121,10 @@ namespace FloorBlock::Contact
     StateCounts  counts;
     ForceBalance balance;
     std::vector<JointReport>                                      joints;
+    /**
+     * Rigid-body fit of every body; 3D: the x-y translation and the
+     * rotation about z, averaged over the volume (u_z is not kept).
+     */
     std::map<dealii::types::material_id, Fem::RigidMotion<2>> motions;
     double wall_time = 0.; ///< s
   };

@@ -4,12 +4,13 @@
 
 namespace FloorBlock::Contact
 {
-  dealii::Tensor<1, 2>
-  uplift_displacement(const UpliftSettings   &settings,
-                      const double            stage_factor,
-                      const dealii::Point<2> &position)
+  template <int dim>
+  dealii::Tensor<1, dim>
+  uplift_displacement(const UpliftSettings     &settings,
+                      const double              stage_factor,
+                      const dealii::Point<dim> &position)
   {
-    dealii::Tensor<1, 2> displacement;
+    dealii::Tensor<1, dim> displacement;
     const double         dx = position[0] - settings.pivot_x;
     const double         dy = position[1] - settings.pivot_y;
     switch (settings.mode)
@@ -45,4 +46,13 @@ namespace FloorBlock::Contact
       }
     return displacement;
   }
+
+  template dealii::Tensor<1, 2>
+  uplift_displacement(const UpliftSettings &,
+                      const double,
+                      const dealii::Point<2> &);
+  template dealii::Tensor<1, 3>
+  uplift_displacement(const UpliftSettings &,
+                      const double,
+                      const dealii::Point<3> &);
 } // namespace FloorBlock::Contact

@@ -17,9 +17,13 @@ namespace FloorBlock::Contact
    * @param[in] settings Uplift mode and magnitude.
    * @param[in] stage_factor Fraction of the stage reached (-).
    * @param[in] position Reference position (m).
+   *
+   * 3D (an assembly swept along z, Geometry::extrude_assembly): the same
+   * motion of every cross-section, u_z = 0; x and y as in 2D.
    */
-  dealii::Tensor<1, 2>
-  uplift_displacement(const UpliftSettings  &settings,
-                      const double           stage_factor,
-                      const dealii::Point<2> &position);
+  template <int dim>
+  dealii::Tensor<1, dim>
+  uplift_displacement(const UpliftSettings     &settings,
+                      const double              stage_factor,
+                      const dealii::Point<dim> &position);
 } // namespace FloorBlock::Contact

@@ -7,11 +7,25 @@
 
 namespace FloorBlock::Fem
 {
-  std::map<dealii::types::material_id, RigidMotion<2>>
-  fit_rigid_motions(const FeSpace<2>                            &space,
+  namespace
+  {
+    /** |r|^2 of the x-y part: the polar moment about the z axis. */
+    template <int dim>
+    double
+    in_plane_norm_square(const dealii::Tensor<1, dim> &vector)
+    {
+      if constexpr (dim == 2)
+        return vector.norm_square();
+      else
+        return vector[0] * vector[0] + vector[1] * vector[1];
+    }
+  } // namespace
+
+  template <int dim>
+  std::map<dealii::types::material_id, RigidMotion<dim>>
+  fit_rigid_motions(const FeSpace<dim>                          &space,
                     const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
-    constexpr int dim = 2;
     // Integrals over each body: area, first moments of position and
     // displacement, the moment x cross u and the polar moment |x|^2.
     struct Moments
@@ -46,7 +60,7 @@ namespace FloorBlock::Fem
             body.position += w * x;
             body.displacement += w * values[q];
             body.cross += w * (x[0] * values[q][1] - x[1] * values[q][0]);
-            body.radius += w * x.norm_square();
+            body.radius += w * in_plane_norm_square<dim>(x);
           }
       }
 
@@ -62,10 +76,17 @@ namespace FloorBlock::Fem
           body.cross - (centroid[0] * body.displacement[1] -
                         centroid[1] * body.displacement[0]);
         const double inertia =
-          body.radius - body.area * centroid.norm_square();
+          body.radius - body.area * in_plane_norm_square(centroid);
         motion.rotation   = inertia > 0. ? moment / inertia : 0.;
         motions[material] = motion;
       }
     return motions;
   }
+
+  template std::map<dealii::types::material_id, RigidMotion<2>>
+  fit_rigid_motions(const FeSpace<2> &,
+                    const dealii::TrilinosWrappers::MPI::Vector &);
+  template std::map<dealii::types::material_id, RigidMotion<3>>
+  fit_rigid_motions(const FeSpace<3> &,
+                    const dealii::TrilinosWrappers::MPI::Vector &);
 } // namespace FloorBlock::Fem

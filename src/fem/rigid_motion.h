@@ -15,7 +15,10 @@ namespace FloorBlock::Fem
   {
     /** Area-weighted mean displacement of the body (m). */
     dealii::Tensor<1, dim> translation;
-    /** Rotation about the body's centroid, counter-clockwise (rad, 2D). */
+    /**
+     * Rotation about the body's centroid, counter-clockwise in the x-y
+     * plane (rad): 2D, or about the z axis (the face) in 3D.
+     */
     double rotation = 0.;
   };
 
@@ -26,11 +29,15 @@ namespace FloorBlock::Fem
    * with \f$r\f$ the position relative to the centroid (small rotations).
    * Integrals, not sums over vertices: a graded mesh would otherwise
    * weight its finely meshed corners more than the rest of the body.
-   * @param[in] space FE space (2D).
+   * In 3D the rotation is the one about the z axis (the face direction of
+   * a swept assembly), fitted from the x-y parts of r and u: the 2D
+   * rotation of every cross-section, averaged over the volume.
+   * @param[in] space FE space.
    * @param[in] solution Displacement (m).
    * @return One entry per material id present in the mesh.
    */
-  std::map<dealii::types::material_id, RigidMotion<2>>
-  fit_rigid_motions(const FeSpace<2>                            &space,
+  template <int dim>
+  std::map<dealii::types::material_id, RigidMotion<dim>>
+  fit_rigid_motions(const FeSpace<dim>                          &space,
                     const dealii::TrilinosWrappers::MPI::Vector &solution);
 } // namespace FloorBlock::Fem

@@ -171,4 +171,5 @@ namespace FloorBlock::Fem
   }
 
   template class StoredElasticSystem<2>;
+  template class StoredElasticSystem<3>;
 } // namespace FloorBlock::Fem

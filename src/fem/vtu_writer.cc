@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cmath>
+#include <type_traits>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -18,7 +19,11 @@ namespace FloorBlock::Fem
     /** Value of the contact_state field away from contact nodes. */
     constexpr double no_contact_node = -1.;
 
-    /** Stress fields evaluated from the displacement gradient per cell. */
+    /**
+     * Stress fields evaluated from the displacement gradient per cell, 2D
+     * plane strain: the in-plane components, the out-of-plane stress, von
+     * Mises of the full state and the in-plane principal stresses.
+     */
     class StressPostprocessor : public dealii::DataPostprocessor<2>
     {
     public:
@@ -85,11 +90,72 @@ namespace FloorBlock::Fem
     private:
       const ElasticModel<2> &model;
     };
+
+    /**
+     * 3D stress fields per cell: the six components and von Mises (the
+     * principal stresses need an eigen-solve per point and are left out).
+     */
+    class SolidStressPostprocessor : public dealii::DataPostprocessor<3>
+    {
+    public:
+      explicit SolidStressPostprocessor(const ElasticModel<3> &model)
+        : model(model)
+      {}
+
+      void
+      evaluate_vector_field(
+        const dealii::DataPostprocessorInputs::Vector<3> &inputs,
+        std::vector<dealii::Vector<double>> &computed) const override
+      {
+        const auto cell = inputs.template get_cell<3>();
+        const Material::ElasticLaw<3> &law =
+          model.laws.at(cell->material_id());
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            dealii::Tensor<2, 3> gradient;
+            for (unsigned int c = 0; c < 3; ++c)
+              gradient[c] = inputs.solution_gradients[q][c];
+            const dealii::SymmetricTensor<2, 3> stress =
+              law.stress(dealii::symmetrize(gradient));
+            const dealii::SymmetricTensor<2, 3> deviator =
+              dealii::deviator(stress);
+            computed[q](0) = stress[0][0];
+            computed[q](1) = stress[1][1];
+            computed[q](2) = stress[2][2];
+            computed[q](3) = stress[0][1];
+            computed[q](4) = stress[1][2];
+            computed[q](5) = stress[0][2];
+            computed[q](6) = std::sqrt(1.5 * (deviator * deviator));
+          }
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"stress_xx",
+                "stress_yy",
+                "stress_zz",
+                "stress_xy",
+                "stress_yz",
+                "stress_xz",
+                "von_mises"};
+      }
+
+      dealii::UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return dealii::update_gradients;
+      }
+
+    private:
+      const ElasticModel<3> &model;
+    };
   } // namespace
 
+  template <int dim>
   void
-  write_vtu_increment(const FeSpace<2>                            &space,
-                      const ElasticModel<2>                       &model,
+  write_vtu_increment(const FeSpace<dim>                          &space,
+                      const ElasticModel<dim>                     &model,
                       const dealii::TrilinosWrappers::MPI::Vector &solution,
                       const std::vector<dealii::types::global_dof_index> &state_dofs,
                       const std::vector<double>                   &states,
@@ -110,19 +176,26 @@ namespace FloorBlock::Fem
     for (const auto &cell : dof_handler.active_cell_iterators())
       material(cell->active_cell_index()) = cell->material_id();
 
-    dealii::DataOut<2> data_out;
+    dealii::DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
-      vector_kind(2,
+      vector_kind(dim,
                   dealii::DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(displacement,
-                             std::vector<std::string>(2, "displacement"),
-                             dealii::DataOut<2>::type_dof_data,
+                             std::vector<std::string>(dim, "displacement"),
+                             dealii::DataOut<dim>::type_dof_data,
                              vector_kind);
-    data_out.add_data_vector(contact_state,
-                             std::vector<std::string>{"contact_state",
-                                                      "contact_state_unused"});
-    const StressPostprocessor stress(model);
+    // The state sits on each contact node's x DoF; the other components
+    // are placeholders, named apart in 3D.
+    std::vector<std::string> state_names{"contact_state"};
+    for (unsigned int c = 1; c < dim; ++c)
+      state_names.push_back(dim == 2 ? std::string("contact_state_unused") :
+                                       "contact_state_unused_" +
+                                         std::to_string(c));
+    data_out.add_data_vector(contact_state, state_names);
+    using Postprocessor =
+      std::conditional_t<dim == 2, StressPostprocessor, SolidStressPostprocessor>;
+    const Postprocessor stress(model);
     data_out.add_data_vector(displacement, stress);
     data_out.add_data_vector(material, "material_id");
     data_out.build_patches(space.mapping(), space.degree());
@@ -149,4 +222,21 @@ namespace FloorBlock::Fem
     dealii::DataOutBase::write_pvd_record(pvd, records);
     write_file_atomically(directory + "/solution.pvd", pvd.str());
   }
+
+  template void
+  write_vtu_increment(const FeSpace<2> &,
+                      const ElasticModel<2> &,
+                      const dealii::TrilinosWrappers::MPI::Vector &,
+                      const std::vector<dealii::types::global_dof_index> &,
+                      const std::vector<double> &,
+                      const std::string &,
+                      std::vector<std::pair<double, std::string>> &);
+  template void
+  write_vtu_increment(const FeSpace<3> &,
+                      const ElasticModel<3> &,
+                      const dealii::TrilinosWrappers::MPI::Vector &,
+                      const std::vector<dealii::types::global_dof_index> &,
+                      const std::vector<double> &,
+                      const std::string &,
+                      std::vector<std::pair<double, std::string>> &);
 } // namespace FloorBlock::Fem

@@ -17,8 +17,9 @@ namespace FloorBlock::Fem
    *
    * Fields: displacement (m), stress components incl. the plane-strain
    * out-of-plane stress (Pa), von Mises stress (Pa), in-plane principal
-   * stresses (Pa), material id, and a nodal debug field contact_state
-   * (-1 no contact node, 0 open, 1 stick, 2 slip).
+   * stresses (Pa) (3D: the six stress components and von Mises), material
+   * id, and a nodal debug field contact_state (-1 no contact node, 0
+   * open, 1 stick, 2 slip).
    *
    * @param[in] space FE space.
    * @param[in] model Elastic laws per material id.
@@ -28,9 +29,10 @@ namespace FloorBlock::Fem
    * @param[in] directory Output folder (created if missing).
    * @param[in,out] records (index, file name) of the increments written.
    */
+  template <int dim>
   void
-  write_vtu_increment(const FeSpace<2>                            &space,
-                      const ElasticModel<2>                       &model,
+  write_vtu_increment(const FeSpace<dim>                          &space,
+                      const ElasticModel<dim>                     &model,
                       const dealii::TrilinosWrappers::MPI::Vector &solution,
                       const std::vector<dealii::types::global_dof_index> &state_dofs,
                       const std::vector<double>                   &states,

@@ -39,6 +39,18 @@ namespace FloorBlock::Material
     static ElasticLaw
     from_bulk_shear(const double bulk_modulus, const double shear_modulus);
 
+    /**
+     * @brief The same material in dimension dim as @p law in another (the
+     * 2D plane-strain law of a scene swept into 3D): equal Lamé constants,
+     * copied, not recomputed.
+     */
+    template <int other_dim>
+    static ElasticLaw
+    same_material_as(const ElasticLaw<other_dim> &law)
+    {
+      return ElasticLaw(law.lame_lambda(), law.shear_modulus());
+    }
+
     /** @brief First Lamé constant (Pa). */
     double
     lame_lambda() const;

@@ -77,6 +77,50 @@ namespace FloorBlock::Output
     }
   } // namespace
 
+  namespace
+  {
+    /**
+     * A joint of a 3D scene: forces per metre of face and in total, the
+     * contact as an area and as a length over the face, the peak's 3D
+     * position; no "over b" figures (the 2D reading of a support width).
+     */
+    json
+    swept_joint_json(const Contact::JointReport &joint,
+                     const std::string          &kind,
+                     const json                 &bodies)
+    {
+      return {{"name", joint.name},
+              {"kind", kind},
+              {"blocks", bodies},
+              {"normal_force_N_per_m", joint.normal_force},
+              {"normal_force_N", joint.normal_force * joint.face_length},
+              {"shear_force_N_per_m", joint.shear_force},
+              {"contact_area_m2", joint.closed_length * joint.face_length},
+              {"contact_length_m", joint.closed_length},
+              {"face_length_m", joint.face_length},
+              {"sigma_max_Pa", joint.peak_normal_stress},
+              {"sigma_max_position_m",
+               {joint.peak_position[0], joint.peak_position[1],
+                joint.peak_position_z}},
+              {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress},
+              {"averaging_length_m", joint.averaging_length},
+              {"sigma_mean_Pa", joint.mean_normal_stress},
+              {"state", state_summary(joint.counts)},
+              {"n_stick", joint.counts.n_stick},
+              {"n_slip", joint.counts.n_slip},
+              {"n_open", joint.counts.n_open}};
+    }
+
+    /** The swept joints' face length (m), 0 for a 2D result. */
+    double
+    face_length_of(const Contact::SolveResult &result)
+    {
+      if (result.increments.empty() || result.increments.back().joints.empty())
+        return 0.;
+      return result.increments.back().joints.front().face_length;
+    }
+  } // namespace
+
   std::string
   state_summary(const Contact::StateCounts &counts)
   {
@@ -143,6 +187,9 @@ namespace FloorBlock::Output
              const double                support_width)
   {
     const auto name = Compare::parse_joint_name(joint.name);
+    if (joint.swept())
+      return swept_joint_json(joint, name.kind,
+                              joint_bodies(name.kind, name.number, n_blocks));
     return {{"name", joint.name},
             {"kind", name.kind},
             {"blocks", joint_bodies(name.kind, name.number, n_blocks)},
@@ -202,11 +249,21 @@ namespace FloorBlock::Output
             {"rotation_rad", motion.rotation}};
       }
 
+    const double      face_length = face_length_of(result);
+    const std::string forces_per =
+      face_length > 0. ?
+        fmt::format("3D scene, face length L = {} m: *_N_per_m per metre of "
+                    "face (the joint's total over L, divided by L), "
+                    "normal_force_N the total; contact_area_m2 the closed "
+                    "area of the joint surface, contact_length_m = "
+                    "contact_area_m2 / L",
+                    face_length) :
+        "*_N_per_m per metre of face; *_N_over_b and contact_area_m2 over "
+        "the support width b";
     json fem = {{"status", report.status},
             {"status_text", report.status_text},
             {"numbering", numbering_note},
-            {"forces_per", "*_N_per_m per metre of face; *_N_over_b and "
-                           "contact_area_m2 over the support width b"},
+            {"forces_per", forces_per},
             {"b_m", report.support_width},
             {"n_dofs", result.n_dofs},
             {"n_contact_pairs", result.n_contact_pairs},
@@ -240,12 +297,23 @@ namespace FloorBlock::Output
   std::string
   joints_csv(const Contact::SolveResult &result, const double support_width)
   {
+    // 3D: the areas are the joints' own, over the face length.
+    const double face_length = face_length_of(result);
+    const double area_width  = face_length > 0. ? face_length : support_width;
+    const std::string units =
+      face_length > 0. ?
+        fmt::format("3D scene, face length L = {} m: forces per metre of "
+                    "face (totals over L divided by L); contact_area_m2 the "
+                    "joint's closed area, contact_length_m = area / L.",
+                    face_length) :
+        fmt::format("Forces per metre of face; areas over b = {} m.",
+                    support_width);
     std::string csv = fmt::format(
-      "# {}\n# Forces per metre of face; areas over b = {} m.\n"
+      "# {}\n# {}\n"
       "increment,stage,stage_factor,joint,kind,normal_force_N_per_m,"
       "shear_force_N_per_m,contact_length_m,contact_area_m2,sigma_max_Pa,"
       "sigma_max_averaged_Pa,sigma_mean_Pa,n_stick,n_slip,n_open\n",
-      numbering_note, support_width);
+      numbering_note, units);
     for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
         const auto &increment = result.increments[k];
@@ -256,7 +324,7 @@ namespace FloorBlock::Output
             k + 1, Output::stage_name(increment.stage), increment.stage_factor,
             joint.name, Compare::parse_joint_name(joint.name).kind,
             joint.normal_force, joint.shear_force, joint.closed_length,
-            joint.closed_length * support_width,
+            joint.closed_length * area_width,
             joint.peak_normal_stress, joint.averaged_peak_normal_stress,
             joint.mean_normal_stress, joint.counts.n_stick,
             joint.counts.n_slip, joint.counts.n_open);
@@ -270,10 +338,13 @@ namespace FloorBlock::Output
     std::string csv = fmt::format(
       "# {}\n# One row per node pair of a joint, in order along the joint; "
       "normal traction > 0 in compression, shear along the joint tangent "
-      "(-n_y, n_x) of the pair's side-A normal n.\n"
+      "(-n_y, n_x) of the pair's side-A normal n{}.\n"
       "increment,stage,stage_factor,joint,node,x_m,y_m,arc_position_m,gap_m,"
       "normal_traction_Pa,shear_traction_Pa,state\n",
-      numbering_note);
+      numbering_note,
+      face_length_of(result) > 0. ?
+        "; 3D scene: the cross-section nearest the middle of the face" :
+        "");
     for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
         const auto &increment = result.increments[k];

@@ -30,6 +30,13 @@ namespace FloorBlock::Output
       meshed ? fmt::format("{} cells, ", mesh.n_cells) : "",
       result.n_dofs, increments,
       force_balance_text(report.force_balance));
+    if (!result.increments.empty() &&
+        !result.increments.back().joints.empty() &&
+        result.increments.back().joints.front().swept())
+      text += fmt::format(
+        "  3D, face length {} m: N per metre of face, contact = contact "
+        "area / face length\n",
+        result.increments.back().joints.front().face_length);
     text += fmt::format("  {:<12} {:>12} {:>14} {:>12} {:>14} {:>10}\n",
                         "joint", "N (kN/m)", "contact (mm)",
                         "peak (MPa)", "averaged (MPa)", "state");

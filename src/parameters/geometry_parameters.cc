@@ -57,14 +57,24 @@ namespace FloorBlock::Parameters
     prm.declare_entry("Dimension", "2", dealii::Patterns::Selection("2|3"),
                       "2: plane strain, per metre of face. 3: the 2D "
                       "assembly extruded along the face over Face length "
-                      "(issue 16; src/geometry/extruded_assembly.h). So far "
-                      "only `mesh` builds 3D scenes (meshes/<scene>_3d.msh); "
-                      "the commands that solve refuse them. Units: none.");
+                      "(issue 16; src/geometry/extruded_assembly.h): `mesh` "
+                      "builds it (meshes/<scene>_3d.msh) and `solve` solves "
+                      "it on one process, reporting forces per metre of "
+                      "face; run, converge and sweep --fem refuse it. "
+                      "Units: none.");
     prm.declare_entry("Face length", "4.5",
                       Double(smallest_length, largest_length),
                       "Length of the 3D assembly along the face (z), used "
                       "when Dimension = 3; 4.5 m = 3 b for the default "
                       "support width. Units: m.");
+    prm.declare_entry("End faces", "plane strain",
+                      dealii::Patterns::Selection("plane strain|free"),
+                      "Boundary condition on the two end faces of a 3D "
+                      "scene (z = 0 and z = Face length), used when "
+                      "Dimension = 3. plane strain: u_z = 0 on both, x and "
+                      "y free, as if the face continued beyond them; the 3D "
+                      "answer is then the 2D one. free: no condition, the "
+                      "assembly ends there. Units: none.");
     prm.leave_subsection();
   }
 
@@ -81,6 +91,9 @@ namespace FloorBlock::Parameters
     corner_rounding_radius = prm.get_double("Corner rounding radius");
     dimension              = std::stoul(prm.get("Dimension"));
     face_length            = prm.get_double("Face length");
+    end_faces              = prm.get("End faces") == "free" ?
+                               Geometry::EndFaces::free :
+                               Geometry::EndFaces::plane_strain;
     prm.leave_subsection();
 
     // A fillet larger than a quarter edge would consume the straight joint

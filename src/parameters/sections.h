@@ -4,6 +4,7 @@
 
 #include <contact/joint_law_kind.h>
 #include <geometry/bedding_kinds.h>
+#include <geometry/end_faces.h>
 #include <solver/solver_kinds.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -32,6 +33,7 @@ namespace FloorBlock::Parameters
     double       corner_rounding_radius;  ///< m, 0 = sharp corners
     unsigned int dimension;               ///< 2 (plane strain) or 3 (extruded)
     double       face_length;             ///< m, along the face (z), 3D only
+    Geometry::EndFaces end_faces;         ///< 3D only: plane strain or free
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -41,6 +41,8 @@ namespace FloorBlock::Parameters
                       "direct wins far above one solve's break-even: "
                       "default scene, 79k DoFs, 16 s against 90 s with ML "
                       "AMG + GMRES; 312k DoFs direct in 81 s and 2.5 GB. "
+                      "3D scenes: at most 80000, where UMFPACK's fill "
+                      "makes GMRES + ML as fast (Scene::max_direct_dofs_3d). "
                       "Units: none.");
     prm.declare_entry("Direct solver", "automatic",
                       Selection("automatic|KLU|UMFPACK"),

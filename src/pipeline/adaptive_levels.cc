@@ -123,7 +123,7 @@ namespace FloorBlock::Pipeline
     indicator_time = 0.;
 
     SolveExtras own = extras;
-    own.inspect     = [&](const Contact::ContactSolver &solver) {
+    own.inspect     = [&](const Contact::ContactSolver<2> &solver) {
       if (extras.inspect)
         extras.inspect(solver);
       dealii::Timer timer;

@@ -111,7 +111,7 @@ namespace FloorBlock::Pipeline
 
       SolveExtras extras;
       double      indicator_time = 0.;
-      extras.inspect = [&](const Contact::ContactSolver &solver) {
+      extras.inspect = [&](const Contact::ContactSolver<2> &solver) {
         // Also for a solve that stopped early, whose result has no DoFs.
         record.n_dofs          = solver.space().dof_handler().n_dofs();
         record.n_contact_pairs = solver.contact_nodes().size();

@@ -4,7 +4,7 @@
 namespace FloorBlock::Pipeline
 {
   void
-  write_deformed_view(const Contact::ContactSolver &solver,
+  write_deformed_view(const Contact::ContactSolver<2> &solver,
                       const std::string            &png_path)
   {
     const auto &nodes     = solver.contact_nodes();

@@ -13,6 +13,6 @@ namespace FloorBlock::Pipeline
    * from UDEC. Writes nothing when no increment has converged.
    */
   void
-  write_deformed_view(const Contact::ContactSolver &solver,
+  write_deformed_view(const Contact::ContactSolver<2> &solver,
                       const std::string            &png_path);
 } // namespace FloorBlock::Pipeline

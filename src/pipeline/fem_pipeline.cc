@@ -6,6 +6,8 @@
 #include <common/units.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
+#include <common/input_error.h>
+#include <geometry/extruded_assembly.h>
 #include <geometry/refinement_manifolds.h>
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
@@ -14,6 +16,7 @@
 #include <scene/floor_contact_problem.h>
 #include <scene/mesh_refinement.h>
 #include <scene/rigid_inputs.h>
+#include <scene/swept_contact_problem.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_out.h>
@@ -25,6 +28,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace FloorBlock::Pipeline
 {
@@ -75,6 +79,57 @@ namespace FloorBlock::Pipeline
                              "smaller block side",
                              overlap)};
     }
+
+    /**
+     * The contact solve on a mesh and what it writes: fem.json (with the
+     * failure record if the load path stopped), joints.csv,
+     * joint_profiles.csv and the VTU series. @p after_solve sees the
+     * solver once the loading path ended, converged or not.
+     */
+    template <int dim>
+    FemOutcome
+    solve_on_mesh(
+      const Parameters::ScenarioParameters                       &scene,
+      const dealii::Triangulation<dim>                           &triangulation,
+      const Contact::ContactProblem<dim>                         &problem,
+      const Geometry::MeshStatistics                             &mesh,
+      const Output::ResultFolder                                 &folder,
+      const bool                                                  write_vtu,
+      const std::function<void(const Contact::ContactSolver<dim> &)> &after_solve)
+    {
+      FemOutcome outcome;
+      outcome.mesh = mesh;
+      Contact::ContactSolver<dim> solver(
+        triangulation,
+        problem,
+        Scene::contact_solver_settings(scene,
+                                       write_vtu ? folder.path_of("vtu") : ""));
+      std::string status_text = "every loading increment converged";
+      std::optional<Output::SolveFailureRecord> failure_record;
+      try
+        {
+          outcome.result    = solver.run();
+          outcome.converged = true;
+        }
+      catch (const Contact::ContactSolveFailure &failure)
+        {
+          status_text    = failure_text(failure);
+          failure_record = Output::SolveFailureRecord{
+            scene.solver.max_cutbacks, failure.attempts,
+            failure.partial_result.n_failed_newton_iterations};
+          outcome.result = failure.partial_result;
+        }
+      after_solve(solver);
+
+      outcome.report = make_fem_report(
+        outcome.result, scene, "elastic FEM", outcome.converged, status_text,
+        failure_record ? failure_record->cutbacks_before_failure : 0);
+      outcome.report.failure       = failure_record;
+      outcome.report.joint_overlap = overlap_check(outcome.result, scene);
+      outcome.report.mesh          = outcome.mesh;
+      write_fem_files(outcome, folder);
+      return outcome;
+    }
   } // namespace
 
   FemOutcome
@@ -83,6 +138,13 @@ namespace FloorBlock::Pipeline
               const bool                            write_vtu,
               const SolveExtras &                   extras)
   {
+    if (scene.geometry.dimension == 3)
+      {
+        if (!extras.local_sizes.empty() || extras.inspect)
+          throw std::logic_error("solve_scene: size requests and solver "
+                                 "inspection are 2D only");
+        return solve_swept_scene(scene, folder, write_vtu);
+      }
     if (Scene::uses_rigid_blocks(scene))
       return solve_rigid_scene(scene, folder);
     dealii::Triangulation<2>       triangulation;
@@ -119,10 +181,11 @@ namespace FloorBlock::Pipeline
     return mesh;
   }
 
+  template <int dim>
   void
-  write_solved_mesh(const dealii::Triangulation<2> &triangulation,
-                    const std::string              &msh_path,
-                    Geometry::MeshStatistics       &statistics)
+  write_solved_mesh(const dealii::Triangulation<dim> &triangulation,
+                    const std::string                &msh_path,
+                    Geometry::MeshStatistics         &statistics)
   {
     std::ostringstream msh;
     dealii::GridOut().write_msh(triangulation, msh);
@@ -130,6 +193,15 @@ namespace FloorBlock::Pipeline
     statistics.n_cells = triangulation.n_active_cells();
     statistics.n_nodes = triangulation.n_used_vertices();
   }
+
+  template void
+  write_solved_mesh(const dealii::Triangulation<2> &,
+                    const std::string &,
+                    Geometry::MeshStatistics &);
+  template void
+  write_solved_mesh(const dealii::Triangulation<3> &,
+                    const std::string &,
+                    Geometry::MeshStatistics &);
 
   FemOutcome
   solve_meshed_scene(const Parameters::ScenarioParameters &scene,
@@ -139,41 +211,73 @@ namespace FloorBlock::Pipeline
                      const bool                            write_vtu,
                      const SolveExtras                    &extras)
   {
-    FemOutcome outcome;
-    outcome.mesh = mesh;
-    Contact::ContactSolver solver(
+    return solve_on_mesh<2>(
+      scene,
       triangulation,
       Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
-      Scene::contact_solver_settings(scene,
-                                     write_vtu ? folder.path_of("vtu") : ""));
-    std::string status_text = "every loading increment converged";
-    std::optional<Output::SolveFailureRecord> failure_record;
-    try
-      {
-        outcome.result    = solver.run();
-        outcome.converged = true;
-      }
-    catch (const Contact::ContactSolveFailure &failure)
-      {
-        status_text    = failure_text(failure);
-        failure_record = Output::SolveFailureRecord{
-          scene.solver.max_cutbacks, failure.attempts,
-          failure.partial_result.n_failed_newton_iterations};
-        outcome.result = failure.partial_result;
-      }
-    if (extras.inspect)
-      extras.inspect(solver);
-    if (write_vtu)
-      write_deformed_view(solver, folder.path_of("deformed.png"));
+      mesh,
+      folder,
+      write_vtu,
+      [&](const Contact::ContactSolver<2> &solver) {
+        if (extras.inspect)
+          extras.inspect(solver);
+        if (write_vtu)
+          write_deformed_view(solver, folder.path_of("deformed.png"));
+      });
+  }
 
-    outcome.report = make_fem_report(
-      outcome.result, scene, "elastic FEM", outcome.converged, status_text,
-      failure_record ? failure_record->cutbacks_before_failure : 0);
-    outcome.report.failure       = failure_record;
-    outcome.report.joint_overlap = overlap_check(outcome.result, scene);
-    outcome.report.mesh          = outcome.mesh;
-    write_fem_files(outcome, folder);
-    return outcome;
+  void
+  check_swept_scene(const Parameters::ScenarioParameters &scene)
+  {
+    if (Scene::uses_rigid_blocks(scene))
+      throw InputError("Model/Blocks", "rigid (chosen or by auto)",
+                       "elastic when Geometry/Dimension = 3: the rigid-block "
+                       "model is 2D");
+    // deal.II extrudes coarse meshes only, and refining the swept mesh
+    // would put the fillets' new nodes on chords, not on the arcs the 2D
+    // refinement follows: the 3D scene takes the Gmsh mesh as it is.
+    if (const unsigned int n_refinements = Scene::global_refinements(scene))
+      throw InputError("Mesh/Global refinements",
+                       std::to_string(n_refinements) +
+                         " (from the scene, \"auto\" included)",
+                       "0 when Geometry/Dimension = 3: the 3D mesh is the "
+                       "2D Gmsh mesh swept along the face; refine it with "
+                       "Mesh/Corner size and Mesh/Slice size");
+  }
+
+  Geometry::MeshStatistics
+  mesh_swept_scene(const Parameters::ScenarioParameters &scene,
+                   const Output::ResultFolder           &folder,
+                   dealii::Triangulation<3>             &solid)
+  {
+    check_swept_scene(scene);
+    dealii::Triangulation<2>       section;
+    Geometry::MeshStatistics       mesh = mesh_scene(scene, folder, {}, section);
+    dealii::Timer                  timer;
+    Geometry::extrude_assembly(
+      section,
+      Geometry::uniform_slices(scene.geometry.face_length,
+                               scene.mesh.slice_size),
+      solid);
+    write_solved_mesh(solid, folder.path_of("mesh.msh"), mesh);
+    mesh.wall_time += timer.wall_time();
+    return mesh;
+  }
+
+  FemOutcome
+  solve_swept_scene(const Parameters::ScenarioParameters &scene,
+                    const Output::ResultFolder           &folder,
+                    const bool                            write_vtu)
+  {
+    check_swept_scene(scene);
+    dealii::Triangulation<3>       solid;
+    const Geometry::MeshStatistics mesh =
+      mesh_swept_scene(scene, folder, solid);
+    const Contact::ContactProblem<3> problem = Scene::swept_contact_problem(
+      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
+      scene.geometry.end_faces);
+    return solve_on_mesh<3>(scene, solid, problem, mesh, folder, write_vtu,
+                         [](const Contact::ContactSolver<3> &) {});
   }
 
   void

@@ -13,6 +13,7 @@
 
 namespace FloorBlock::Contact
 {
+  template <int dim>
   class ContactSolver;
 } // namespace FloorBlock::Contact
 
@@ -37,7 +38,7 @@ namespace FloorBlock::Pipeline
      * not; its solution() is then the last converged state), e.g. to
      * evaluate error indicators while the solution still exists.
      */
-    std::function<void(const Contact::ContactSolver &)> inspect;
+    std::function<void(const Contact::ContactSolver<2> &)> inspect;
   };
 
   /**
@@ -49,6 +50,8 @@ namespace FloorBlock::Pipeline
    * A scene with Model/Blocks = rigid (or auto choosing rigid) is solved
    * by solve_rigid_scene() instead (rigid_pipeline.h): no mesh, no VTU,
    * the same fem.json and joints.csv; fem.json's "model" names the model.
+   * A 3D scene (Geometry/Dimension = 3) goes to solve_swept_scene(); the
+   * extras are 2D only.
    */
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
@@ -72,10 +75,11 @@ namespace FloorBlock::Pipeline
    * @brief Writes @p triangulation as Gmsh .msh to @p msh_path (atomically)
    * and puts its cell and node counts into @p statistics.
    */
+  template <int dim>
   void
-  write_solved_mesh(const dealii::Triangulation<2> &triangulation,
-                    const std::string              &msh_path,
-                    Geometry::MeshStatistics       &statistics);
+  write_solved_mesh(const dealii::Triangulation<dim> &triangulation,
+                    const std::string                &msh_path,
+                    Geometry::MeshStatistics         &statistics);
 
   /**
    * @brief solve_scene() on a mesh the caller made (e.g. refined by deal.II
@@ -89,6 +93,39 @@ namespace FloorBlock::Pipeline
                      const Output::ResultFolder           &folder,
                      const bool                            write_vtu,
                      const SolveExtras                    &extras);
+
+  /**
+   * @brief Throws InputError, naming the parameter, if the 3D scene
+   * cannot be solved: the rigid-block model (2D only) or global
+   * refinements (Mesh/Global refinements, "auto" included), which the
+   * swept mesh does not take. Commands call it before writing anything.
+   */
+  void
+  check_swept_scene(const Parameters::ScenarioParameters &scene);
+
+  /**
+   * @brief The 3D scene's mesh (Geometry/Dimension = 3): the Gmsh mesh of
+   * the scene's cross-section swept along the face over Geometry/Face
+   * length in slices of Mesh/Slice size (Geometry::extrude_assembly),
+   * written into @p folder as mesh.msh. Throws as check_swept_scene().
+   */
+  Geometry::MeshStatistics
+  mesh_swept_scene(const Parameters::ScenarioParameters &scene,
+                   const Output::ResultFolder           &folder,
+                   dealii::Triangulation<3>             &solid);
+
+  /**
+   * @brief solve_scene() for a 3D scene, on one process: the mesh of
+   * mesh_swept_scene(), the scene's 2D contact problem swept along the
+   * face with Geometry/End faces (Scene::swept_contact_problem), the same
+   * contact solver and files, forces per metre of face and contact areas
+   * (Contact::make_swept_joint_reports). No deformed.png (a 2D picture).
+   * Throws as check_swept_scene().
+   */
+  FemOutcome
+  solve_swept_scene(const Parameters::ScenarioParameters &scene,
+                    const Output::ResultFolder           &folder,
+                    const bool                            write_vtu);
 
   /** @brief fem.json and joints.csv of a solve, into @p folder. */
   void

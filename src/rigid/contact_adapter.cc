@@ -80,10 +80,12 @@ namespace FloorBlock::RigidBlocks
           const bool a_is_block = is_block(geometry[j].side_a);
           const bool b_is_block = is_block(geometry[j].side_b);
           // force_on_side_b acts on B; A receives its opposite.
-          if (b_is_block && !a_is_block)
-            balance.support_reaction += increment.joints[j].force_on_side_b;
-          else if (a_is_block && !b_is_block)
-            balance.support_reaction -= increment.joints[j].force_on_side_b;
+          const auto &force = increment.joints[j].force_on_side_b;
+          for (unsigned int c = 0; c < 2; ++c)
+            if (b_is_block && !a_is_block)
+              balance.support_reaction[c] += force[c];
+            else if (a_is_block && !b_is_block)
+              balance.support_reaction[c] -= force[c];
         }
       balance.relative_imbalance = increment.relative_imbalance;
       return balance;

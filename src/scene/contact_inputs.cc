@@ -1,6 +1,7 @@
 #include <scene/analytic_inputs.h>
 #include <scene/contact_inputs.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -148,7 +149,10 @@ namespace FloorBlock::Scene
     settings.newton.relative_tolerance = solver.newton_tolerance;
     settings.newton.max_iterations     = solver.max_newton_iterations;
     settings.linear.kind            = solver.linear_solver;
-    settings.linear.max_direct_dofs = solver.max_direct_dofs;
+    settings.linear.max_direct_dofs =
+      scene.geometry.dimension == 3 ?
+        std::min(solver.max_direct_dofs, max_direct_dofs_3d) :
+        solver.max_direct_dofs;
     settings.linear.max_reuse_iterations = solver.max_reuse_iterations;
     settings.linear.direct_solver   = solver.direct_solver;
     settings.max_cutbacks           = solver.max_cutbacks;

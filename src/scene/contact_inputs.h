@@ -26,7 +26,20 @@ namespace FloorBlock::Scene
   FloorProblemSettings
   floor_problem_settings(const Parameters::ScenarioParameters &scene);
 
-  /** @brief Numerical settings; VTU files go to @p vtu_folder if not empty. */
+  /**
+   * Largest 3D system that Solver/Linear solver = automatic solves
+   * directly. UMFPACK's fill grows fast in 3D: on the plane-strain scene
+   * (0.25 m slices, 44 factorisations) the linear solves took 6.4, 26 and
+   * 117 s at 28.9k, 48.1k and 86.6k DoFs (time ~ N^2.6, 2.2 GB at 86.6k),
+   * GMRES + ML 29, 54 and 109 s (~ N^1.2, 0.7 GB): even near 80k DoFs.
+   */
+  constexpr unsigned int max_direct_dofs_3d = 80000;
+
+  /**
+   * @brief Numerical settings; VTU files go to @p vtu_folder if not empty.
+   * A 3D scene solves directly up to the smaller of Solver/Max direct DoFs
+   * and max_direct_dofs_3d.
+   */
   Contact::ContactSolverSettings
   contact_solver_settings(const Parameters::ScenarioParameters &scene,
                           const std::string &                   vtu_folder);

@@ -141,7 +141,7 @@ namespace FloorBlock::Verification
     Contact::ContactSolverSettings numerics;
     numerics.fe_degree   = settings.fe_degree;
     numerics.linear.kind = Solver::LinearSolverKind::direct;
-    Contact::ContactSolver      solver(mesh, scene, numerics);
+    Contact::ContactSolver<2> solver(mesh, scene, numerics);
     const Contact::SolveResult  solved = solver.run();
     const Contact::JointReport &report =
       solved.increments.back().joints.at(0);

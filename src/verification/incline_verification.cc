@@ -57,7 +57,7 @@ namespace FloorBlock::Verification
     InclineResult result;
     result.weight =
       density * gravity_acceleration * block_width * block_height;
-    Contact::ContactSolver solver(mesh,
+    Contact::ContactSolver<2> solver(mesh,
                                   incline_scene(settings),
                                   verification_settings());
     try

@@ -53,7 +53,7 @@ namespace FloorBlock::Verification
     Contact::ContactSolverSettings numerics =
       verification_settings(settings.fe_degree);
     numerics.linear.kind = settings.linear_solver;
-    Contact::ContactSolver     solver(mesh, scene, numerics);
+    Contact::ContactSolver<2> solver(mesh, scene, numerics);
     const Contact::SolveResult solved = solver.run();
     PatchResult                result;
     result.increment        = solved.increments.back();

@@ -118,7 +118,7 @@ namespace FloorBlock::Verification
     scene.joints = {interface};
     scene.steps  = {0, 1, 0};
 
-    Contact::ContactSolver     solver(mesh, scene, verification_settings());
+    Contact::ContactSolver<2> solver(mesh, scene, verification_settings());
     const Contact::SolveResult solved = solver.run();
     result.n_dofs = solved.n_dofs;
 

@@ -87,7 +87,7 @@ namespace FloorBlock::Verification
     // alone, frictionless bedding and an opening joint would leave the
     // right block a horizontal mechanism with no unique answer.
     scene.steps = {0, 2, 0};
-    Contact::ContactSolver solver(mesh, scene, verification_settings());
+    Contact::ContactSolver<2> solver(mesh, scene, verification_settings());
     const Contact::SolveResult      solved = solver.run();
     const Contact::IncrementResult &last   = solved.increments.back();
     TwoBlocksResult                 result;

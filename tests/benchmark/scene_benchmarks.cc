@@ -286,7 +286,7 @@ namespace FloorBlock::Benchmark
           const Stopwatch clock;
           try
             {
-              Contact::ContactSolver solver(
+              Contact::ContactSolver<2> solver(
                 level.triangulation,
                 Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
                 Scene::contact_solver_settings(scene, ""));

@@ -66,7 +66,7 @@ main(int argc, char **argv)
   if (argc > 2 && std::string(argv[2]) != "-")
     settings.output_directory = argv[2];
   clock.restart();
-  Contact::ContactSolver solver(mesh, Scene::make_floor_contact_problem(scene_settings), settings);
+  Contact::ContactSolver<2> solver(mesh, Scene::make_floor_contact_problem(scene_settings), settings);
   const Contact::SolveResult result = solver.run();
   const double               solve_time = clock.wall_time();
 

@@ -1,5 +1,7 @@
 // Issue 16: the joints of a 3D assembly (the 2D Gmsh mesh swept along the
 // face, Geometry::extrude_assembly) pair node to node as in 2D.
+#include "rounded_mesh.h"
+
 #include <contact/joint_pairing.h>
 #include <fem/fe_space.h>
 #include <geometry/assembly_mesher.h>
@@ -119,6 +121,70 @@ namespace
           }
         const double area = side_area(mesh, Ids::bedding_block_side(block));
         EXPECT_NEAR(weight, area, 1e-12 * area) << "block " << block;
+      }
+  }
+
+  // Rounded corners (the default scene's 1 cm fillets): the top fillets of
+  // every vertical joint pair with their mirror images cross-section by
+  // cross-section, so the 3D pairs are the 2D ones at every slice position
+  // (three for two slices): as many coincident, mirrored and free nodes,
+  // the same initial gaps, the joint's in-plane normal, and the mirrored
+  // weights (fillet length projected on the joint line, times the length
+  // of face a section stands for) adding up to the 2D ones times the face
+  // length. Before, a 3D fillet node had no partner and the joint threw.
+  TEST(JointPairing3d, RoundedFilletsPairWithTheirMirrorImagesInEverySection)
+  {
+    constexpr unsigned int n_blocks    = 2;
+    constexpr double       rounding    = 0.01;  // m
+    constexpr double       corner_size = 0.005; // m
+    constexpr unsigned int n_sections  = 3;     // two 0.5 m slices
+    const Geometry::AssemblyDescription description =
+      Testing::level_assembly(n_blocks, rounding, corner_size);
+    dealii::Triangulation<2> section;
+    Testing::mesh_assembly(description, "fillet_pairing_3d", section);
+    dealii::Triangulation<3> solid;
+    Geometry::extrude_assembly(section,
+                               Geometry::uniform_slices(face_length, 0.5),
+                               solid);
+    const Fem::FeSpace<2> plane_space(section, 1);
+    const Fem::FeSpace<3> space(solid, 1);
+    for (unsigned int joint = 1; joint <= n_blocks; ++joint)
+      {
+        Contact::PairingSummary plane_summary, summary;
+        const auto plane_pairs = Contact::pair_joint_nodes(
+          plane_space, Ids::vertical_joint_face_side(joint),
+          Ids::vertical_joint_free_side(joint), joint, &plane_summary);
+        const auto pairs = Contact::pair_joint_nodes(
+          space, Ids::vertical_joint_face_side(joint),
+          Ids::vertical_joint_free_side(joint), joint, &summary);
+        ASSERT_GT(plane_summary.n_mirrored, 0u) << "joint " << joint;
+        EXPECT_EQ(summary.n_coincident,
+                  n_sections * plane_summary.n_coincident);
+        EXPECT_EQ(summary.n_mirrored, n_sections * plane_summary.n_mirrored);
+        EXPECT_EQ(summary.n_free_a, n_sections * plane_summary.n_free_a);
+        EXPECT_EQ(summary.n_free_b, n_sections * plane_summary.n_free_b);
+        double plane_weight = 0., weight = 0., plane_gaps = 0., gaps = 0.;
+        for (const auto &pair : plane_pairs)
+          if (pair.initial_gap > 0.)
+            {
+              plane_weight += pair.weight;
+              plane_gaps += pair.initial_gap;
+            }
+        for (const auto &pair : pairs)
+          if (pair.initial_gap > 0.)
+            {
+              weight += pair.weight;
+              gaps += pair.initial_gap;
+              EXPECT_NEAR(pair.normal[0], plane_pairs.front().normal[0],
+                          1e-12);
+              EXPECT_NEAR(pair.normal[1], plane_pairs.front().normal[1],
+                          1e-12);
+              EXPECT_EQ(pair.normal[2], 0.);
+            }
+        ASSERT_GT(plane_gaps, 0.);
+        EXPECT_NEAR(gaps, n_sections * plane_gaps, 1e-12 * gaps);
+        EXPECT_NEAR(weight, face_length * plane_weight, 1e-12 * weight)
+          << "joint " << joint;
       }
   }
 

@@ -53,7 +53,7 @@ namespace FloorBlock::Testing
     solver_settings.averaging_length = floor_case.averaging_length;
     solver_settings.extrapolate_increments =
       floor_case.extrapolate_increments;
-    Contact::ContactSolver solver(mesh,
+    Contact::ContactSolver<2> solver(mesh,
                                   Scene::make_floor_contact_problem(settings),
                                   solver_settings);
     const Contact::SolveResult result = solver.run();

@@ -55,7 +55,7 @@ namespace
     scene.joints                      = {joint};
     scene.uplift                      = uplift;
     scene.steps                       = {1, 0, n_uplift};
-    ContactSolver solver(mesh, scene, Testing::test_settings());
+    ContactSolver<2> solver(mesh, scene, Testing::test_settings());
     return solver.run();
   }
 
