@@ -20,13 +20,20 @@ namespace FloorBlock::Analytic
       // Rows a_ij = r_i^(l_j - 1) / p_i; solve sum_j c_j a_ij ~ 1 by the
       // normal equations (at most 4 terms), Gaussian elimination with
       // partial pivoting.
+      // Distances in units of the largest one: the columns r^(l_j - 1)
+      // then stay within a few decades of each other, where in metres
+      // (1e-6 to 1e-3 m) they span many more and the normal equations
+      // lose the digits that tell nearby exponents apart.
+      double scale = 0.;
+      for (const RadialSample &s : samples)
+        scale = std::max(scale, s.distance);
       const std::size_t                n = lambdas.size();
       std::vector<std::vector<double>> normal(n, std::vector<double>(n + 1, 0.));
       for (const RadialSample &s : samples)
         {
           std::vector<double> row(n);
           for (std::size_t j = 0; j < n; ++j)
-            row[j] = std::pow(s.distance, lambdas[j] - 1.) / s.traction;
+            row[j] = std::pow(s.distance / scale, lambdas[j] - 1.) / s.traction;
           for (std::size_t j = 0; j < n; ++j)
             {
               for (std::size_t k = 0; k < n; ++k)
@@ -68,6 +75,8 @@ namespace FloorBlock::Analytic
             value -= normal[j][m] * k[m];
           k[j] = value / normal[j][j];
         }
+      for (std::size_t j = 0; j < n; ++j)
+        k[j] /= std::pow(scale, lambdas[j] - 1.); // back to metres
       fit.k1 = k[0];
       fit.k2 = n > 1 ? k[1] : 0.;
       double squares = 0.;

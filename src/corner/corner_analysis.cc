@@ -160,11 +160,21 @@ namespace FloorBlock::Corner
 
     const std::size_t n = analysis.levels.size();
     if (n >= 2 && analysis.theory.covered)
-      analysis.fit = fit_corner(
-        analysis.levels[n - 1].profile.samples,
-        fit_range(analysis.levels[n - 1].profile,
-                  analysis.levels[n - 2].profile, tolerance),
-        analysis.theory);
+      {
+        const ZoomLevel &last = analysis.levels[n - 1];
+        const ZoomLevel &before = analysis.levels[n - 2];
+        analysis.fit = fit_corner(
+          last.profile.samples,
+          fit_range(last.profile, before.profile, tolerance), analysis.theory);
+        // The invariant over its own converged range.
+        analysis.invariant_range = converged_range(
+          last.invariant_samples, before.invariant_samples, tolerance,
+          fit_from_spacings * last.profile.edge_spacing,
+          invariant_to_peak_fraction * last.profile.peak_distance);
+        analysis.invariant_fit =
+          fit_invariant(last.invariant_samples, analysis.invariant_range,
+                        analysis.theory);
+      }
     if (n >= 1)
       {
         analysis.closed_form_peak = analysis.levels.back().closed_form_peak;

@@ -98,6 +98,27 @@ namespace FloorBlock::Corner
     return {fit.k1, fit.k2};
   }
 
+  Analytic::AsymptoticFit
+  fit_invariant(const std::vector<Analytic::RadialSample> &samples,
+                const DistanceRange                        &range,
+                const CornerTheory                         &theory)
+  {
+    std::vector<double> further = further_exponents(theory);
+    // Scan between the neighbouring known exponents, clear of both: next
+    // to the constant (lambda = 1) the term d^(lambda1 - 1) ~ 1 +
+    // (lambda1 - 1) ln d merges with it.
+    double below = 0.;
+    if (theory.exponent > 1.)
+      {
+        further.insert(further.begin(), 1.);
+        below = 1.;
+      }
+    const double gap = theory.next_exponent - below;
+    return Analytic::expansion_fit(samples_within(samples, range), further,
+                                   below + 0.02 * gap,
+                                   theory.next_exponent - 0.02 * gap);
+  }
+
   CornerFit
   fit_corner(const std::vector<Analytic::RadialSample> &samples,
              const DistanceRange                        &range,

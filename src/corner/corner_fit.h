@@ -73,6 +73,17 @@ namespace FloorBlock::Corner
     double validity_distance = 0.;
   };
 
+  /**
+   * @brief lambda1 of the mean pressure near the edge: the theory's
+   * expansion as for the traction, plus a constant (the lambda = 1 mode,
+   * a uniform stress, is part of the bulk field although it puts no
+   * traction on a smooth edge).
+   */
+  Analytic::AsymptoticFit
+  fit_invariant(const std::vector<Analytic::RadialSample> &samples,
+                const DistanceRange                        &range,
+                const CornerTheory                         &theory);
+
   /** @brief The fits of @p samples over @p range for @p theory. */
   CornerFit
   fit_corner(const std::vector<Analytic::RadialSample> &samples,

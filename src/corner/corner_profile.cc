@@ -109,7 +109,10 @@ namespace FloorBlock::Corner
             profile.peak_distance = distance;
           }
         if (distance > 0.)
-          profile.samples.push_back({distance, nodes[k].normal_traction});
+          {
+            profile.samples.push_back({distance, nodes[k].normal_traction});
+            profile.sample_positions.push_back(nodes[k].position);
+          }
       }
     return profile;
   }

@@ -58,6 +58,8 @@ namespace FloorBlock::Corner
      *  distance from the end (m), nearest first; a node at the end itself
      *  (distance 0) is left out, the peak counts it. */
     std::vector<Analytic::RadialSample> samples;
+    /** Reference position of each sample's node (m). */
+    std::vector<dealii::Point<2>> sample_positions;
   };
 
   /**

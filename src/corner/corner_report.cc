@@ -145,6 +145,17 @@ namespace FloorBlock::Corner
         {"K2_theory_exponents", fit.intensity.second},
         {"K_units", fmt::format("Pa m^{:.4g}", 1. - theory.exponent)},
         {"one_term_validity_m", number(fit.validity_distance)}}},
+      {"invariant_fit",
+       {{"invariant", "mean pressure -(sigma_xx + sigma_yy + sigma_zz) / 3 at "
+                      "the joint side's nodes"},
+        {"range_from_m", analysis.invariant_range.from},
+        {"range_to_m", analysis.invariant_range.to},
+        {"n_samples", analysis.invariant_fit.n_samples},
+        {"exponent", analysis.invariant_fit.lambda1},
+        {"exponent_difference",
+         analysis.invariant_fit.n_samples > 0 ?
+           analysis.invariant_fit.lambda1 - theory.exponent : 0.},
+        {"rms_relative_residual", number(analysis.invariant_fit.rms_relative_residual)}}},
       {"converged", analysis.converged},
       {"stop_reason", analysis.stop_reason},
       {"levels", levels},
@@ -190,6 +201,17 @@ namespace FloorBlock::Corner
                                     two, lead);
         }
     folder.write("corner_traction.csv", traction);
+
+    std::string pressure = "distance_from_edge_m,mean_pressure_Pa,fitted\n";
+    if (!analysis.levels.empty())
+      for (const auto &sample : analysis.levels.back().invariant_samples)
+        pressure += fmt::format(
+          "{:.9e},{:.9e},{}\n", sample.distance, sample.traction,
+          sample.distance >= analysis.invariant_range.from &&
+              sample.distance <= analysis.invariant_range.to ?
+            1 :
+            0);
+    folder.write("corner_mean_pressure.csv", pressure);
 
     std::string level_table =
       "level,n_dofs,cell_size_m,sigma_max_Pa,sigma_max_change,K1,K1_change,"
@@ -295,6 +317,12 @@ namespace FloorBlock::Corner
         analysis.fit.range.from, analysis.fit.range.to,
         analysis.fit.intensity.first, 1. - analysis.theory.exponent,
         analysis.figures.back().intensity_change);
+    if (analysis.theory.covered && analysis.invariant_fit.n_samples > 0)
+      text += fmt::format("mean pressure: fitted exponent {:.4f} over "
+                          "{:.3e}-{:.3e} m\n",
+                          analysis.invariant_fit.lambda1,
+                          analysis.invariant_range.from,
+                          analysis.invariant_range.to);
     else
       text += "theory: " + analysis.theory.why_not + "\n";
     for (const auto &point : rounding.points)

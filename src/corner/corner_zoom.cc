@@ -1,4 +1,8 @@
 #include <corner/corner_zoom.h>
+#include <contact/contact_solver.h>
+#include <corner/side_mean_pressure.h>
+#include <geometry/ids.h>
+#include <material/elastic_law.h>
 #include <pipeline/closed_form_comparison.h>
 #include <scene/closed_forms.h>
 #include <scene/mesh_refinement.h>
@@ -25,6 +29,42 @@ namespace FloorBlock::Corner
   {
     return done;
   }
+
+  namespace
+  {
+    /**
+     * The value of each face whose two vertices are both profile samples
+     * (one joint side's nodes; coincident sides share positions, mirrored
+     * fillets do not), at the mean of their distances from the contact's
+     * end, to 1e-12 m (the zoom's cells stay above 3e-7 m); sorted by
+     * distance.
+     */
+    std::vector<Analytic::RadialSample>
+    matched_values(const CornerProfile          &profile,
+                   const std::vector<FaceValue> &values)
+    {
+      constexpr double reach = 1e-12;
+      const auto distance_of = [&](const dealii::Point<2> &at) {
+        for (std::size_t k = 0; k < profile.samples.size(); ++k)
+          if (profile.sample_positions[k].distance(at) <= reach)
+            return profile.samples[k].distance;
+        return -1.;
+      };
+      std::vector<Analytic::RadialSample> matched;
+      for (const FaceValue &value : values)
+        {
+          const double first = distance_of(value.first);
+          if (first < 0.)
+            continue;
+          const double second = distance_of(value.second);
+          if (second >= 0.)
+            matched.push_back({0.5 * (first + second), value.value});
+        }
+      std::sort(matched.begin(), matched.end(),
+                [](const auto &a, const auto &b) { return a.distance < b.distance; });
+      return matched;
+    }
+  } // namespace
 
   bool
   CornerZoom::can_refine() const
@@ -94,17 +134,32 @@ namespace FloorBlock::Corner
     ZoomLevel            record;
     record.level = static_cast<unsigned int>(done.size());
     Pipeline::FemOutcome outcome;
+    // The mean pressure on both joint sides while the solution exists.
+    std::vector<FaceValue>   side_pressures;
+    Pipeline::SolveExtras    extras;
+    extras.inspect = [&](const Contact::ContactSolver<2> &solver) {
+      const auto law = Material::ElasticLaw<2>::from_youngs_poisson(
+        scene.material.youngs_modulus(), scene.material.poissons_ratio());
+      for (const auto side : {Geometry::Ids::vertical_joint_free_side(site.joint),
+                              Geometry::Ids::vertical_joint_face_side(site.joint)})
+        {
+          const auto values = mean_pressure_on_side(solver.space(),
+                                                    solver.solution(), side, law);
+          side_pressures.insert(side_pressures.end(), values.begin(),
+                                values.end());
+        }
+    };
     if (done.empty())
       {
         record.requested_size = corner_size;
-        outcome               = adaptive.solve_next(folder, false);
+        outcome               = adaptive.solve_next(folder, false, extras);
       }
     else
       {
         record.requested_size = corner_size * std::exp2(-double(record.level));
         outcome = adaptive.solve_refined_toward(window(record.requested_size),
                                                 zoom_growth_rate, folder,
-                                                false);
+                                                false, extras);
       }
     if (!outcome.converged || outcome.result.increments.empty())
       return std::nullopt;
@@ -126,6 +181,7 @@ namespace FloorBlock::Corner
     if (!found)
       throw std::logic_error("CornerZoom: no joint '" + site.joint_name +
                              "' in the solution");
+    record.invariant_samples = matched_values(record.profile, side_pressures);
     for (const auto &joint :
          Pipeline::compare_with_closed_forms(
            outcome, Scene::evaluate_closed_forms(scene), scene)

@@ -31,6 +31,13 @@ namespace FloorBlock::Corner
     /** The joint's relative rotation (rad) and Eq. 6.51/6.53's contact
      *  length (m) and sigma_max (Pa) with this level's Q and rotation
      *  (Compare::compare_vertical_joints). */
+    /**
+     * Mean pressure (Pa, compression > 0) of the cells along the joint
+     * side the profile lists (mean_pressure_on_side, at the cell centres)
+     * against the distance of their face's midpoint from the contact's
+     * end, nearest first.
+     */
+    std::vector<Analytic::RadialSample> invariant_samples;
     double relative_rotation          = 0.;
     double closed_form_contact_length = 0.;
     double closed_form_peak           = 0.;

@@ -35,12 +35,14 @@ TEST(CornerCommand, ReportsStateTheoryFitLevelsAndTheRoundingStudy)
   ASSERT_EQ(process.exit_code, 0) << process.output;
   for (const char *name :
        {"corner.json", "corner_traction.csv", "corner_levels.csv",
+        "corner_mean_pressure.csv",
         "rounding_study.csv", "corner_traction.png", "rounding_study.png",
         "summary.json", "zoom/level_3/fem.json",
         "rounding/radius_0.02_m/level_0/fem.json"})
     EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
   for (const char *name : {"corner.json", "corner_traction.csv",
-                           "corner_levels.csv", "rounding_study.csv"})
+                           "corner_levels.csv", "corner_mean_pressure.csv",
+                           "rounding_study.csv"})
     EXPECT_FALSE(has_non_finite_value(read_text(output + "/" + name))) << name;
 
   const json report = read_json(output + "/corner.json");
@@ -89,6 +91,7 @@ TEST(CornerCommand, ReportsStateTheoryFitLevelsAndTheRoundingStudy)
   EXPECT_DOUBLE_EQ(study[1]["sigma_max_Pa"].get<double>(),
                    levels.back()["sigma_max_Pa"].get<double>());
   EXPECT_GT(study[0]["sigma_max_Pa"].get<double>(), 0.);
+  EXPECT_TRUE(report["invariant_fit"].contains("exponent"));
   EXPECT_TRUE(report.contains("rounding_power_fitted"));
   EXPECT_TRUE(report.contains("sigma_max_falls_with_radius"));
   EXPECT_GT(report["closed_form"]["sigma_max_Pa"].get<double>(), 0.);

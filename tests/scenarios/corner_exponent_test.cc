@@ -46,6 +46,10 @@ namespace
     EXPECT_NEAR(fit["exponent"].get<double>(),
                 report["theory"]["exponent"].get<double>(), exponent_tolerance)
       << fit;
+    // The mean pressure's own fit (a constant under the edge's terms).
+    EXPECT_NEAR(report["invariant_fit"]["exponent"].get<double>(),
+                report["theory"]["exponent"].get<double>(), exponent_tolerance)
+      << report["invariant_fit"];
     const json &last = report["levels"].back();
     EXPECT_LE(last["K1_change"].get<double>(), intensity_tolerance);
     EXPECT_GT(last["K1"].get<double>(), 0.);

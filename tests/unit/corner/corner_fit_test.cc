@@ -83,3 +83,15 @@ TEST(CornerFit, ConvergedRangeIsWhereTwoLevelsAgree)
   EXPECT_EQ(apart.n_samples, 0u);
   EXPECT_EQ(apart.to, 0.);
 }
+
+// The mean pressure carries a constant (the uniform lambda = 1 mode) under
+// the edge's terms; the fit must find lambda1 = 3/2 beside it, not run off
+// to where d^(lambda1 - 1) merges with the constant.
+TEST(CornerFit, InvariantFitFindsTheEdgeExponentBesideAConstant)
+{
+  std::vector<Analytic::RadialSample> samples;
+  for (double d = 2e-5; d <= 2.4e-4; d *= 1.02)
+    samples.push_back({d, 9.8e7 + 4e9 * std::sqrt(d) - 2e11 * d});
+  const auto fit = Corner::fit_invariant(samples, {2e-5, 2.4e-4, 0}, edge_theory());
+  EXPECT_NEAR(fit.lambda1, 1.5, 1e-3);
+}
