@@ -163,7 +163,10 @@ namespace FloorBlock::Corner
        {{"sigma_max_Pa", analysis.closed_form_peak},
         {"contact_length_m", last ? last->closed_form_contact_length : 0.},
         {"field_sigma_max_Pa", last ? last->profile.peak_traction : 0.},
-        {"matching_averaging_length_m", analysis.matching_averaging_length}}},
+        {"matching_averaging_length_m",
+         analysis.matching_averaging_length > 0. ?
+           json(analysis.matching_averaging_length) :
+           json(nullptr)}}},
       {"compliant_length_E_over_kn_m", kn > 0. ? scene.material.youngs_modulus() / kn : 0.},
       {"rounding_study", study},
       {"rounding_power_fitted", rounding.fitted_power},
@@ -301,11 +304,15 @@ namespace FloorBlock::Corner
                         analysis.converged ? "converged" : "NOT converged",
                         analysis.stop_reason);
     text += fmt::format("peak traction {:.4e} Pa, {:.3e} m from the contact "
-                        "end; Eq. 6.53 sigma_max {:.4e} Pa; the field's mean "
-                        "over {:.3e} m from the end equals it\n",
+                        "end; Eq. 6.53 sigma_max {:.4e} Pa; {}\n",
                         last.profile.peak_traction, last.profile.peak_distance,
                         analysis.closed_form_peak,
-                        analysis.matching_averaging_length);
+                        analysis.matching_averaging_length > 0. ?
+                          fmt::format("the field's mean over {:.3e} m from "
+                                      "the end equals it",
+                                      analysis.matching_averaging_length) :
+                          std::string("no averaging length makes the field's "
+                                      "mean equal it"));
     if (analysis.theory.covered)
       text += fmt::format(
         "exponent: theory {:.4f} ({}), fitted {:.4f} (expansion), {:.4f} "

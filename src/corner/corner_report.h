@@ -14,7 +14,8 @@ namespace FloorBlock::Corner
   /**
    * @brief corner.json: the corner's site, state and theory, the fits of
    * the last level with their range, K1 per level, every level's figures,
-   * Eq. 6.53 against the field, and the rounding study (list
+   * Eq. 6.53 against the field (matching_averaging_length_m null where no
+   * length makes the field's mean equal it), and the rounding study (list
    * rounding_study of objects with radius_m and sigma_max_Pa).
    * Units in the keys.
    */
