@@ -129,27 +129,37 @@ namespace FloorBlock::Corner
                 intensity_change = relative_change(now.first, before.first);
                 analysis.figures.back().intensity        = now;
                 analysis.figures.back().intensity_change = intensity_change;
+                analysis.figures.back().exponent =
+                  fit_corner(record->profile.samples, range, analysis.theory)
+                    .expansion.lambda1;
               }
           }
         progress(fmt::format(
           "level {:2d}: {:6d} DoFs, cells {:.2e} m, {}, peak {:.4e} Pa "
-          "(change {:.2e}), K1 change {:.2e}, {:.1f} s",
+          "(change {:.2e}), K1 change {:.2e}, exponent {:.4f}, {:.1f} s",
           level, record->n_dofs, record->requested_size,
           to_string(record->profile.kind), record->profile.peak_traction,
           figures.peak_change, level > 0 ? intensity_change : 0.,
-          record->wall_time));
+          analysis.figures.back().exponent, record->wall_time));
         // Without a theory there is no K1: the peak alone decides.
+        const double exponent_change =
+          level > 1 && analysis.figures[level - 1].exponent > 0. ?
+            std::abs(analysis.figures[level].exponent -
+                     analysis.figures[level - 1].exponent) :
+            1.;
         if (n_calm_peaks >= 2 &&
             (!analysis.theory.covered ||
-             (intensity_change <= k_tolerance && fit_span >= smallest_fit_span)))
+             (intensity_change <= k_tolerance && fit_span >= smallest_fit_span &&
+              exponent_change <= converged_exponent_change)))
           {
             analysis.converged   = true;
             analysis.stop_reason =
               analysis.theory.covered ?
-                fmt::format("the peak changed by at most {} twice in a row "
-                            "and K1 by at most {}, over a fit range of a "
-                            "decade",
-                            tolerance, k_tolerance) :
+                fmt::format("the peak changed by at most {} twice in a row, "
+                            "K1 by at most {} and the fitted exponent by at "
+                            "most {}, over a fit range of a decade",
+                            tolerance, k_tolerance,
+                            converged_exponent_change) :
                 fmt::format("the peak changed by at most {} twice in a row",
                             tolerance);
             break;

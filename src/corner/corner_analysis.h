@@ -20,6 +20,8 @@ namespace FloorBlock::Corner
     /** Relative change of the peak and of K1 from the level before. */
     double peak_change      = 0.;
     double intensity_change = 0.;
+    /** The fitted exponent (fit_corner's expansion) on this level; 0 without a range. */
+    double exponent = 0.;
   };
 
   /** @brief Everything `floorblock corner` finds at one corner. */
@@ -53,7 +55,8 @@ namespace FloorBlock::Corner
    * @brief Zooms on @p scene's Corner/Joint floor-level corner until the
    * pointwise peak (twice in a row) and the leading intensity K1 (where
    * the theory covers the state, over a fit range of at least a decade)
-   * change by at most Corner/Converged change between levels, or the levels or
+   * change by at most Corner/Converged change between levels and the
+   * fitted exponent by at most converged_exponent_change, or the levels or
    * @p deadline (s of @p clock_start's timer) run out; then fits the last
    * level's traction near the contact's end (fit_corner) over the
    * distances where it agrees with the level before within Corner/
@@ -80,6 +83,14 @@ namespace FloorBlock::Corner
    * scan's lower end -- up to half).
    */
   constexpr double invariant_to_peak_fraction = 0.25;
+
+  /**
+   * Largest change of the fitted exponent between the last two levels at
+   * which the zoom may stop: K1 can settle within 2 % while the exponent
+   * still drifts (default scene, exact law: 1.445 on the level where K1
+   * first changed by 1.5 %, 1.48 three levels later).
+   */
+  constexpr double converged_exponent_change = 0.01;
 
   /**
    * Smallest ratio of the fit range's ends at which the zoom may stop: an

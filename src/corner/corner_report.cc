@@ -73,6 +73,7 @@ namespace FloorBlock::Corner
            {"sigma_max_change", figures.peak_change},
            {"K1", figures.intensity.first},
            {"K1_change", figures.intensity_change},
+           {"exponent", figures.exponent},
            {"averaged_peak_Pa", level.averaged_peak_stress},
            {"contact_length_m", level.closed_length},
            {"Q_N_per_m", level.normal_force}});
