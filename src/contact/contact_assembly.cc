@@ -3,6 +3,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+
 namespace FloorBlock::Contact
 {
   template <int dim>
@@ -49,6 +51,22 @@ namespace FloorBlock::Contact
   }
 
   template <int dim>
+  dealii::IndexSet
+  pair_dofs(const std::vector<ContactNode<dim>> &nodes,
+            const dealii::types::global_dof_index n_dofs)
+  {
+    dealii::IndexSet dofs(n_dofs);
+    for (const auto &group : pair_dof_groups(nodes))
+      {
+        std::vector<dealii::types::global_dof_index> sorted = group;
+        std::sort(sorted.begin(), sorted.end());
+        dofs.add_indices(sorted.begin(), sorted.end());
+      }
+    dofs.compress();
+    return dofs;
+  }
+
+  template <int dim>
   void
   assemble_contact(const std::vector<ContactNode<dim>>     &nodes,
                    const std::vector<JointResponse<dim>>   &responses,
@@ -58,8 +76,17 @@ namespace FloorBlock::Contact
   {
     const std::vector<std::vector<dealii::types::global_dof_index>> groups =
       pair_dof_groups(nodes);
+    // Every process holds every pair; the one owning side A's first DoF
+    // adds it (off-process rows reach their owner in compress()), so that
+    // a distributed system counts each pair once.
+    const dealii::IndexSet owned =
+      residual != nullptr ? residual->locally_owned_elements() :
+      matrix != nullptr   ? matrix->locally_owned_range_indices() :
+                            dealii::IndexSet();
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
+        if (!owned.is_element(nodes[p].dofs_a[0]))
+          continue;
         const JointResponse<dim> &response = responses[p];
         const double              weight   = nodes[p].weight;
         // Local order: side B components first (if deformable), then A;
@@ -131,6 +158,12 @@ namespace FloorBlock::Contact
                    dealii::TrilinosWrappers::MPI::Vector *);
   template std::vector<std::vector<dealii::types::global_dof_index>>
   pair_dof_groups(const std::vector<ContactNode<2>> &);
+  template dealii::IndexSet
+  pair_dofs(const std::vector<ContactNode<2>> &,
+            const dealii::types::global_dof_index);
+  template dealii::IndexSet
+  pair_dofs(const std::vector<ContactNode<3>> &,
+            const dealii::types::global_dof_index);
   template std::vector<JointResponse<3>>
   evaluate_contact(const std::vector<ContactNode<3>> &,
                    const std::vector<const CoulombJoint<3> *> &,

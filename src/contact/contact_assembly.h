@@ -3,6 +3,7 @@
 #include <contact/contact_node.h>
 #include <contact/joint_law.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -19,7 +20,8 @@ namespace FloorBlock::Contact
    *   null law (an exact-law pair, see ExactContact) leaves the pair's
    *   response at its default.
    * @param[in] histories One history per pair.
-   * @param[in] solution Displacement (m).
+   * @param[in] solution Displacement (m); on a distributed mesh a
+   *   ghosted vector that reads every pair's DoFs (pair_dofs()).
    */
   template <int dim>
   std::vector<JointResponse<dim>>
@@ -33,6 +35,8 @@ namespace FloorBlock::Contact
    * @p residual and their tangents to @p matrix (either may be null),
    * distributed with @p constraints. The matrix may be larger than the
    * residual (the exact law's system, displacements and multipliers).
+   * A pair is added by the process that owns its side-A x DoF only (on a
+   * distributed mesh every process holds every pair).
    */
   template <int dim>
   void
@@ -41,6 +45,15 @@ namespace FloorBlock::Contact
                    const dealii::AffineConstraints<double> &constraints,
                    dealii::TrilinosWrappers::SparseMatrix  *matrix,
                    dealii::TrilinosWrappers::MPI::Vector   *residual);
+
+  /**
+   * @brief Every DoF of every pair: what a process must read to evaluate
+   * all pairs (the ghosts of a distributed solution).
+   */
+  template <int dim>
+  dealii::IndexSet
+  pair_dofs(const std::vector<ContactNode<dim>> &nodes,
+            const dealii::types::global_dof_index n_dofs);
 
   /** @brief The DoFs of each pair, for the sparsity pattern. */
   template <int dim>

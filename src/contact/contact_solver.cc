@@ -49,21 +49,21 @@ namespace FloorBlock::Contact
     : problem(problem)
     , settings(settings)
     , fe_space(triangulation, settings.fe_degree)
-    , console(std::cout, settings.verbose)
+    , console(std::cout,
+              settings.verbose &&
+                dealii::Utilities::MPI::this_mpi_process(
+                  triangulation.get_communicator()) == 0)
     , timer(console,
             dealii::TimerOutput::never,
             dealii::TimerOutput::wall_times)
   {
-    // The pairing, the stored residual and the kept LU factors read and
-    // write only locally owned entries and decide per process: correct on
-    // one process per mesh, which is how sweeps and ladders run (MPI
-    // parallelism over cases). A distributed mesh is refused, not
-    // half-supported.
-    if (dealii::Utilities::MPI::n_mpi_processes(
-          fe_space.dof_handler().get_communicator()) != 1)
-      throw std::logic_error("ContactSolver needs the whole mesh on one "
-                             "process (a serial Triangulation); run cases "
-                             "in parallel instead");
+    // A distributed mesh (several processes): every process pairs and
+    // evaluates every joint node (joint_pairing.h, contact_assembly.h),
+    // the bulk and the linear algebra are distributed. The exact law's
+    // multipliers and the kept LU factors are not (yet): refused.
+    const bool distributed =
+      dealii::Utilities::MPI::n_mpi_processes(
+        fe_space.dof_handler().get_communicator()) > 1;
     dealii::TimerOutput::Scope scope(timer, "Contact: setup");
     std::vector<Fem::DirichletCondition<dim>> zero_conditions;
     for (const auto &support : problem.supports)
@@ -76,6 +76,14 @@ namespace FloorBlock::Contact
       Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
     // After the supports: a node they hold is ground for the crosspoints.
     setup_contact();
+    readable_dofs = fe_space.locally_relevant_dofs();
+    readable_dofs.add_indices(
+      pair_dofs(nodes, fe_space.dof_handler().n_dofs()));
+    // A process adds the pairs whose side A it owns: it must know whether
+    // the partner's DoFs, which another process may own, are held.
+    if (distributed)
+      homogeneous_constraints = Fem::make_constraints(
+        fe_space, zero_conditions, true, dirichlet_dofs, readable_dofs);
     Fem::make_sparsity(fe_space,
                        homogeneous_constraints,
                        pair_dof_groups(nodes),
@@ -86,7 +94,12 @@ namespace FloorBlock::Contact
     if (std::any_of(exact_laws.begin(),
                     exact_laws.end(),
                     [](const auto &law) { return law.has_value(); }))
-      setup_exact_system();
+      {
+        if (distributed)
+          throw std::logic_error(
+            "the exact (rigid) joint law runs on one process only");
+        setup_exact_system();
+      }
     if (exact)
       {
         // The exact law's saddle-point matrix: UMFPACK factorised it
@@ -98,7 +111,8 @@ namespace FloorBlock::Contact
         linear.min_umfpack_dofs             = 0;
         direct_solver = std::make_unique<Solver::ReusedFactorization>(linear);
       }
-    else if (Solver::uses_direct_solver(settings.linear,
+    else if (!distributed &&
+             Solver::uses_direct_solver(settings.linear,
                                         fe_space.dof_handler().n_dofs()))
       direct_solver =
         std::make_unique<Solver::ReusedFactorization>(settings.linear);
@@ -112,6 +126,7 @@ namespace FloorBlock::Contact
     update.reinit(owned, communicator);
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
+    readable_solution.reinit(owned, readable_dofs, communicator);
     // The members, not the constructor's arguments: it keeps references.
     post_processor = std::make_unique<IncrementPostProcessor<dim>>(
       fe_space,
@@ -477,11 +492,12 @@ namespace FloorBlock::Contact
   std::vector<JointResponse<dim>>
   ContactSolver<dim>::responses_at_iterate()
   {
+    readable_solution = current_solution;
     std::vector<JointResponse<dim>> responses =
       evaluate_contact(nodes,
                        penalty_start ? penalty_pair_laws : pair_laws,
                        working_history,
-                       current_solution);
+                       readable_solution);
     if (exact_equations())
       exact->evaluate(current_solution, working_history, responses);
     return responses;
@@ -646,8 +662,9 @@ namespace FloorBlock::Contact
     increment.stage_factor = state.stage_factor;
     increment.n_cutbacks   = state.n_cutbacks;
     increment.counts       = count_states(states_of(responses));
+    // readable_solution holds current_solution: responses_at_iterate().
     post_processor->describe(
-      state.factors, responses, current_solution, increment);
+      state.factors, responses, readable_solution, increment);
     last_change = current_solution;
     last_change -= committed_solution;
     commit(responses);
@@ -666,7 +683,7 @@ namespace FloorBlock::Contact
       {
         dealii::TimerOutput::Scope output_scope(timer, "Contact: output");
         post_processor->write_vtu(
-          responses, current_solution, settings.output_directory);
+          responses, readable_solution, settings.output_directory);
       }
     result.increments.push_back(increment);
   }

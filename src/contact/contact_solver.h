@@ -30,7 +30,8 @@ namespace FloorBlock::Contact
 {
   /**
    * @brief Quasi-static frictional multi-body contact, 2D plane strain
-   * (dim = 2) or 3D (dim = 3, one process): follows the loading path
+   * (dim = 2) or 3D (dim = 3; the compliant law also on a mesh
+   * distributed over processes): follows the loading path
    * gravity -> support pressure -> floor uplift in increments, each a
    * converged equilibrium, with automatic cutback.
    *
@@ -181,6 +182,8 @@ namespace FloorBlock::Contact
     std::vector<JointResponse<dim>> committed_responses;
     dealii::AffineConstraints<double> homogeneous_constraints;
     dealii::IndexSet                  dirichlet_dofs;
+    /** Locally relevant DoFs and every pair's: what this process reads. */
+    dealii::IndexSet                  readable_dofs;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     dealii::TrilinosWrappers::SparseMatrix    matrix;
     std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
@@ -189,6 +192,11 @@ namespace FloorBlock::Contact
     unsigned int                                 n_linear_solves = 0;
     unsigned int n_failed_newton_iterations = 0;
     dealii::TrilinosWrappers::MPI::Vector     current_solution;
+    /**
+     * current_solution where a process reads it: its locally relevant
+     * DoFs and every pair's (ghosts on a distributed mesh).
+     */
+    dealii::TrilinosWrappers::MPI::Vector     readable_solution;
     dealii::TrilinosWrappers::MPI::Vector     committed_solution;
     dealii::TrilinosWrappers::MPI::Vector     newton_base;
     dealii::TrilinosWrappers::MPI::Vector     update;

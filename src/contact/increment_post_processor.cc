@@ -6,6 +6,7 @@
 #include <fem/rigid_motion.h>
 #include <fem/vtu_writer.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
@@ -34,6 +35,8 @@ namespace FloorBlock::Contact
     std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : fe_space.dof_handler().active_cell_iterators())
       {
+        if (cell->is_artificial())
+          continue;
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           dof_component[dofs[i]] = fe.system_to_component_index(i).first;
@@ -85,8 +88,8 @@ namespace FloorBlock::Contact
 
     dealii::AffineConstraints<double> no_constraints;
     no_constraints.close();
-    dealii::TrilinosWrappers::MPI::Vector raw(solution);
-    raw = 0.;
+    dealii::TrilinosWrappers::MPI::Vector raw(
+      fe_space.locally_owned_dofs(), fe_space.dof_handler().get_communicator());
     ForceBalance                     balance;
     dealii::Tensor<1, dim>           applied_load;
     dealii::Tensor<1, dim>           support_reaction;
@@ -110,16 +113,21 @@ namespace FloorBlock::Contact
             condensed(master) += weight * condensed(line.index);
           condensed(line.index) = 0.;
         }
-    double reaction_magnitude = 0.;
+    // Each process sums the DoFs and pairs it owns; the sums are added
+    // over the processes below (on one process it owns them all).
+    const dealii::IndexSet &owned              = fe_space.locally_owned_dofs();
+    double                  reaction_magnitude = 0.;
     for (const auto dof : dirichlet_dofs)
-      {
-        support_reaction[dof_component[dof]] += condensed(dof);
-        reaction_magnitude += std::abs(condensed(dof));
-      }
+      if (owned.is_element(dof))
+        {
+          support_reaction[dof_component[dof]] += condensed(dof);
+          reaction_magnitude += std::abs(condensed(dof));
+        }
     // A rigid obstacle is a support too: it receives +w f (the force
     // density on side B) from each of its pairs.
     for (unsigned int p = 0; p < nodes.size(); ++p)
-      if (nodes[p].against_rigid_obstacle())
+      if (nodes[p].against_rigid_obstacle() &&
+          owned.is_element(nodes[p].dofs_a[0]))
         {
           const dealii::Tensor<1, dim> force =
             nodes[p].weight * responses[p].force_density;
@@ -129,6 +137,11 @@ namespace FloorBlock::Contact
             magnitude += std::abs(force[c]);
           reaction_magnitude += magnitude;
         }
+    const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
+    applied_load     = dealii::Utilities::MPI::sum(applied_load, communicator);
+    support_reaction = dealii::Utilities::MPI::sum(support_reaction, communicator);
+    reaction_magnitude =
+      dealii::Utilities::MPI::sum(reaction_magnitude, communicator);
     const double scale = applied_load.norm() + reaction_magnitude;
     balance.relative_imbalance =
       scale > 0. ? (applied_load + support_reaction).norm() / scale : 0.;

@@ -1,6 +1,7 @@
 #include <common/input_error.h>
 #include <contact/joint_pairing.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
@@ -25,6 +26,55 @@ namespace FloorBlock::Contact
       std::array<dealii::types::global_dof_index, dim> dofs;
     };
 
+    /**
+     * The side's nodes as every process sees them: a distributed mesh
+     * gives each process the faces of its own cells, so a node's weight
+     * and normal are the sums of the processes' parts, and the partners
+     * across a joint (another body, often another process) are known
+     * everywhere. Every process then pairs the whole joint alike. On one
+     * process the nodes come back unchanged.
+     */
+    template <int dim>
+    std::map<dealii::types::global_dof_index, SideNode<dim>>
+    merge_over_processes(
+      const std::map<dealii::types::global_dof_index, SideNode<dim>> &local,
+      const MPI_Comm communicator)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(communicator) == 1)
+        return local;
+      // Flat records: dofs, position, weight, normal sum (2 dim + 1 + dim).
+      std::vector<double> packed;
+      for (const auto &[dof, node] : local)
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            packed.push_back(static_cast<double>(node.dofs[c]));
+          for (unsigned int c = 0; c < dim; ++c)
+            packed.push_back(node.position[c]);
+          packed.push_back(node.weight);
+          for (unsigned int c = 0; c < dim; ++c)
+            packed.push_back(node.normal_sum[c]);
+        }
+      const unsigned int record = 3 * dim + 1;
+      std::map<dealii::types::global_dof_index, SideNode<dim>> merged;
+      for (const auto &part :
+           dealii::Utilities::MPI::all_gather(communicator, packed))
+        for (std::size_t r = 0; r + record <= part.size(); r += record)
+          {
+            const double *const values = part.data() + r;
+            SideNode<dim>      &node =
+              merged[static_cast<dealii::types::global_dof_index>(values[0])];
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                node.dofs[c] =
+                  static_cast<dealii::types::global_dof_index>(values[c]);
+                node.position[c] = values[dim + c];
+                node.normal_sum[c] += values[2 * dim + 1 + c];
+              }
+            node.weight += values[2 * dim];
+          }
+      return merged;
+    }
+
     /** All nodes of one boundary id, keyed by their x-component DoF. */
     template <int dim>
     std::vector<SideNode<dim>>
@@ -45,6 +95,8 @@ namespace FloorBlock::Contact
         for (const unsigned int face_no : cell->face_indices())
           {
             const auto face = cell->face(face_no);
+            if (!cell->is_locally_owned())
+              continue;
             if (!face->at_boundary() || face->boundary_id() != side)
               continue;
             face_values.reinit(cell, face_no);
@@ -75,6 +127,7 @@ namespace FloorBlock::Contact
                   }
               }
           }
+      nodes = merge_over_processes(nodes, space.dof_handler().get_communicator());
       if (nodes.empty())
         throw InputError("joint side with boundary id " +
                          std::to_string(side) + " has no faces in the mesh");

@@ -1,6 +1,6 @@
 #include <contact/swept_sections.h>
 
-#include <deal.II/grid/grid_tools.h>
+#include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <limits>
@@ -30,24 +30,40 @@ namespace FloorBlock::Contact
         return 1.;
       }
     else
-      return dealii::GridTools::compute_bounding_box(triangulation)
-        .side_length(dim - 1);
+      {
+        // Over the locally owned cells and then all processes: a
+        // distributed mesh holds only part of the face here.
+        double low  = std::numeric_limits<double>::infinity();
+        double high = -std::numeric_limits<double>::infinity();
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                low  = std::min(low, cell->vertex(v)[dim - 1]);
+                high = std::max(high, cell->vertex(v)[dim - 1]);
+              }
+        const MPI_Comm communicator = triangulation.get_communicator();
+        return dealii::Utilities::MPI::max(high, communicator) -
+               dealii::Utilities::MPI::min(low, communicator);
+      }
   }
 
   template <int dim>
   double
   smallest_in_plane_cell(const dealii::Triangulation<dim> &triangulation)
   {
-    if constexpr (dim == 2)
-      return dealii::GridTools::minimal_cell_diameter(triangulation);
-    else
-      {
-        double smallest = std::numeric_limits<double>::infinity();
-        for (const auto &cell : triangulation.active_cell_iterators())
-          smallest = std::min(
-            smallest, cell->face(bottom_face_of_hexahedron)->diameter());
-        return smallest;
-      }
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if constexpr (dim == 2)
+            smallest = std::min(smallest, cell->diameter());
+          else
+            smallest = std::min(
+              smallest, cell->face(bottom_face_of_hexahedron)->diameter());
+        }
+    return dealii::Utilities::MPI::min(smallest,
+                                       triangulation.get_communicator());
   }
 
   std::vector<std::vector<unsigned int>>

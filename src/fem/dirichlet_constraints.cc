@@ -1,6 +1,7 @@
 #include <fem/dirichlet_constraints.h>
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -41,13 +42,20 @@ namespace FloorBlock::Fem
   make_constraints(const FeSpace<dim>                         &space,
                    const std::vector<DirichletCondition<dim>> &conditions,
                    const bool                                  homogeneous,
-                   dealii::IndexSet                           &dirichlet_dofs)
+                   dealii::IndexSet                           &dirichlet_dofs,
+                   const dealii::IndexSet                     &readable_dofs)
   {
+    const dealii::IndexSet &lines = readable_dofs.size() > 0 ?
+                                      readable_dofs :
+                                      space.locally_relevant_dofs();
+    using Merge = dealii::AffineConstraints<double>::MergeConflictBehavior;
     dealii::AffineConstraints<double> constraints;
-    constraints.reinit(space.locally_relevant_dofs());
-    constraints.merge(space.hanging_node_constraints());
+    constraints.reinit(lines);
+    constraints.merge(space.hanging_node_constraints(),
+                      Merge::no_conflicts_allowed,
+                      true);
     dealii::AffineConstraints<double> dirichlet;
-    dirichlet.reinit(space.locally_relevant_dofs());
+    dirichlet.reinit(lines);
     for (const auto &condition : conditions)
       {
         const DisplacementFunction<dim> function(condition.displacement,
@@ -67,9 +75,12 @@ namespace FloorBlock::Fem
     for (const auto &line : dirichlet.get_lines())
       dirichlet_dofs.add_index(line.index);
     // Dirichlet values win where a hanging node also sits on a support.
-    constraints.merge(
-      dirichlet,
-      dealii::AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
+    constraints.merge(dirichlet, Merge::right_object_wins, true);
+    const MPI_Comm communicator = space.dof_handler().get_communicator();
+    if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
+      constraints.make_consistent_in_parallel(space.locally_owned_dofs(),
+                                              lines,
+                                              communicator);
     constraints.close();
     return constraints;
   }
@@ -78,10 +89,12 @@ namespace FloorBlock::Fem
   make_constraints(const FeSpace<2> &,
                    const std::vector<DirichletCondition<2>> &,
                    const bool,
-                   dealii::IndexSet &);
+                   dealii::IndexSet &,
+                   const dealii::IndexSet &);
   template dealii::AffineConstraints<double>
   make_constraints(const FeSpace<3> &,
                    const std::vector<DirichletCondition<3>> &,
                    const bool,
-                   dealii::IndexSet &);
+                   dealii::IndexSet &,
+                   const dealii::IndexSet &);
 } // namespace FloorBlock::Fem

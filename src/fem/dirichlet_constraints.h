@@ -36,7 +36,13 @@ namespace FloorBlock::Fem
    * @param[in] homogeneous If true, all prescribed values are zero (the
    *   constraints of a Newton update).
    * @param[out] dirichlet_dofs The DoFs fixed by @p conditions (not the
-   *   hanging ones): the supports whose reactions are reported.
+   *   hanging ones) among the locally relevant ones: the supports whose
+   *   reactions are reported.
+   * @param[in] readable_dofs The DoFs whose constraints this process must
+   *   know: empty for the locally relevant ones; on a distributed mesh
+   *   also the joint pairs' DoFs, which another process may own and
+   *   constrain (the constraints are then made consistent over the
+   *   processes).
    * @return Closed constraints.
    */
   template <int dim>
@@ -44,5 +50,6 @@ namespace FloorBlock::Fem
   make_constraints(const FeSpace<dim>                        &space,
                    const std::vector<DirichletCondition<dim>> &conditions,
                    const bool                                 homogeneous,
-                   dealii::IndexSet                          &dirichlet_dofs);
+                   dealii::IndexSet                          &dirichlet_dofs,
+                   const dealii::IndexSet &readable_dofs = dealii::IndexSet());
 } // namespace FloorBlock::Fem

@@ -2,7 +2,10 @@
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
-#include <deal.II/grid/grid_tools.h>
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <limits>
 
 namespace FloorBlock::Fem
 {
@@ -25,7 +28,14 @@ namespace FloorBlock::Fem
     dealii::DoFTools::extract_constant_modes(dofs,
                                              dealii::ComponentMask(),
                                              modes);
-    min_diameter = dealii::GridTools::minimal_cell_diameter(triangulation);
+    // Over the locally owned cells and then all processes: a distributed
+    // mesh's artificial cells are not this process's to measure.
+    min_diameter = std::numeric_limits<double>::infinity();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        min_diameter = std::min(min_diameter, cell->diameter());
+    min_diameter =
+      dealii::Utilities::MPI::min(min_diameter, dofs.get_communicator());
   }
 
   template <int dim>

@@ -1,5 +1,6 @@
 #include <fem/rigid_motion.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 
@@ -19,15 +20,12 @@ namespace FloorBlock::Fem
       else
         return vector[0] * vector[0] + vector[1] * vector[1];
     }
-  } // namespace
 
-  template <int dim>
-  std::map<dealii::types::material_id, RigidMotion<dim>>
-  fit_rigid_motions(const FeSpace<dim>                          &space,
-                    const dealii::TrilinosWrappers::MPI::Vector &solution)
-  {
-    // Integrals over each body: area, first moments of position and
-    // displacement, the moment x cross u and the polar moment |x|^2.
+    /**
+     * Integrals over one body: area, first moments of position and
+     * displacement, the moment x cross u and the polar moment |x|^2.
+     */
+    template <int dim>
     struct Moments
     {
       double                 area = 0.;
@@ -36,7 +34,60 @@ namespace FloorBlock::Fem
       double                 cross  = 0.;
       double                 radius = 0.;
     };
-    std::map<dealii::types::material_id, Moments> bodies;
+
+    /**
+     * The bodies' integrals over the whole mesh: each process integrated
+     * the cells it owns (on one process: unchanged).
+     */
+    template <int dim>
+    std::map<dealii::types::material_id, Moments<dim>>
+    sum_over_processes(
+      const std::map<dealii::types::material_id, Moments<dim>> &local,
+      const MPI_Comm                                            communicator)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(communicator) == 1)
+        return local;
+      // Flat records: material, area, position, displacement, cross, radius.
+      std::vector<double> packed;
+      for (const auto &[material, body] : local)
+        {
+          packed.push_back(material);
+          packed.push_back(body.area);
+          for (unsigned int c = 0; c < dim; ++c)
+            packed.push_back(body.position[c]);
+          for (unsigned int c = 0; c < dim; ++c)
+            packed.push_back(body.displacement[c]);
+          packed.push_back(body.cross);
+          packed.push_back(body.radius);
+        }
+      const unsigned int record = 2 * dim + 4;
+      std::map<dealii::types::material_id, Moments<dim>> total;
+      for (const auto &part :
+           dealii::Utilities::MPI::all_gather(communicator, packed))
+        for (std::size_t r = 0; r + record <= part.size(); r += record)
+          {
+            const double *const values = part.data() + r;
+            Moments<dim>       &body   = total[static_cast<
+              dealii::types::material_id>(values[0])];
+            body.area += values[1];
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                body.position[c] += values[2 + c];
+                body.displacement[c] += values[2 + dim + c];
+              }
+            body.cross += values[2 + 2 * dim];
+            body.radius += values[3 + 2 * dim];
+          }
+      return total;
+    }
+  } // namespace
+
+  template <int dim>
+  std::map<dealii::types::material_id, RigidMotion<dim>>
+  fit_rigid_motions(const FeSpace<dim>                          &space,
+                    const dealii::TrilinosWrappers::MPI::Vector &solution)
+  {
+    std::map<dealii::types::material_id, Moments<dim>> bodies;
 
     dealii::FEValues<dim> fe_values(space.mapping(),
                                     space.fe(),
@@ -49,9 +100,11 @@ namespace FloorBlock::Fem
       space.cell_quadrature().size());
     for (const auto &cell : space.dof_handler().active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         fe_values.reinit(cell);
         fe_values[displacement].get_function_values(solution, values);
-        Moments &body = bodies[cell->material_id()];
+        Moments<dim> &body = bodies[cell->material_id()];
         for (unsigned int q = 0; q < values.size(); ++q)
           {
             const dealii::Point<dim> &x = fe_values.quadrature_point(q);
@@ -64,6 +117,7 @@ namespace FloorBlock::Fem
           }
       }
 
+    bodies = sum_over_processes(bodies, space.dof_handler().get_communicator());
     std::map<dealii::types::material_id, RigidMotion<dim>> motions;
     for (const auto &[material, body] : bodies)
       {

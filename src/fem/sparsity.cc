@@ -2,6 +2,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 #include <mpi.h>
 
@@ -23,6 +24,14 @@ namespace FloorBlock::Fem
                                             false);
     for (const auto &group : coupled_groups)
       constraints.add_entries_local_to_global(group, dynamic, false);
+    // A distributed mesh: the rows this process built for DoFs another
+    // owns (cells on the partition boundary, joint pairs) go to their
+    // owner; on one process nothing moves.
+    dealii::SparsityTools::distribute_sparsity_pattern(
+      dynamic,
+      space.locally_owned_dofs(),
+      space.dof_handler().get_communicator(),
+      space.locally_relevant_dofs());
     pattern.reinit(space.locally_owned_dofs(),
                    space.locally_owned_dofs(),
                    dynamic,

@@ -24,8 +24,10 @@ namespace FloorBlock::Fem
     {
       dealii::AffineConstraints<double> none;
       none.close();
-      Vector zero(load);
-      zero = 0.;
+      // The cell loop reads u on every DoF of a locally owned cell.
+      Vector zero(space.locally_owned_dofs(),
+                  space.locally_relevant_dofs(),
+                  space.dof_handler().get_communicator());
       load = 0.;
       ElasticAssemblyTargets<dim> targets;
       targets.residual = &load;
@@ -71,7 +73,7 @@ namespace FloorBlock::Fem
     condensed.matrix = &tangent_stiffness;
     condensed.cache  = &cache;
     const MPI_Comm communicator = space.dof_handler().get_communicator();
-    Vector zero(owned, communicator);
+    Vector zero(owned, space.locally_relevant_dofs(), communicator);
     assemble_elastic_system(
       space, model, zero, homogeneous_constraints, condensed);
 

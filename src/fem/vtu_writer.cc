@@ -1,6 +1,7 @@
 #include <common/atomic_file.h>
 #include <fem/vtu_writer.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -162,10 +163,17 @@ namespace FloorBlock::Fem
                       const std::string                           &directory,
                       std::vector<std::pair<double, std::string>> &records)
   {
-    std::filesystem::create_directories(directory);
-    const auto &dof_handler = space.dof_handler();
+    const auto    &dof_handler  = space.dof_handler();
+    const MPI_Comm communicator = dof_handler.get_communicator();
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    if (rank == 0)
+      std::filesystem::create_directories(directory);
+    // Every process writes the cells it owns, which read only its
+    // locally relevant DoFs; the rest stay zero.
     dealii::Vector<double> displacement(solution.size());
-    for (unsigned int i = 0; i < displacement.size(); ++i)
+    for (const auto i : space.locally_relevant_dofs())
       displacement(i) = solution(i);
     dealii::Vector<double> contact_state(dof_handler.n_dofs());
     contact_state = no_contact_node;
@@ -207,20 +215,49 @@ namespace FloorBlock::Fem
       dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
     data_out.set_flags(flags);
 
-    std::ostringstream name;
-    name << "solution-" << std::setw(4) << std::setfill('0') << records.size()
-         << ".vtu";
-    const std::string path = directory + "/" + name.str();
+    // One process: solution-NNNN.vtu. Several: each writes its piece
+    // solution-NNNN.RRRR.vtu and process 0 the record solution-NNNN.pvtu
+    // that ParaView opens; solution.pvd lists one file per increment.
+    std::ostringstream stem;
+    stem << "solution-" << std::setw(4) << std::setfill('0') << records.size();
+    const auto piece_name = [&](const unsigned int process) {
+      std::ostringstream name;
+      name << stem.str();
+      if (n_processes > 1)
+        name << "." << std::setw(4) << std::setfill('0') << process;
+      return name.str() + ".vtu";
+    };
+    // The folder exists before any process writes into it.
+    const int barrier = MPI_Barrier(communicator);
+    AssertThrowMPI(barrier);
+    const std::string path      = directory + "/" + piece_name(rank);
     const std::string temporary = temporary_name_for(path);
     {
       std::ofstream file(temporary);
       data_out.write_vtu(file);
     }
     commit_temporary_file(temporary, path);
-    records.emplace_back(static_cast<double>(records.size()), name.str());
-    std::ostringstream pvd;
-    dealii::DataOutBase::write_pvd_record(pvd, records);
-    write_file_atomically(directory + "/solution.pvd", pvd.str());
+    std::string listed = piece_name(0);
+    if (n_processes > 1)
+      {
+        listed = stem.str() + ".pvtu";
+        if (rank == 0)
+          {
+            std::vector<std::string> pieces;
+            for (unsigned int process = 0; process < n_processes; ++process)
+              pieces.push_back(piece_name(process));
+            std::ostringstream record;
+            data_out.write_pvtu_record(record, pieces);
+            write_file_atomically(directory + "/" + listed, record.str());
+          }
+      }
+    records.emplace_back(static_cast<double>(records.size()), listed);
+    if (rank == 0)
+      {
+        std::ostringstream pvd;
+        dealii::DataOutBase::write_pvd_record(pvd, records);
+        write_file_atomically(directory + "/solution.pvd", pvd.str());
+      }
   }
 
   template void

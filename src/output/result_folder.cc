@@ -5,9 +5,16 @@
 
 namespace FloorBlock::Output
 {
-  ResultFolder::ResultFolder(const std::string &path)
+  ResultFolder::ResultFolder(const std::string &path, const bool writes)
     : folder(path)
+    , writes(writes)
   {}
+
+  bool
+  ResultFolder::writes_files() const
+  {
+    return writes;
+  }
 
   std::string
   ResultFolder::path_of(const std::string &file_name) const
@@ -19,7 +26,8 @@ namespace FloorBlock::Output
   ResultFolder::write(const std::string &file_name,
                       const std::string &contents) const
   {
-    write_file_atomically(path_of(file_name), contents);
+    if (writes)
+      write_file_atomically(path_of(file_name), contents);
   }
 
   void
@@ -40,6 +48,8 @@ namespace FloorBlock::Output
   void
   ResultFolder::mark_unfinished() const
   {
+    if (!writes)
+      return;
     std::error_code ignored;
     std::filesystem::remove(path_of("summary.json"), ignored);
   }

@@ -20,7 +20,17 @@ namespace FloorBlock::Output
   class ResultFolder
   {
   public:
-    explicit ResultFolder(const std::string &path);
+    /**
+     * @param[in] path The folder.
+     * @param[in] writes False on the processes of a distributed solve
+     *   other than the first: they compute the same files, which the first
+     *   process writes; every write is then skipped.
+     */
+    explicit ResultFolder(const std::string &path, const bool writes = true);
+
+    /** @brief Whether this process writes the files (see the constructor). */
+    bool
+    writes_files() const;
 
     /** @brief Writes @p contents to <folder>/<file_name> atomically. */
     void
@@ -51,5 +61,6 @@ namespace FloorBlock::Output
 
   private:
     const std::string folder;
+    const bool        writes;
   };
 } // namespace FloorBlock::Output

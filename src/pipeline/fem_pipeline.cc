@@ -1,5 +1,6 @@
 #include <pipeline/fem_pipeline.h>
 #include <pipeline/deformed_view.h>
+#include <pipeline/distributed_swept_mesh.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
 #include <common/atomic_file.h>
@@ -18,6 +19,7 @@
 #include <scene/rigid_inputs.h>
 #include <scene/swept_contact_problem.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
@@ -236,6 +238,16 @@ namespace FloorBlock::Pipeline
     // deal.II extrudes coarse meshes only, and refining the swept mesh
     // would put the fillets' new nodes on chords, not on the arcs the 2D
     // refinement follows: the 3D scene takes the Gmsh mesh as it is.
+    // Several processes share one mesh with the compliant law only: the
+    // exact law's multipliers and its LU factors live on one process.
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
+        scene.joints.law == Contact::JointLawKind::rigid)
+      throw InputError("Joints/Law", "rigid",
+                       "compliant when a 3D scene runs on several processes "
+                       "(mpirun -np " +
+                         std::to_string(dealii::Utilities::MPI::n_mpi_processes(
+                           MPI_COMM_WORLD)) +
+                         "); the exact law runs on one process");
     if (const unsigned int n_refinements = Scene::global_refinements(scene))
       throw InputError("Mesh/Global refinements",
                        std::to_string(n_refinements) +
@@ -270,12 +282,23 @@ namespace FloorBlock::Pipeline
                     const bool                            write_vtu)
   {
     check_swept_scene(scene);
-    dealii::Triangulation<3>       solid;
-    const Geometry::MeshStatistics mesh =
-      mesh_swept_scene(scene, folder, solid);
     const Contact::ContactProblem<3> problem = Scene::swept_contact_problem(
       Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
       scene.geometry.end_faces);
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      {
+        // mpirun -np N: one mesh over all processes.
+        dealii::parallel::fullydistributed::Triangulation<3> solid(
+          MPI_COMM_WORLD);
+        const Geometry::MeshStatistics mesh =
+          distribute_swept_mesh(scene, folder, solid);
+        return solve_on_mesh<3>(scene, solid, problem, mesh, folder,
+                                write_vtu,
+                                [](const Contact::ContactSolver<3> &) {});
+      }
+    dealii::Triangulation<3>       solid;
+    const Geometry::MeshStatistics mesh =
+      mesh_swept_scene(scene, folder, solid);
     return solve_on_mesh<3>(scene, solid, problem, mesh, folder, write_vtu,
                          [](const Contact::ContactSolver<3> &) {});
   }

@@ -1,5 +1,6 @@
 #include <solver/linear_solver.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -101,10 +102,12 @@ namespace FloorBlock::Solver
   bool
   has_only_finite_values(const Vector &vector)
   {
+    bool finite = true;
     for (const auto value : vector)
-      if (!std::isfinite(value))
-        return false;
-    return true;
+      finite = finite && std::isfinite(value);
+    // Every process must take the same branch after a solve.
+    return dealii::Utilities::MPI::min(finite ? 1 : 0,
+                                       vector.get_mpi_communicator()) == 1;
   }
 
   bool

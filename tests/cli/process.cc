@@ -84,20 +84,45 @@ namespace FloorBlockTest
     return std::regex_search(text, non_finite);
   }
 
+  namespace
+  {
+    /** Runs a shell @p command; its exit code and its output. */
+    ProcessResult
+    run_shell(const std::string &command)
+    {
+      FILE *pipe = ::popen(command.c_str(), "r");
+      std::string            output;
+      std::array<char, 4096> buffer;
+      while (const std::size_t n =
+               std::fread(buffer.data(), 1, buffer.size(), pipe))
+        output.append(buffer.data(), n);
+      const int status = ::pclose(pipe);
+      return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    }
+  } // namespace
+
   ProcessResult
   run_floorblock(const std::string &arguments)
   {
-    const std::string command = std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
-                                " && " + FLOORBLOCK_EXECUTABLE + " " +
-                                arguments + " 2>&1";
-    FILE *pipe = ::popen(command.c_str(), "r");
-    std::string           output;
-    std::array<char, 4096> buffer;
-    while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-      output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return run_shell(std::string("cd ") + FLOORBLOCK_SOURCE_DIR + " && " +
+                     FLOORBLOCK_EXECUTABLE + " " + arguments + " 2>&1");
   }
+
+#ifdef FLOORBLOCK_MPIEXEC
+  ProcessResult
+  run_floorblock_on_processes(const unsigned int n_processes,
+                              const std::string &arguments)
+  {
+    // CI runs as root, which Open MPI refuses unless told; a machine with
+    // fewer cores than processes needs oversubscription.
+    return run_shell(
+      std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
+      " && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+      FLOORBLOCK_MPIEXEC + " " + FLOORBLOCK_MPIEXEC_NUMPROC_FLAG + " " +
+      std::to_string(n_processes) + " --oversubscribe " +
+      FLOORBLOCK_EXECUTABLE + " " + arguments + " 2>&1");
+  }
+#endif
 
   int
   start_floorblock(const std::string &arguments, const std::string &log_path)

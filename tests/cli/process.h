@@ -23,6 +23,15 @@ namespace FloorBlockTest
   run_floorblock(const std::string &arguments);
 
   /**
+   * @brief run_floorblock() under the MPI launcher on @p n_processes
+   * processes (`mpiexec -n N`, as CMake's FindMPI names it; allowed to run
+   * as root and on more processes than cores).
+   */
+  ProcessResult
+  run_floorblock_on_processes(const unsigned int n_processes,
+                              const std::string &arguments);
+
+  /**
    * @brief Starts build/floorblock with @p arguments in the background
    * (output to @p log_path) and returns its process id.
    */
