@@ -120,13 +120,13 @@ namespace FloorBlock::Contact
           const double segment =
             std::abs(profile[open].arc_position - end_node.arc_position);
           if (p_next > p_end && segment > 0.)
-            {
-              const double spacing = std::abs(profile[next].arc_position -
-                                              end_node.arc_position);
-              const double beyond  = p_end * p_end * spacing /
-                                    (p_next * p_next - p_end * p_end);
-              return std::min(1., beyond / segment);
-            }
+            return std::min(1.,
+                            square_root_edge_extent(
+                              p_end,
+                              p_next,
+                              std::abs(profile[next].arc_position -
+                                       end_node.arc_position)) /
+                              segment);
         }
       const double inside  = indicators[closed];
       const double outside = indicators[open];
@@ -264,6 +264,15 @@ namespace FloorBlock::Contact
       return {length, uncertainty};
     }
   } // namespace
+
+  double
+  square_root_edge_extent(const double end_traction,
+                          const double inner_traction,
+                          const double spacing)
+  {
+    const double end = std::max(0., end_traction);
+    return end * end * spacing / (inner_traction * inner_traction - end * end);
+  }
 
   double
   contact_indicator(const JointResponse<2> &response)

@@ -37,6 +37,22 @@ namespace FloorBlock::Contact
   contact_indicator(const JointResponse<2> &response);
 
   /**
+   * @brief How far beyond its last closed node an exact-law contact zone
+   * ends (m): the normal traction of an incomplete-contact edge falls
+   * like the square root of the distance to the end, so $t_n^2$ is
+   * linear there and is extrapolated to zero from the last closed node
+   * (@p end_traction, clamped at 0) and the closed node @p spacing (m)
+   * further inside (@p inner_traction):
+   * $d = t_e^2 s / (t_i^2 - t_e^2)$.
+   * @pre @p inner_traction > max(0, @p end_traction): the traction falls
+   *   toward the end (callers use another rule otherwise).
+   */
+  double
+  square_root_edge_extent(const double end_traction,
+                          const double inner_traction,
+                          const double spacing);
+
+  /**
    * @brief Per-joint forces, closed length, peak and mean normal stress.
    *
    * Nodal tractions are the pair tractions; the normal and shear forces

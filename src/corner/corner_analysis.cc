@@ -71,7 +71,6 @@ namespace FloorBlock::Corner
     const double k_tolerance = scene.corner.intensity_change;
 
     CornerZoom zoom(scene, analysis.site);
-    unsigned int n_calm_peaks = 0;
     for (unsigned int level = 0; level <= scene.corner.max_zoom_levels; ++level)
       {
         if (level > 0 && !zoom.can_refine())
@@ -98,13 +97,8 @@ namespace FloorBlock::Corner
         analysis.levels.push_back(*record);
         LevelFigures figures;
         if (level > 0)
-          figures.peak_change =
-            relative_change(record->profile.peak_traction,
-                            analysis.levels[level - 1].profile.peak_traction);
+          figures.peak_change = peak_change(analysis.levels, level);
         analysis.figures.push_back(figures);
-        n_calm_peaks = level > 0 && figures.peak_change <= tolerance ?
-                         n_calm_peaks + 1 :
-                         0;
 
         analysis.theory = corner_theory(record->profile, analysis.materials,
                                         analysis.site.rounding_radius);
@@ -147,7 +141,7 @@ namespace FloorBlock::Corner
             std::abs(analysis.figures[level].exponent -
                      analysis.figures[level - 1].exponent) :
             1.;
-        if (n_calm_peaks >= 2 &&
+        if (peak_settled(analysis.levels, tolerance) &&
             (!analysis.theory.covered ||
              (intensity_change <= k_tolerance && fit_span >= smallest_fit_span &&
               exponent_change <= converged_exponent_change)))

@@ -1,4 +1,5 @@
 #include <corner/corner_profile.h>
+#include <contact/joint_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -84,10 +85,10 @@ namespace FloorBlock::Corner
           {
             const double p_c = std::max(0., closed.normal_traction);
             const double p_b = nodes[top_closed - 1].normal_traction;
-            const double spacing = s_c - height(nodes[top_closed - 1]);
             if (p_b > p_c)
               beyond = std::min(segment,
-                                p_c * p_c * spacing / (p_b * p_b - p_c * p_c));
+                                Contact::square_root_edge_extent(
+                                  p_c, p_b, s_c - height(nodes[top_closed - 1])));
           }
         profile.edge_arc     = s_c + beyond;
         profile.edge_spacing = segment;

@@ -15,6 +15,23 @@
 
 namespace FloorBlock::Corner
 {
+  double
+  peak_change(const std::vector<ZoomLevel> &levels, const std::size_t k)
+  {
+    const double before = levels[k - 1].profile.peak_traction;
+    return before != 0. ?
+             std::abs(levels[k].profile.peak_traction / before - 1.) :
+             1.;
+  }
+
+  bool
+  peak_settled(const std::vector<ZoomLevel> &levels, const double tolerance)
+  {
+    const std::size_t n = levels.size();
+    return n >= 3 && peak_change(levels, n - 1) <= tolerance &&
+           peak_change(levels, n - 2) <= tolerance;
+  }
+
   CornerZoom::CornerZoom(const Parameters::ScenarioParameters &scene,
                          const CornerSite                     &site)
     : scene(scene)

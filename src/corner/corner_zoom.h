@@ -44,6 +44,22 @@ namespace FloorBlock::Corner
   };
 
   /**
+   * @brief Relative change of the peak traction from level @p k - 1 to
+   * level @p k of @p levels (1 where the earlier peak is zero).
+   */
+  double
+  peak_change(const std::vector<ZoomLevel> &levels, const std::size_t k);
+
+  /**
+   * @brief Whether the peak changed by at most @p tolerance over each of
+   * the last two levels of @p levels: the zoom's and the rounding study's
+   * "twice in a row" (one small change can be a coincidence of two
+   * meshes).
+   */
+  bool
+  peak_settled(const std::vector<ZoomLevel> &levels, const double tolerance);
+
+  /**
    * @brief Nested meshes that halve the cells around one corner's contact
    * end from level to level, the rest of the mesh kept: level 0 is the
    * scene's mesh (Pipeline::AdaptiveLevels), level k asks for cells of the

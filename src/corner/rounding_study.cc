@@ -10,14 +10,6 @@ namespace FloorBlock::Corner
 {
   namespace
   {
-    double
-    peak_change(const std::vector<ZoomLevel> &levels, const std::size_t k)
-    {
-      const double before = levels[k - 1].profile.peak_traction;
-      return before != 0. ? std::abs(levels[k].profile.peak_traction / before - 1.) :
-                            1.;
-    }
-
     /** Least-squares slope of log y against log x. */
     double
     log_log_slope(const std::vector<double> &x, const std::vector<double> &y)
@@ -59,8 +51,7 @@ namespace FloorBlock::Corner
     const std::size_t n = levels.size();
     if (n >= 2)
       point.last_change = peak_change(levels, n - 1);
-    point.converged = n >= 3 && peak_change(levels, n - 1) <= tolerance &&
-                      peak_change(levels, n - 2) <= tolerance &&
+    point.converged = peak_settled(levels, tolerance) &&
                       last.requested_size <=
                         last.profile.edge_beyond_corner / smallest_cells_in_fillet_contact;
     return point;

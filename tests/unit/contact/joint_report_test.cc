@@ -448,3 +448,15 @@ namespace
     EXPECT_DOUBLE_EQ(largest_overlap({second}), 0.);
   }
 } // namespace
+
+// t_n = c sqrt(d) at distances 0.3 and 0.3 + 0.2 m from the end: the end
+// lies 0.3 m beyond the last node, for any c; a negative traction at the
+// end node counts as zero (the end is at the node).
+TEST(SquareRootEdgeExtent, ExtrapolatesTheSquaredTractionToZero)
+{
+  const double c = 7.3e6;
+  EXPECT_NEAR(FloorBlock::Contact::square_root_edge_extent(c * std::sqrt(0.3),
+                                               c * std::sqrt(0.5), 0.2),
+              0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(FloorBlock::Contact::square_root_edge_extent(-1e3, 5e6, 0.2), 0.);
+}

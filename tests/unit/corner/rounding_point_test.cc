@@ -1,3 +1,4 @@
+#include <corner/corner_zoom.h>
 #include <corner/rounding_study.h>
 
 #include <gtest/gtest.h>
@@ -45,4 +46,16 @@ TEST(RoundingPoint, ACoarseFilletContactIsNotConvergedYet)
   auto levels = levels_with_peaks({3e8, 3.09e8, 3.10e8, 3.105e8});
   levels.back().requested_size = 5e-6; // 80 cells over the 0.4 mm reach
   EXPECT_FALSE(Corner::rounding_point(0.01, levels, 0.01).converged);
+}
+
+// The zoom and the rounding study share this rule: the last two changes,
+// not any two, and never from fewer than three levels.
+TEST(PeakSettled, TheLastTwoChangesMustBothBeSmall)
+{
+  EXPECT_TRUE(Corner::peak_settled(levels_with_peaks({3e8, 3.1e8, 3.101e8, 3.102e8}), 0.01));
+  // Small then large: a calm pair earlier does not count.
+  EXPECT_FALSE(Corner::peak_settled(levels_with_peaks({3e8, 3.001e8, 3.002e8, 3.2e8}), 0.01));
+  EXPECT_FALSE(Corner::peak_settled(levels_with_peaks({3e8, 3.001e8}), 0.01));
+  // A zero peak before is a change of 1, not a division by zero.
+  EXPECT_DOUBLE_EQ(Corner::peak_change(levels_with_peaks({0., 3e8}), 1), 1.);
 }
