@@ -80,28 +80,22 @@ namespace FloorBlock::Output
   namespace
   {
     /**
-     * A joint of a 3D scene: forces per metre of face and in total, the
-     * contact as an area and as a length over the face, the peak's 3D
-     * position; no "over b" figures (the 2D reading of a support width).
+     * The fields a joint has in 2D and in 3D alike: name and bodies,
+     * forces per metre of face, the contact length, the peaks and the
+     * state.
      */
     json
-    swept_joint_json(const Contact::JointReport &joint,
-                     const std::string          &kind,
-                     const json                 &bodies)
+    common_joint_json(const Contact::JointReport &joint,
+                      const std::string          &kind,
+                      const json                 &bodies)
     {
       return {{"name", joint.name},
               {"kind", kind},
               {"blocks", bodies},
               {"normal_force_N_per_m", joint.normal_force},
-              {"normal_force_N", joint.normal_force * joint.face_length},
               {"shear_force_N_per_m", joint.shear_force},
-              {"contact_area_m2", joint.closed_length * joint.face_length},
               {"contact_length_m", joint.closed_length},
-              {"face_length_m", joint.face_length},
               {"sigma_max_Pa", joint.peak_normal_stress},
-              {"sigma_max_position_m",
-               {joint.peak_position[0], joint.peak_position[1],
-                joint.peak_position_z}},
               {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress},
               {"averaging_length_m", joint.averaging_length},
               {"sigma_mean_Pa", joint.mean_normal_stress},
@@ -109,6 +103,26 @@ namespace FloorBlock::Output
               {"n_stick", joint.counts.n_stick},
               {"n_slip", joint.counts.n_slip},
               {"n_open", joint.counts.n_open}};
+    }
+
+    /**
+     * A joint of a 3D scene: besides the common fields, the force in
+     * total, the contact as an area, the peak's 3D position; no "over b"
+     * figures (the 2D reading of a support width).
+     */
+    json
+    swept_joint_json(const Contact::JointReport &joint,
+                     const std::string          &kind,
+                     const json                 &bodies)
+    {
+      json result = common_joint_json(joint, kind, bodies);
+      result["normal_force_N"] = joint.normal_force * joint.face_length;
+      result["contact_area_m2"] = joint.closed_length * joint.face_length;
+      result["face_length_m"]   = joint.face_length;
+      result["sigma_max_position_m"] = {joint.peak_position[0],
+                                        joint.peak_position[1],
+                                        joint.peak_position_z};
+      return result;
     }
 
     /** The swept joints' face length (m), 0 for a 2D result. */
@@ -187,27 +201,15 @@ namespace FloorBlock::Output
              const double                support_width)
   {
     const auto name = Compare::parse_joint_name(joint.name);
+    const json bodies = joint_bodies(name.kind, name.number, n_blocks);
     if (joint.swept())
-      return swept_joint_json(joint, name.kind,
-                              joint_bodies(name.kind, name.number, n_blocks));
-    return {{"name", joint.name},
-            {"kind", name.kind},
-            {"blocks", joint_bodies(name.kind, name.number, n_blocks)},
-            {"normal_force_N_per_m", joint.normal_force},
-            {"normal_force_N_over_b", joint.normal_force * support_width},
-            {"shear_force_N_per_m", joint.shear_force},
-            {"contact_length_m", joint.closed_length},
-            {"contact_area_m2", joint.closed_length * support_width},
-            {"sigma_max_Pa", joint.peak_normal_stress},
-            {"sigma_max_position_m",
-             {joint.peak_position[0], joint.peak_position[1]}},
-            {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress},
-            {"averaging_length_m", joint.averaging_length},
-            {"sigma_mean_Pa", joint.mean_normal_stress},
-            {"state", state_summary(joint.counts)},
-            {"n_stick", joint.counts.n_stick},
-            {"n_slip", joint.counts.n_slip},
-            {"n_open", joint.counts.n_open}};
+      return swept_joint_json(joint, name.kind, bodies);
+    json result = common_joint_json(joint, name.kind, bodies);
+    result["normal_force_N_over_b"] = joint.normal_force * support_width;
+    result["contact_area_m2"]       = joint.closed_length * support_width;
+    result["sigma_max_position_m"]  = {joint.peak_position[0],
+                                       joint.peak_position[1]};
+    return result;
   }
 
   json
