@@ -125,6 +125,36 @@ namespace FloorBlock::Output
       return result;
     }
 
+    /**
+     * fem.json's account of a 3D scene's support load: the force applied
+     * against the parameter, and where it stands.
+     */
+    void
+    describe_support_load(const SweptSupportLoad &load, json &fem)
+    {
+      fem["applied_load_N"] = load.applied_load;
+      fem["support_load_N"] = load.support_load;
+      fem["loaded_area_m2"] = load.loaded_area;
+      if (load.on_footprint)
+        fem["support_footprint"] = {
+          {"z_range_m", {load.footprint_start, load.footprint_end}},
+          {"length_m", load.footprint_end - load.footprint_start},
+          {"reading",
+           "one support: its whole Support load on the loaded blocks' tops "
+           "within the footprint (Loading/Footprint length), none elsewhere; "
+           "applied_load_N, the force integrated over the loaded faces, "
+           "equals support_load_N"}};
+      else
+        fem["support_footprint"] = {
+          {"z_range_m", nullptr},
+          {"length_m", nullptr},
+          {"reading",
+           "no footprint (Loading/Footprint length = 0): the 2D load per "
+           "metre of face, Support load over the support width b, along the "
+           "whole face, as under supports side by side; applied_load_N = "
+           "support_load_N x face length / b"}};
+    }
+
     /** The swept joints' face length (m), 0 for a 2D result. */
     double
     face_length_of(const Contact::SolveResult &result)
@@ -293,6 +323,8 @@ namespace FloorBlock::Output
                      {"wall_time_s", report.mesh->wall_time}};
     if (report.rigid)
       describe_rigid_model(*report.rigid, fem);
+    if (report.support_load)
+      describe_support_load(*report.support_load, fem);
     return fem;
   }
 
