@@ -122,6 +122,16 @@ namespace FloorBlock::Output
       result["sigma_max_position_m"] = {joint.peak_position[0],
                                         joint.peak_position[1],
                                         joint.peak_position_z};
+      json along_face = json::array();
+      for (const Contact::JointSection &section : joint.along_face)
+        along_face.push_back(
+          {{"z_m", section.z},
+           {"z_range_m", {section.z_from, section.z_to}},
+           {"normal_force_N_per_m", section.normal_force},
+           {"shear_force_N_per_m", section.shear_force},
+           {"contact_length_m", section.closed_length},
+           {"sigma_max_Pa", section.peak_normal_stress}});
+      result["along_face"] = along_face;
       return result;
     }
 
