@@ -8,6 +8,7 @@
 #include <output/result_folder.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_zone_sizing.h>
+#include <scene/support_footprint.h>
 
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_out.h>
@@ -31,11 +32,8 @@ namespace FloorBlock::App
     {
       dealii::Timer            timer;
       dealii::Triangulation<3> solid;
-      Geometry::extrude_assembly(
-        assembly,
-        Geometry::uniform_slices(scene.geometry.face_length,
-                                 scene.mesh.slice_size),
-        solid);
+      Geometry::extrude_assembly(assembly, Scene::swept_slices(scene), solid);
+      Scene::tag_support_footprint(scene, solid);
       const std::string path =
         (std::filesystem::path(mesh_folder) / (scene.scene_name + "_3d.msh"))
           .string();

@@ -31,6 +31,23 @@ namespace FloorBlock::Contact
   };
 
   /**
+   * @brief One cross-section of a 3D joint (make_swept_joint_reports()):
+   * the joint line at one slice position z, standing for the length of
+   * face between the midpoints to its neighbours (the lumped weights' own
+   * share), with that line's figures per metre of face.
+   */
+  struct JointSection
+  {
+    double z      = 0.; ///< m, the line's position along the face
+    double z_from = 0.; ///< m, start of the face it stands for
+    double z_to   = 0.; ///< m, end of the face it stands for
+    double normal_force       = 0.; ///< N/m, the line's normal force per metre
+    double shear_force        = 0.; ///< N/m, in-plane shear per metre
+    double closed_length      = 0.; ///< m, the line's contact length
+    double peak_normal_stress = 0.; ///< Pa, the line's largest nodal traction
+  };
+
+  /**
    * @brief Post-processed forces of one joint, per metre of face (2D: the
    * plane-strain model's metre; 3D: the totals over the face length
    * divided by it, make_swept_joint_reports()).
@@ -73,6 +90,11 @@ namespace FloorBlock::Contact
      * normal_force x face_length. 0 in 2D.
      */
     double face_length = 0.;
+    /**
+     * 3D scenes: the joint along the face, one entry per cross-section in
+     * increasing z (a footprint's effect along the face); empty in 2D.
+     */
+    std::vector<JointSection> along_face;
 
     /** @brief True for a joint of a 3D scene (face_length > 0). */
     bool

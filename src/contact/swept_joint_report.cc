@@ -62,6 +62,40 @@ namespace FloorBlock::Contact
                plane_nodes, plane_responses, {name}, averaging_length)
         .front();
     }
+
+    /** z of a cross-section's pairs (m). */
+    double
+    section_z(const std::vector<ContactNode<3>> &nodes,
+              const std::vector<unsigned int>   &line)
+    {
+      return nodes[line.front()].position[2];
+    }
+
+    /**
+     * Section @p k of @p sections with its line's report @p part: the face
+     * it stands for runs between the midpoints to its neighbours (the
+     * trapezoidal share of the lumped Q1 weights, section_lengths()).
+     */
+    JointSection
+    section_of(const JointReport                            &part,
+               const std::vector<std::vector<unsigned int>> &sections,
+               const std::vector<ContactNode<3>>            &nodes,
+               const unsigned int                            k,
+               const double                                  face_length)
+    {
+      JointSection section;
+      section.z      = section_z(nodes, sections[k]);
+      section.z_from = k == 0 ? 0. :
+                                (section_z(nodes, sections[k - 1]) + section.z) / 2.;
+      section.z_to   = k + 1 == sections.size() ?
+                         face_length :
+                         (section.z + section_z(nodes, sections[k + 1])) / 2.;
+      section.normal_force       = part.normal_force;
+      section.shear_force        = part.shear_force;
+      section.closed_length      = part.closed_length;
+      section.peak_normal_stress = part.peak_normal_stress;
+      return section;
+    }
   } // namespace
 
   std::vector<JointReport>
@@ -97,6 +131,8 @@ namespace FloorBlock::Contact
               continue;
             const JointReport part = line_report(
               nodes, responses, line, line_length, names[j], averaging_length);
+            report.along_face.push_back(
+              section_of(part, sections, nodes, k, face_length));
             report.normal_force += line_length * part.normal_force;
             report.shear_force += line_length * part.shear_force;
             contact_area += line_length * part.closed_length;

@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <fem/elastic_assembly.h>
+#include <fem/surface_load.h>
 
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
@@ -30,19 +31,6 @@ namespace FloorBlock::Fem
     {
       const auto found = model.densities.find(id);
       return found == model.densities.end() ? 0. : found->second;
-    }
-
-    /** Traction of the pressure p on a face with outward unit normal n. */
-    template <int dim>
-    dealii::Tensor<1, dim>
-    surface_traction(const ElasticModel<dim>         &model,
-                     const dealii::types::boundary_id boundary_id,
-                     const double                     pressure,
-                     const dealii::Tensor<1, dim>    &normal)
-    {
-      if (model.vertical_pressures.count(boundary_id) == 0)
-        return -pressure * normal; // pushes against the outward normal
-      return pressure * std::abs(normal * model.down) * model.down;
     }
   } // namespace
 

@@ -19,6 +19,31 @@ namespace FloorBlock::Geometry
     return slices;
   }
 
+  std::vector<double>
+  footprint_slices(const double face_length,
+                   const double slice_size,
+                   const double footprint_start,
+                   const double footprint_end)
+  {
+    const double        ends[] = {0., footprint_start, footprint_end,
+                                  face_length};
+    std::vector<double> slices{0.};
+    for (unsigned int part = 0; part < 3; ++part)
+      {
+        const double from = ends[part], to = ends[part + 1];
+        if (!(to > from))
+          continue;
+        const std::vector<double> inside =
+          uniform_slices(to - from, slice_size);
+        for (unsigned int k = 1; k < inside.size(); ++k)
+          slices.push_back(from + inside[k]);
+        // The part's end exactly, not from + (to - from): a footprint end
+        // must be the very z the tagging compares with.
+        slices.back() = to;
+      }
+    return slices;
+  }
+
   void
   extrude_assembly(const dealii::Triangulation<2> &assembly,
                    const std::vector<double>      &slice_coordinates,

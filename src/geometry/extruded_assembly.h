@@ -15,6 +15,21 @@ namespace FloorBlock::Geometry
   uniform_slices(double face_length, double slice_size);
 
   /**
+   * @brief Slice positions through both ends of a footprint
+   * [@p footprint_start, @p footprint_end] on the face: the three parts
+   * [0, start], [start, end], [end, face_length] each in
+   * uniform_slices() of at most @p slice_size (a part of zero length
+   * gets none). So the footprint's ends are slice positions, and every
+   * face swept from a 2D edge lies wholly inside or outside it.
+   * Pre-conditions: 0 <= start < end <= face_length, slice_size > 0.
+   */
+  std::vector<double>
+  footprint_slices(double face_length,
+                   double slice_size,
+                   double footprint_start,
+                   double footprint_end);
+
+  /**
    * @brief The 3D block assembly: the 2D assembly mesh (a Gmsh mesh read
    * by read_triangulation(), not refined) swept along z through
    * @p slice_coordinates, each quadrilateral becoming one hexahedron per

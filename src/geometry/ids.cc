@@ -36,6 +36,9 @@ namespace FloorBlock::Geometry::Ids
           return "bedding joint under " + body_name(index) + ", base top";
         case BoundaryKind::floor_surface:
           return "floor surface, top of " + body_name(index);
+        case BoundaryKind::footprint_surface:
+          return "floor surface under the support footprint, top of " +
+                 body_name(index) + " (3D)";
         case BoundaryKind::outer:
           switch (id)
             {
@@ -99,6 +102,8 @@ namespace FloorBlock::Geometry::Ids
       }
     for (unsigned int block = 0; block <= n_blocks; ++block)
       boundaries.push_back(floor_surface(block));
+    for (unsigned int block = 1; block <= n_blocks; ++block)
+      boundaries.push_back(footprint_surface(block));
     for (const dealii::types::boundary_id outer : {base_bottom,
                                                    base_end_face_side,
                                                    base_end_free_side,
@@ -108,7 +113,8 @@ namespace FloorBlock::Geometry::Ids
                                                    end_face_far})
       boundaries.push_back(outer);
 
-    table << "Boundary ids (= Gmsh physical curve tags; the end faces: 3D only)\n";
+    table << "Boundary ids (= Gmsh physical curve tags; the end faces and "
+             "footprint tops: 3D only)\n";
     for (const dealii::types::boundary_id id : boundaries)
       row(id, boundary_name(id, n_blocks));
     table << "Corner fillets: top fillets carry the id of the vertical side "

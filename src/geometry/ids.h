@@ -106,6 +106,22 @@ namespace FloorBlock::Geometry::Ids
    */
   constexpr dealii::types::boundary_id end_face_near = 7006;
   constexpr dealii::types::boundary_id end_face_far  = 7007;
+
+  /**
+   * 3D scenes with a support footprint (Loading/Footprint length > 0,
+   * src/geometry/footprint_surfaces.h): the top of loaded block i where
+   * it lies under the support, z within the footprint. The rest of that
+   * top keeps floor_surface(i). Its own id, not a pressure switched on by
+   * position, because the FE assembly looks loads up by boundary id (as
+   * in 2D), and because the footprint's ends are slice positions of the
+   * swept mesh, so that every top face lies wholly inside or outside and
+   * the loaded area is the footprint exactly.
+   */
+  constexpr dealii::types::boundary_id
+  footprint_surface(const unsigned int block)
+  {
+    return 8000 + block;
+  }
   ///@}
 
   /** What a boundary id denotes, decoded from its value. */
@@ -116,6 +132,7 @@ namespace FloorBlock::Geometry::Ids
     bedding_block_side,
     bedding_base_side,
     floor_surface,
+    footprint_surface,
     outer,
     unknown
   };
@@ -139,6 +156,8 @@ namespace FloorBlock::Geometry::Ids
       return BoundaryKind::bedding_base_side;
     if (kind == 6)
       return BoundaryKind::floor_surface;
+    if (kind == 8 && index >= 1)
+      return BoundaryKind::footprint_surface;
     if (id >= base_bottom && id <= end_face_far)
       return BoundaryKind::outer;
     return BoundaryKind::unknown;

@@ -80,28 +80,22 @@ namespace FloorBlock::Output
   namespace
   {
     /**
-     * A joint of a 3D scene: forces per metre of face and in total, the
-     * contact as an area and as a length over the face, the peak's 3D
-     * position; no "over b" figures (the 2D reading of a support width).
+     * The fields a joint has in 2D and in 3D alike: name and bodies,
+     * forces per metre of face, the contact length, the peaks and the
+     * state.
      */
     json
-    swept_joint_json(const Contact::JointReport &joint,
-                     const std::string          &kind,
-                     const json                 &bodies)
+    common_joint_json(const Contact::JointReport &joint,
+                      const std::string          &kind,
+                      const json                 &bodies)
     {
       return {{"name", joint.name},
               {"kind", kind},
               {"blocks", bodies},
               {"normal_force_N_per_m", joint.normal_force},
-              {"normal_force_N", joint.normal_force * joint.face_length},
               {"shear_force_N_per_m", joint.shear_force},
-              {"contact_area_m2", joint.closed_length * joint.face_length},
               {"contact_length_m", joint.closed_length},
-              {"face_length_m", joint.face_length},
               {"sigma_max_Pa", joint.peak_normal_stress},
-              {"sigma_max_position_m",
-               {joint.peak_position[0], joint.peak_position[1],
-                joint.peak_position_z}},
               {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress},
               {"averaging_length_m", joint.averaging_length},
               {"sigma_mean_Pa", joint.mean_normal_stress},
@@ -109,6 +103,66 @@ namespace FloorBlock::Output
               {"n_stick", joint.counts.n_stick},
               {"n_slip", joint.counts.n_slip},
               {"n_open", joint.counts.n_open}};
+    }
+
+    /**
+     * A joint of a 3D scene: besides the common fields, the force in
+     * total, the contact as an area, the peak's 3D position; no "over b"
+     * figures (the 2D reading of a support width).
+     */
+    json
+    swept_joint_json(const Contact::JointReport &joint,
+                     const std::string          &kind,
+                     const json                 &bodies)
+    {
+      json result = common_joint_json(joint, kind, bodies);
+      result["normal_force_N"] = joint.normal_force * joint.face_length;
+      result["contact_area_m2"] = joint.closed_length * joint.face_length;
+      result["face_length_m"]   = joint.face_length;
+      result["sigma_max_position_m"] = {joint.peak_position[0],
+                                        joint.peak_position[1],
+                                        joint.peak_position_z};
+      json along_face = json::array();
+      for (const Contact::JointSection &section : joint.along_face)
+        along_face.push_back(
+          {{"z_m", section.z},
+           {"z_range_m", {section.z_from, section.z_to}},
+           {"normal_force_N_per_m", section.normal_force},
+           {"shear_force_N_per_m", section.shear_force},
+           {"contact_length_m", section.closed_length},
+           {"sigma_max_Pa", section.peak_normal_stress}});
+      result["along_face"] = along_face;
+      return result;
+    }
+
+    /**
+     * fem.json's account of a 3D scene's support load: the force applied
+     * against the parameter, and where it stands.
+     */
+    void
+    describe_support_load(const SweptSupportLoad &load, json &fem)
+    {
+      fem["applied_load_N"] = load.applied_load;
+      fem["support_load_N"] = load.support_load;
+      fem["loaded_area_m2"] = load.loaded_area;
+      if (load.on_footprint)
+        fem["support_footprint"] = {
+          {"z_range_m", {load.footprint_start, load.footprint_end}},
+          {"length_m", load.footprint_end - load.footprint_start},
+          {"reading",
+           "one support: its whole Support load on the loaded blocks' tops "
+           "within the footprint (Loading/Footprint length), none elsewhere; "
+           "applied_load_N, the force integrated over the loaded faces, "
+           "equals support_load_N"}};
+      else
+        fem["support_footprint"] = {
+          {"z_range_m", nullptr},
+          {"length_m", nullptr},
+          {"reading",
+           "no footprint (Loading/Footprint length = 0): the 2D load per "
+           "metre of face, Support load over the support width b, along the "
+           "whole face, as under supports side by side; applied_load_N = "
+           "support_load_N x face length / b"}};
     }
 
     /** The swept joints' face length (m), 0 for a 2D result. */
@@ -187,27 +241,15 @@ namespace FloorBlock::Output
              const double                support_width)
   {
     const auto name = Compare::parse_joint_name(joint.name);
+    const json bodies = joint_bodies(name.kind, name.number, n_blocks);
     if (joint.swept())
-      return swept_joint_json(joint, name.kind,
-                              joint_bodies(name.kind, name.number, n_blocks));
-    return {{"name", joint.name},
-            {"kind", name.kind},
-            {"blocks", joint_bodies(name.kind, name.number, n_blocks)},
-            {"normal_force_N_per_m", joint.normal_force},
-            {"normal_force_N_over_b", joint.normal_force * support_width},
-            {"shear_force_N_per_m", joint.shear_force},
-            {"contact_length_m", joint.closed_length},
-            {"contact_area_m2", joint.closed_length * support_width},
-            {"sigma_max_Pa", joint.peak_normal_stress},
-            {"sigma_max_position_m",
-             {joint.peak_position[0], joint.peak_position[1]}},
-            {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress},
-            {"averaging_length_m", joint.averaging_length},
-            {"sigma_mean_Pa", joint.mean_normal_stress},
-            {"state", state_summary(joint.counts)},
-            {"n_stick", joint.counts.n_stick},
-            {"n_slip", joint.counts.n_slip},
-            {"n_open", joint.counts.n_open}};
+      return swept_joint_json(joint, name.kind, bodies);
+    json result = common_joint_json(joint, name.kind, bodies);
+    result["normal_force_N_over_b"] = joint.normal_force * support_width;
+    result["contact_area_m2"]       = joint.closed_length * support_width;
+    result["sigma_max_position_m"]  = {joint.peak_position[0],
+                                       joint.peak_position[1]};
+    return result;
   }
 
   json
@@ -291,6 +333,8 @@ namespace FloorBlock::Output
                      {"wall_time_s", report.mesh->wall_time}};
     if (report.rigid)
       describe_rigid_model(*report.rigid, fem);
+    if (report.support_load)
+      describe_support_load(*report.support_load, fem);
     return fem;
   }
 

@@ -66,6 +66,25 @@ namespace FloorBlock::Output
   };
 
   /**
+   * The support load a 3D scene applies (Loading/Footprint length): the
+   * footprint, if any, and the force the mesh carries, integrated over
+   * the loaded faces (Fem::applied_surface_load()).
+   */
+  struct SweptSupportLoad
+  {
+    /** Loading/Support load (N), the force of one support. */
+    double support_load = 0.;
+    /** Total support force applied, its component along the vertical (N). */
+    double applied_load = 0.;
+    /** Area of the faces it acts on (m^2). */
+    double loaded_area = 0.;
+    /** Whether the load stands on a footprint (else along the whole face). */
+    bool   on_footprint    = false;
+    double footprint_start = 0.; ///< m along the face
+    double footprint_end   = 0.; ///< m along the face
+  };
+
+  /**
    * The FEM report of one solve, besides the solver's own
    * Contact::SolveResult: model, status, totals over the increments, force
    * balance and the model's particulars. fem_json() writes it as fem.json.
@@ -89,6 +108,7 @@ namespace FloorBlock::Output
     std::optional<OverlapCheck>       joint_overlap; ///< elastic FEM only
     std::optional<Geometry::MeshStatistics> mesh;    ///< elastic FEM only
     std::optional<RigidModelNote>     rigid;         ///< rigid blocks only
+    std::optional<SweptSupportLoad>   support_load;  ///< 3D scenes only
 
     bool
     converged() const

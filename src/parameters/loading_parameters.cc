@@ -15,7 +15,12 @@ namespace FloorBlock::Parameters
   namespace
   {
     constexpr unsigned int largest_block_count = 99;
-  }
+    // Bounds of Geometry/Face length (geometry_parameters.cc): a footprint
+    // longer than a kilometre of face is a typo, not a scene.
+    constexpr double largest_footprint = 1.0e3; // m
+    /** Loading/Footprint offset's value for "centred on the face". */
+    constexpr double centred_offset = -1.;
+  } // namespace
 
   void
   LoadingParameters::declare_parameters(ParameterHandler &prm)
@@ -62,6 +67,24 @@ namespace FloorBlock::Parameters
                       "the face; or raised into the planar slope u_y = lift "
                       "x/nL (the planar counterpart of parabola, Figure 6.5). "
                       "Units: none.");
+    prm.declare_entry(
+      "Footprint length", "0", Double(0, largest_footprint),
+      "3D scenes (Geometry/Dimension = 3): the support's extent along the "
+      "face, the shield width b its whole Support load acts on. The load "
+      "is the 2D support pressure times Geometry/Support width / Footprint "
+      "length on the loaded blocks' tops within the footprint only, so its "
+      "total is Support load (with Footprint length = Support width the "
+      "pressure is the 2D one). 0: no footprint; the 2D load per metre of "
+      "face (Support load over Support width) acts along the whole Face "
+      "length, as under a row of supports side by side. Must not exceed "
+      "Geometry/Face length; must be 0 in 2D. Units: m.");
+    prm.declare_entry(
+      "Footprint offset", "-1", Double(centred_offset, largest_footprint),
+      "3D scenes with Footprint length > 0: z of the footprint's start "
+      "along the face (the face runs from z = 0 to Geometry/Face length), "
+      "between 0 and Face length - Footprint length. -1 (the default): "
+      "centred on the face. Any other value below 0 is refused, and so is "
+      "an offset without a footprint. Units: m.");
     prm.leave_subsection();
   }
 
@@ -85,7 +108,18 @@ namespace FloorBlock::Parameters
                   mode == "tilt"               ? UpliftMode::tilt :
                   mode == "slope"              ? UpliftMode::slope :
                                                  UpliftMode::parabola;
+    footprint_length         = prm.get_double("Footprint length");
+    const double offset      = prm.get_double("Footprint offset");
     prm.leave_subsection();
+
+    if (offset == centred_offset)
+      footprint_offset.reset();
+    else if (offset < 0.)
+      throw InputError("Loading/Footprint offset", std::to_string(offset),
+                       "must be -1 (centred on the face) or between 0 and "
+                       "Geometry/Face length - Loading/Footprint length (m)");
+    else
+      footprint_offset = offset;
 
     loaded_blocks_from_face.clear();
     std::set<unsigned int> seen;

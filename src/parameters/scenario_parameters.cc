@@ -26,6 +26,44 @@ namespace FloorBlock::Parameters
     CornerParameters::declare_parameters(prm);
   }
 
+  namespace
+  {
+    /**
+     * The support footprint (Loading/Footprint length, offset) lies on the
+     * face of a 3D scene: a footprint along the face has no meaning in the
+     * plane-strain 2D model, whose load is per metre of face.
+     */
+    void
+    check_footprint(const GeometryParameters &geometry,
+                    const LoadingParameters  &loading)
+    {
+      const double length = loading.footprint_length;
+      if (length > 0. && geometry.dimension != 3)
+        throw InputError("Loading/Footprint length", std::to_string(length),
+                         "must be 0 while Geometry/Dimension = 2: a "
+                         "footprint along the face needs a 3D scene");
+      if (length > geometry.face_length)
+        throw InputError("Loading/Footprint length", std::to_string(length),
+                         "must be between 0 and Geometry/Face length = " +
+                           std::to_string(geometry.face_length) + " m");
+      if (!loading.footprint_offset)
+        return;
+      const double offset = *loading.footprint_offset;
+      if (!(length > 0.))
+        throw InputError("Loading/Footprint offset", std::to_string(offset),
+                         "must be -1 (the default) while Loading/Footprint "
+                         "length = 0: there is no footprint to place");
+      // Round-off of an offset written as Face length - Footprint length.
+      const double slack = 1e-9 * geometry.face_length;
+      if (offset + length > geometry.face_length + slack)
+        throw InputError("Loading/Footprint offset", std::to_string(offset),
+                         "must be -1 (centred) or between 0 and Geometry/Face "
+                         "length - Loading/Footprint length = " +
+                           std::to_string(geometry.face_length - length) +
+                           " m");
+    }
+  } // namespace
+
   void
   ScenarioParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -63,6 +101,8 @@ namespace FloorBlock::Parameters
                          "each loaded block must be between 1 and "
                          "Geometry/Number of blocks = " +
                            std::to_string(geometry.n_blocks));
+
+    check_footprint(geometry, loading);
 
     model.choose(bedding, joints, loading);
 

@@ -130,6 +130,17 @@ namespace FloorBlock::Parameters
     /// the user wrote them; Scene converts to the chapter's numbering.
     std::vector<unsigned int> loaded_blocks_from_face;
     double                    floor_lift; ///< m
+    /**
+     * 3D scenes: the support's extent along the face (m), the shield
+     * width b on which its whole Support load acts; 0 = no footprint, the
+     * 2D per-metre load along the whole face length.
+     */
+    double footprint_length;
+    /**
+     * z of the footprint's start (m); empty = centred on the face
+     * (Geometry/Face length - footprint_length) / 2.
+     */
+    std::optional<double> footprint_offset;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

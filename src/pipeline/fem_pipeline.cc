@@ -17,7 +17,9 @@
 #include <scene/floor_contact_problem.h>
 #include <scene/mesh_refinement.h>
 #include <scene/rigid_inputs.h>
+#include <scene/support_footprint.h>
 #include <scene/swept_contact_problem.h>
+#include <fem/surface_load.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -97,7 +99,8 @@ namespace FloorBlock::Pipeline
       const Geometry::MeshStatistics                             &mesh,
       const Output::ResultFolder                                 &folder,
       const bool                                                  write_vtu,
-      const std::function<void(const Contact::ContactSolver<dim> &)> &after_solve)
+      const std::function<void(const Contact::ContactSolver<dim> &)> &after_solve,
+      const std::optional<Output::SweptSupportLoad> &support_load = {})
     {
       FemOutcome outcome;
       outcome.mesh = mesh;
@@ -129,8 +132,34 @@ namespace FloorBlock::Pipeline
       outcome.report.failure       = failure_record;
       outcome.report.joint_overlap = overlap_check(outcome.result, scene);
       outcome.report.mesh          = outcome.mesh;
+      outcome.report.support_load  = support_load;
       write_fem_files(outcome, folder);
       return outcome;
+    }
+
+    /**
+     * The support load the 3D mesh carries: the pressures' resultant over
+     * the faces that carry them, along the vertical, at full load.
+     */
+    Output::SweptSupportLoad
+    swept_support_load(const Parameters::ScenarioParameters          &scene,
+                       const std::optional<Scene::SupportFootprint> &footprint,
+                       const dealii::Triangulation<3>               &solid,
+                       const Fem::ElasticModel<3>                   &model)
+    {
+      const Fem::SurfaceLoad<3> applied =
+        Fem::applied_surface_load(solid, model);
+      Output::SweptSupportLoad load;
+      load.support_load = scene.loading.support_load;
+      load.applied_load = applied.force * model.down;
+      load.loaded_area  = applied.loaded_area;
+      load.on_footprint = footprint.has_value();
+      if (footprint)
+        {
+          load.footprint_start = footprint->start;
+          load.footprint_end   = footprint->end;
+        }
+      return load;
     }
   } // namespace
 
@@ -266,11 +295,8 @@ namespace FloorBlock::Pipeline
     dealii::Triangulation<2>       section;
     Geometry::MeshStatistics       mesh = mesh_scene(scene, folder, {}, section);
     dealii::Timer                  timer;
-    Geometry::extrude_assembly(
-      section,
-      Geometry::uniform_slices(scene.geometry.face_length,
-                               scene.mesh.slice_size),
-      solid);
+    Geometry::extrude_assembly(section, Scene::swept_slices(scene), solid);
+    Scene::tag_support_footprint(scene, solid);
     write_solved_mesh(solid, folder.path_of("mesh.msh"), mesh);
     mesh.wall_time += timer.wall_time();
     return mesh;
@@ -282,9 +308,20 @@ namespace FloorBlock::Pipeline
                     const bool                            write_vtu)
   {
     check_swept_scene(scene);
-    const Contact::ContactProblem<3> problem = Scene::swept_contact_problem(
+    Contact::ContactProblem<3> problem = Scene::swept_contact_problem(
       Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
       scene.geometry.end_faces);
+    const auto footprint = Scene::support_footprint(scene);
+    if (footprint)
+      Scene::load_support_footprint(*footprint, scene.geometry.support_width,
+                                    problem);
+    const auto solve = [&](const dealii::Triangulation<3>  &solid,
+                           const Geometry::MeshStatistics &mesh) {
+      return solve_on_mesh<3>(scene, solid, problem, mesh, folder, write_vtu,
+                              [](const Contact::ContactSolver<3> &) {},
+                              swept_support_load(scene, footprint, solid,
+                                                 problem.model));
+    };
     if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
       {
         // mpirun -np N: one mesh over all processes.
@@ -292,15 +329,12 @@ namespace FloorBlock::Pipeline
           MPI_COMM_WORLD);
         const Geometry::MeshStatistics mesh =
           distribute_swept_mesh(scene, folder, solid);
-        return solve_on_mesh<3>(scene, solid, problem, mesh, folder,
-                                write_vtu,
-                                [](const Contact::ContactSolver<3> &) {});
+        return solve(solid, mesh);
       }
     dealii::Triangulation<3>       solid;
     const Geometry::MeshStatistics mesh =
       mesh_swept_scene(scene, folder, solid);
-    return solve_on_mesh<3>(scene, solid, problem, mesh, folder, write_vtu,
-                         [](const Contact::ContactSolver<3> &) {});
+    return solve(solid, mesh);
   }
 
   void

@@ -107,7 +107,10 @@ namespace FloorBlock::Pipeline
    * @brief The 3D scene's mesh (Geometry/Dimension = 3): the Gmsh mesh of
    * the scene's cross-section swept along the face over Geometry/Face
    * length in slices of Mesh/Slice size (Geometry::extrude_assembly),
-   * written into @p folder as mesh.msh. Throws as check_swept_scene().
+   * through both ends of a support footprint if there is one, whose
+   * loaded tops then carry Ids::footprint_surface
+   * (Scene::swept_slices, Scene::tag_support_footprint); written into
+   * @p folder as mesh.msh. Throws as check_swept_scene().
    */
   Geometry::MeshStatistics
   mesh_swept_scene(const Parameters::ScenarioParameters &scene,
@@ -119,7 +122,11 @@ namespace FloorBlock::Pipeline
    * mesh_swept_scene(), the scene's 2D contact problem swept along the
    * face with Geometry/End faces (Scene::swept_contact_problem), the same
    * contact solver and files, forces per metre of face and contact areas
-   * (Contact::make_swept_joint_reports). No deformed.png (a 2D picture).
+   * (Contact::make_swept_joint_reports), each joint along the face. With a
+   * footprint the support's whole load acts on it
+   * (Scene::load_support_footprint); fem.json reports the support force
+   * the mesh carries (applied_load_N, Fem::applied_surface_load). No
+   * deformed.png (a 2D picture).
    * Throws as check_swept_scene().
    */
   FemOutcome

@@ -76,6 +76,42 @@ namespace
     EXPECT_EQ(report.profile.front().state, Contact::JointState::stick);
   }
 
+  // The tool shall report a swept joint section by section along the
+  // face: each section's z, the face it stands for (between the midpoints
+  // to its neighbours: 0-0.25, 0.25-0.75, 0.75-1 m), its normal force per
+  // metre and contact length; the joint's figures are their weighted sums.
+  TEST(SweptJointReport, AlongTheFaceSectionBySection)
+  {
+    std::vector<Contact::ContactNode<3>>   nodes;
+    std::vector<Contact::JointResponse<3>> responses;
+    make_joint({true, true, false}, nodes, responses);
+    const auto report = Contact::make_swept_joint_reports(
+                          nodes, responses, {"vertical 1"}, 0.1, 1.)
+                          .front();
+    ASSERT_EQ(report.along_face.size(), 3u);
+    const double z[3]      = {0., 0.5, 1.};
+    const double z_from[3] = {0., 0.25, 0.75};
+    const double z_to[3]   = {0.25, 0.75, 1.};
+    double       force = 0., area = 0.;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const Contact::JointSection &section = report.along_face[k];
+        EXPECT_DOUBLE_EQ(section.z, z[k]);
+        EXPECT_DOUBLE_EQ(section.z_from, z_from[k]);
+        EXPECT_DOUBLE_EQ(section.z_to, z_to[k]);
+        const bool closed = k < 2;
+        EXPECT_NEAR(section.normal_force, closed ? traction : 0.,
+                    1e-9 * traction);
+        EXPECT_NEAR(section.closed_length, closed ? 1. : 0., 1e-12);
+        EXPECT_DOUBLE_EQ(section.peak_normal_stress, closed ? traction : 0.);
+        force += (section.z_to - section.z_from) * section.normal_force;
+        area += (section.z_to - section.z_from) * section.closed_length;
+      }
+    EXPECT_NEAR(force, report.normal_force * report.face_length,
+                1e-9 * traction);
+    EXPECT_NEAR(area, report.closed_length * report.face_length, 1e-12);
+  }
+
   // All sections alike (plane strain): the per-metre figures are any one
   // section's, whatever the face length.
   TEST(SweptJointReport, UniformSectionsGiveTheSectionAnswer)

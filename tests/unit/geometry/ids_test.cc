@@ -27,6 +27,8 @@ namespace FloorBlock::Geometry::Ids
     EXPECT_EQ(base_end_free_side, 7003u);
     EXPECT_EQ(free_side_of_block_1, 7004u);
     EXPECT_EQ(face_block_outer_side, 7005u);
+    EXPECT_EQ(footprint_surface(1), 8001u);
+    EXPECT_EQ(footprint_surface(6), 8006u);
   }
 
   TEST(Ids, KindAndIndexDecodeEveryId)
@@ -50,6 +52,11 @@ namespace FloorBlock::Geometry::Ids
     EXPECT_EQ(boundary_kind(end_face_near), BoundaryKind::outer);
     EXPECT_EQ(boundary_kind(end_face_far), BoundaryKind::outer);
     EXPECT_EQ(boundary_kind(7008), BoundaryKind::unknown);
+    EXPECT_EQ(boundary_kind(8000), BoundaryKind::unknown);
+    EXPECT_EQ(boundary_kind(footprint_surface(1)),
+              BoundaryKind::footprint_surface);
+    EXPECT_EQ(boundary_index(footprint_surface(max_n_blocks)), max_n_blocks);
+    EXPECT_FALSE(is_joint_side(footprint_surface(1)));
     EXPECT_TRUE(is_joint_side(bedding_base_side(0)));
     EXPECT_FALSE(is_joint_side(floor_surface(1)));
     EXPECT_FALSE(is_joint_side(base_bottom));
@@ -73,10 +80,10 @@ namespace FloorBlock::Geometry::Ids
           }
       }
     // Materials: n blocks + face + base. Boundaries: 2n vertical joint
-    // sides, 2(n+1) bedding sides, n+1 floor surfaces, 5 outer and the 2
-    // end faces of 3D scenes.
+    // sides, 2(n+1) bedding sides, n+1 floor surfaces, 5 outer, the 2
+    // end faces and the n footprint tops of 3D scenes.
     const unsigned int n = max_n_blocks;
-    EXPECT_EQ(n_rows, (n + 2) + 2 * n + 2 * (n + 1) + (n + 1) + 5 + 2);
+    EXPECT_EQ(n_rows, (n + 2) + 2 * n + 2 * (n + 1) + (n + 1) + 5 + 2 + n);
     // Material and boundary ids live in different spaces, so only the
     // boundary ids have to be distinct from each other: 1..101 < 2000.
     EXPECT_EQ(seen.size(), n_rows);

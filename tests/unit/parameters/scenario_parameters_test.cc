@@ -153,3 +153,46 @@ TEST(ScenarioParameters, JsonSceneIsAccepted)
   EXPECT_EQ(scene.loaded_blocks(), (std::vector<unsigned int>{4, 3}));
   std::filesystem::remove(path);
 }
+
+// The tool shall refuse a support footprint that does not lie on the face
+// of a 3D scene, naming the parameter, the value and the allowed range.
+TEST(ScenarioParameters, FootprintOutsideTheFaceIsRefused)
+{
+  const std::string footprint_scene =
+    std::string(FLOORBLOCK_SOURCE_DIR) + "/params/footprint_3d.prm";
+  const auto scene = read_scenario(footprint_scene, {});
+  EXPECT_DOUBLE_EQ(scene.loading.footprint_length, 1.5);
+  EXPECT_FALSE(scene.loading.footprint_offset); // centred
+  EXPECT_EQ(read_scenario(footprint_scene, {"Loading/Footprint offset=3"})
+              .loading.footprint_offset,
+            3.);
+
+  struct Refusal
+  {
+    std::vector<std::string> overrides;
+    std::vector<std::string> mentions; ///< parameter, value, range
+  };
+  const Refusal refusals[] = {
+    {{"Geometry/Dimension=2"},
+     {"Loading/Footprint length", "1.5", "Geometry/Dimension = 2"}},
+    {{"Loading/Footprint length=5"},
+     {"Loading/Footprint length", "5", "between 0 and Geometry/Face length = 4.5"}},
+    {{"Loading/Footprint length=-1"}, {"Footprint length", "-1"}},
+    {{"Loading/Footprint offset=3.5"},
+     {"Loading/Footprint offset", "3.5", "between 0 and", "= 3.0"}},
+    {{"Loading/Footprint offset=-0.5"},
+     {"Loading/Footprint offset", "-0.5", "-1 (centred"}},
+    {{"Loading/Footprint length=0", "Loading/Footprint offset=1"},
+     {"Loading/Footprint offset", "1", "Footprint length = 0"}},
+  };
+  for (const Refusal &refusal : refusals)
+    {
+      const std::string message = error_of(footprint_scene, refusal.overrides);
+      for (const std::string &mention : refusal.mentions)
+        EXPECT_NE(message.find(mention), std::string::npos)
+          << refusal.overrides.front() << ": '" << mention
+          << "' not in: " << message;
+    }
+  // An offset that puts the footprint's end on the face's end passes.
+  EXPECT_EQ(error_of(footprint_scene, {"Loading/Footprint offset=3"}), "");
+}
