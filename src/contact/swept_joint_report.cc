@@ -10,6 +10,9 @@ namespace FloorBlock::Contact
 {
   namespace
   {
+    /** Section peaks closer than this (relative) count as equal. */
+    constexpr double same_peak_tolerance = 1e-9;
+
     /** In-plane (x, y) part of a 3D vector. */
     dealii::Tensor<1, 2>
     in_plane(const dealii::Tensor<1, 3> &vector)
@@ -137,7 +140,12 @@ namespace FloorBlock::Contact
             report.shear_force += line_length * part.shear_force;
             contact_area += line_length * part.closed_length;
             uncertainty += line_length * part.closed_length_uncertainty;
-            if (part.peak_normal_stress > report.peak_normal_stress)
+            // Sections whose peaks agree to round-off (a plane-strain or
+            // uniformly loaded face) keep the first along the face, so that
+            // the position does not depend on the order of sums, e.g. over
+            // the processes of a distributed solve.
+            if (part.peak_normal_stress >
+                report.peak_normal_stress * (1. + same_peak_tolerance))
               {
                 report.peak_normal_stress = part.peak_normal_stress;
                 report.peak_position      = part.peak_position;
