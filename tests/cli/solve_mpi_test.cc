@@ -58,6 +58,31 @@ namespace
       EXPECT_EQ(actual, expected) << path;
   }
 
+  /** A solve's folder and fem.json on one process and on two. */
+  struct OneAndTwo
+  {
+    std::string    folder_2;
+    nlohmann::json fem_1;
+    nlohmann::json fem_2;
+  };
+
+  /** @p command (a `solve` with its options) on 1 and on 2 processes. */
+  OneAndTwo
+  solve_on_one_and_two(const std::string &command, const std::string &name)
+  {
+    const std::string folder_1 = fresh_output_folder(name + "_one");
+    const auto        one =
+      run_floorblock(command + " --output " + shell_quoted(folder_1));
+    EXPECT_EQ(one.exit_code, 0) << one.output;
+    const std::string folder_2 = fresh_output_folder(name + "_two");
+    const auto        two = run_floorblock_on_processes(
+      2, command + " --output " + shell_quoted(folder_2));
+    EXPECT_EQ(two.exit_code, 0) << two.output;
+    return {folder_2,
+            read_json(folder_1 + "/fem.json"),
+            read_json(folder_2 + "/fem.json")};
+  }
+
   std::size_t
   count_files_ending(const std::string &folder, const std::string &ending)
   {
@@ -80,17 +105,8 @@ namespace
 // DoFs and increments, and ParaView pieces per process with a .pvtu each.
 TEST(SolveMpi, TwoProcessesGiveTheOneProcessAnswer)
 {
-  const std::string folder_1 = fresh_output_folder("solve_mpi_one");
-  const auto one = run_floorblock(coarse_plane_strain + " --output " +
-                                  shell_quoted(folder_1));
-  ASSERT_EQ(one.exit_code, 0) << one.output;
-  const std::string folder_2 = fresh_output_folder("solve_mpi_two");
-  const auto two = run_floorblock_on_processes(
-    2, coarse_plane_strain + " --output " + shell_quoted(folder_2));
-  ASSERT_EQ(two.exit_code, 0) << two.output;
-
-  const auto fem_1 = read_json(folder_1 + "/fem.json");
-  const auto fem_2 = read_json(folder_2 + "/fem.json");
+  const auto [folder_2, fem_1, fem_2] =
+    solve_on_one_and_two(coarse_plane_strain, "solve_mpi");
   ASSERT_EQ(fem_2.at("status"), "converged");
   EXPECT_EQ(fem_2.at("n_dofs"), fem_1.at("n_dofs"));
   // Every figure of every joint: forces, contact, peaks and their
@@ -121,16 +137,8 @@ TEST(SolveMpi, FootprintOnTwoProcessesGivesTheOneProcessAnswer)
     " --set 'Mesh/Cells per contact length=2' --set 'Mesh/Corner size=0.1'"
     " --set 'Mesh/Far size=0.5' --set 'Geometry/Face length=1.5'"
     " --set 'Loading/Footprint length=0.5'";
-  const std::string folder_1 = fresh_output_folder("footprint_mpi_one");
-  const auto one = run_floorblock(footprint + " --output " +
-                                  shell_quoted(folder_1));
-  ASSERT_EQ(one.exit_code, 0) << one.output;
-  const std::string folder_2 = fresh_output_folder("footprint_mpi_two");
-  const auto two = run_floorblock_on_processes(
-    2, footprint + " --output " + shell_quoted(folder_2));
-  ASSERT_EQ(two.exit_code, 0) << two.output;
-  const auto fem_1 = read_json(folder_1 + "/fem.json");
-  const auto fem_2 = read_json(folder_2 + "/fem.json");
+  const auto [folder_2, fem_1, fem_2] =
+    solve_on_one_and_two(footprint, "footprint_mpi");
   ASSERT_EQ(fem_2.at("status"), "converged");
   expect_same_numbers(fem_1.at("joints"), fem_2.at("joints"), "joints");
   for (const std::string figure :
