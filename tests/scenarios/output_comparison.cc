@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <vector>
 
 namespace FloorBlockTest
 {
@@ -25,7 +27,24 @@ namespace FloorBlockTest
     // uniform one: the status needs a wall-time ratio below 1 and the text
     // prints it ("time x0.777"). The DoF ratios and errors they are made of
     // are compared in equal_error_comparison.
-    return name == "adaptive_target" || name == "remesh_target";
+    if (name == "adaptive_target" || name == "remesh_target")
+      return true;
+    // What the solution cost, not what it is: Newton iterations, linear
+    // solves, LU factorisations kept or renewed, Krylov iterations. A
+    // factorisation is reused while GMRES on it converges within a cap and
+    // Newton stops on a residual test, so these counts follow round-off:
+    // another machine's BLAS kernels (OpenBLAS picks them per CPU) moved
+    // them by 1-40 % (2026-11-26) with every result within tolerance.
+    static const std::set<std::string> cost_counters = {
+      "newton_iterations",
+      "failed_newton_iterations",
+      "linear_solves",
+      "lu_factorizations",
+      "krylov_iterations_on_lu_factors",
+      "linear_solves_above_tolerance",
+      "amg_setups",
+      "krylov_iterations_with_amg"};
+    return cost_counters.count(name) > 0;
   }
 
   namespace
@@ -45,12 +64,45 @@ namespace FloorBlockTest
     }
 
     /** The tolerance of @p field: its declared looser one, else the default. */
+    /**
+     * Residuals that are round-off by nature, in every case: the force
+     * balance of a solution converged to Newton's relative tolerance 1e-10
+     * of loads near 1e6 N/m leaves up to 1e-4 N/m, and a different order of
+     * sums (another machine's BLAS) moves it anywhere below that (measured:
+     * 1e-7 against 5e-7 N/m on two machines).
+     */
+    const std::vector<FieldTolerance> &
+    round_off_fields()
+    {
+      static const std::vector<FieldTolerance> fields = {
+        {"force_balance_absolute_error_N_per_m",
+         {1e-4, 1e-8},
+         "Newton tolerance 1e-10 x loads of 1e6 N/m"},
+        {"force_balance_relative_error",
+         {1e-10, 1e-8},
+         "Newton's relative tolerance"}};
+      return fields;
+    }
+
+    /** Skipped everywhere (is_skipped_field) or in this case. */
+    bool
+    skipped(const std::string &field, const ComparisonSettings &settings)
+    {
+      return is_skipped_field(field) ||
+             std::find(settings.skipped_fields.begin(),
+                       settings.skipped_fields.end(),
+                       field) != settings.skipped_fields.end();
+    }
+
     Tolerance
     tolerance_of(const std::string &field, const ComparisonSettings &settings)
     {
       for (const FieldTolerance &looser : settings.looser_fields)
         if (looser.field == field)
           return looser.tolerance;
+      for (const FieldTolerance &round_off : round_off_fields())
+        if (round_off.field == field)
+          return round_off.tolerance;
       return settings.tolerance;
     }
 
@@ -146,7 +198,7 @@ namespace FloorBlockTest
         {
           for (const auto &item : reference.items())
             {
-              if (is_skipped_field(item.key()))
+              if (skipped(item.key(), settings))
                 continue;
               const std::string child = pointer + "/" + item.key();
               if (!output.contains(item.key()))
@@ -160,7 +212,7 @@ namespace FloorBlockTest
                                     differences);
             }
           for (const auto &item : output.items())
-            if (!is_skipped_field(item.key()) &&
+            if (!skipped(item.key(), settings) &&
                 !reference.contains(item.key()))
               differences.add(pointer + "/" + item.key(),
                               "key not in the reference (output " +
@@ -279,7 +331,7 @@ namespace FloorBlockTest
     for (std::size_t r = 0; r < n_rows; ++r)
       for (const std::string &column : reference.columns)
         {
-          if (is_skipped_field(column))
+          if (skipped(column, settings))
             continue;
           const std::string where =
             "row " + std::to_string(r + 1) + ", column " + column;

@@ -36,6 +36,11 @@ namespace FloorBlockTest
   {
     Tolerance                   tolerance;
     std::vector<FieldTolerance> looser_fields;
+    /**
+     * Fields (JSON keys, CSV columns) this case does not compare; the case
+     * says why next to the list.
+     */
+    std::vector<std::string>    skipped_fields;
   };
 
   /**

@@ -144,6 +144,46 @@ TEST(OutputComparison, LooserToleranceAppliesToItsFieldOnly)
     << differences[0];
 }
 
+// The tool shall ignore the solver's cost counters (they follow round-off:
+// reuse caps, a Newton iteration more or less) and compare the force
+// balance residual to its round-off level, not to 1e-8 of itself.
+TEST(OutputComparison, CostCountersAndRoundOffResidualsFollowTheMachine)
+{
+  EXPECT_TRUE(is_skipped_field("lu_factorizations"));
+  EXPECT_TRUE(is_skipped_field("newton_iterations"));
+  EXPECT_TRUE(is_skipped_field("krylov_iterations_with_amg"));
+  EXPECT_FALSE(is_skipped_field("n_increments"));
+
+  const json reference = {{"force_balance_absolute_error_N_per_m", 1.2e-6},
+                          {"force_balance_relative_error", 3e-14},
+                          {"normal_force_N_per_m", 1.2e-6}};
+  json other = reference;
+  other["force_balance_absolute_error_N_per_m"] = 5e-7;
+  other["force_balance_relative_error"]         = 1e-14;
+  EXPECT_TRUE(compare_json(reference, other, "fem.json").empty());
+  // A force imbalance beyond round-off is still caught ...
+  other["force_balance_absolute_error_N_per_m"] = 1e-3;
+  EXPECT_EQ(compare_json(reference, other, "fem.json").size(), 1u);
+  // ... and the round-off tolerance belongs to the residual fields only.
+  other                         = reference;
+  other["normal_force_N_per_m"] = 5e-7;
+  EXPECT_EQ(compare_json(reference, other, "fem.json").size(), 1u);
+}
+
+// The tool shall skip a case's own skipped fields in JSON and CSV.
+TEST(OutputComparison, CaseSkippedFieldIsNotCompared)
+{
+  const ScratchFolder scratch;
+  ComparisonSettings  settings;
+  settings.skipped_fields = {"status"};
+  const std::string a = scratch.written("skip_a.csv", table);
+  std::string       changed_table = table;
+  changed_table.replace(changed_table.find(",ok,"), 4, ",slip,");
+  const std::string b = scratch.written("skip_b.csv", changed_table);
+  EXPECT_EQ(compare_csv(a, b, "joints.csv").size(), 1u);
+  EXPECT_TRUE(compare_csv(a, b, "joints.csv", settings).empty());
+}
+
 // The tool shall ignore timing fields, and only those.
 TEST(OutputComparison, TimingFieldIsIgnored)
 {

@@ -29,6 +29,14 @@
 // Such a difference after a refactor is round-off, not a bug, but it is only
 // accepted by reviewing it and regenerating the references.
 //
+// Another machine is such a change too: OpenBLAS picks its kernels per CPU,
+// and on a second machine (2026-11-26) eight cases differed in exactly the
+// fields above. So that the references hold on any machine, the cost
+// counters are not compared (output_comparison.cc, is_skipped_field), the
+// force balance residuals are compared to their round-off level in every
+// case, and the other round-off fields get a tolerance per case below, each
+// with its reason.
+//
 // The references are regenerated only by the target
 // update_scenario_references (`cmake --build build --target
 // update_scenario_references`, which runs these tests with
@@ -173,7 +181,15 @@ namespace
 // (params/default.prm) as in tests/scenarios/run_default/.
 TEST(ScenarioReference, RunDefaultScene)
 {
-  check_against_references({"run_default", "run params/default.prm"});
+  // The error estimate's absolute_error of a joint force is the difference
+  // of two forces, each converged to Newton's tolerance: near-equal forces
+  // (bedding 1, vertical 1: 1 N/m of 1e6) leave it to round-off, 1.6e-4 N/m
+  // apart on two machines.
+  ComparisonSettings settings;
+  settings.looser_fields = {
+    {"absolute_error", {1e-3, 1e-8}, "difference of two converged forces"}};
+  check_against_references(
+    {"run_default", "run params/default.prm", 0, settings});
 }
 
 // Checked: fem.json and joints.csv of the rigid joint law (exact contact,
@@ -191,7 +207,17 @@ TEST(ScenarioReference, SolveRigidLaw)
 // The tool shall solve S6 to the stored numbers.
 TEST(ScenarioReference, SolveSixBlockBenchmark)
 {
-  check_against_references({"solve_s6", "solve params/s6.prm"});
+  // Nodes at the end of a contact zone with zero gap and zero force: open
+  // or stuck is decided by round-off (on a second machine 1-2 of 145 nodes
+  // changed label, every force within tolerance). Their labels and the
+  // counts made of them are not compared; the forces are.
+  ComparisonSettings settings;
+  settings.looser_fields = {
+    {"n_open", {2., 0.}, "labels of zero-force nodes"},
+    {"n_stick", {2., 0.}, "labels of zero-force nodes"},
+    {"n_slip", {2., 0.}, "labels of zero-force nodes"}};
+  settings.skipped_fields = {"state"};
+  check_against_references({"solve_s6", "solve params/s6.prm", 0, settings});
 }
 
 // Checked: fem.json and joints.csv with 5 cm fillets at the block corners,
@@ -233,7 +259,12 @@ TEST(ScenarioReference, VerifyHertz)
 // The tool shall write the stored numbers for the patch verification case.
 TEST(ScenarioReference, VerifyPatch)
 {
-  check_against_references({"verify_patch", "verify patch"});
+  // The shear over normal force of a frictionless patch is zero up to
+  // round-off (6e-10 and 1.3e-10 on two machines).
+  ComparisonSettings settings;
+  settings.looser_fields = {
+    {"computed", {1e-8, 1e-8}, "zero up to round-off"}};
+  check_against_references({"verify_patch", "verify patch", 0, settings});
 }
 
 // The tool shall write the stored numbers for the incline verification case.
@@ -256,9 +287,17 @@ TEST(ScenarioReference, VerifyTwoBlocks)
 // study.
 TEST(ScenarioReference, ConvergeThreeBlocks)
 {
+  // Q_1 hardly depends on the mesh: its "errors" are round-off of 1e-7 to
+  // 1e-6 N/m (the top of this file), different on every machine.
+  ComparisonSettings settings;
+  settings.looser_fields = {
+    {"errors", {1e-5, 1e-8}, "round-off differences of near-equal forces"},
+    {"Q_1_error_N_per_m", {1e-5, 1e-8}, "the same in convergence.csv"}};
   check_against_references(
     {"converge_three_blocks",
-     "converge tests/scenarios/three_blocks.prm --levels 2 --mode all"});
+     "converge tests/scenarios/three_blocks.prm --levels 2 --mode all",
+     0,
+     settings});
 }
 
 // Checked: sweep_fem_fig6_5.csv and the two case files cases/<id>.json of
