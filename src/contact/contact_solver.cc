@@ -133,6 +133,10 @@ namespace FloorBlock::Contact
                                         fe_space.dof_handler().n_dofs()))
       direct_solver =
         std::make_unique<Solver::ReusedFactorization>(settings.linear);
+    else if (!Solver::uses_direct_solver(settings.linear,
+                                         fe_space.dof_handler().n_dofs()))
+      amg_solver = std::make_unique<Solver::ReusedAmg>(
+        settings.linear, fe_space.constant_modes());
     const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
     // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
     // so that every rank of a sweep solves its own case independently.
@@ -362,7 +366,7 @@ namespace FloorBlock::Contact
 
   template <int dim>
   bool
-  ContactSolver<dim>::solve_linear(std::string &message)
+  ContactSolver<dim>::solve_linear(const double forcing, std::string &message)
   {
     ++n_linear_solves;
     if (exact_equations())
@@ -388,9 +392,13 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
     right_hand_side *= -1.;
     update = 0.;
+    // A distributed direct solve (Solver/Linear solver = direct on several
+    // processes) keeps nothing between iterations.
     const Solver::LinearSolveInfo info =
       direct_solver ?
         direct_solver->solve(matrix, right_hand_side, update) :
+      amg_solver ?
+        amg_solver->solve(matrix, right_hand_side, update, forcing) :
         Solver::solve_linear_system(settings.linear,
                                     matrix,
                                     right_hand_side,
@@ -445,9 +453,9 @@ namespace FloorBlock::Contact
               << iterate.counts.n_open << std::endl;
       return iterate;
     };
-    callbacks.solve_update = [&](std::string &message) {
+    callbacks.solve_update = [&](const double forcing, std::string &message) {
       dealii::TimerOutput::Scope scope(timer, "Contact: linear solve");
-      if (!solve_linear(message))
+      if (!solve_linear(forcing, message))
         return false;
       homogeneous_constraints.distribute(update);
       newton_base = current_solution;
@@ -726,6 +734,12 @@ namespace FloorBlock::Contact
       timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     result.n_linear_solves            = n_linear_solves;
     result.n_failed_newton_iterations = n_failed_newton_iterations;
+    if (amg_solver)
+      {
+        result.n_amg_setups            = amg_solver->statistics().n_setups;
+        result.n_amg_krylov_iterations =
+          amg_solver->statistics().n_krylov_iterations;
+      }
     if (direct_solver)
       {
         result.n_factorizations = direct_solver->statistics().n_factorizations;

@@ -12,6 +12,7 @@
 #include <fem/stored_elastic_system.h>
 #include <loading/load_path.h>
 #include <solver/reused_factorization.h>
+#include <solver/reused_amg.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -145,7 +146,7 @@ namespace FloorBlock::Contact
     void
     move_obstacles(const double uplift_factor);
     bool
-    solve_linear(std::string &message);
+    solve_linear(double forcing, std::string &message);
     void
     commit(const std::vector<JointResponse<dim>> &responses);
 
@@ -189,6 +190,8 @@ namespace FloorBlock::Contact
     std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
     /** Set when the linear systems are solved directly (see run()). */
     std::unique_ptr<Solver::ReusedFactorization> direct_solver;
+    /** Set instead when GMRES + ML solves (large or distributed systems). */
+    std::unique_ptr<Solver::ReusedAmg>           amg_solver;
     unsigned int                                 n_linear_solves = 0;
     unsigned int n_failed_newton_iterations = 0;
     dealii::TrilinosWrappers::MPI::Vector     current_solution;

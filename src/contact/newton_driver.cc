@@ -25,6 +25,9 @@ namespace FloorBlock::Contact
                                        first_residual,
                                        std::numeric_limits<double>::min()});
     std::map<std::uint64_t, unsigned int> revisits;
+    const double stop_residual = settings.relative_tolerance * reference;
+    double       previous_residual = 0.; // none before the first step
+    double       forcing           = settings.forcing.maximum;
     report.counts            = current.counts;
     report.relative_residual = current.residual_norm / reference;
 
@@ -33,12 +36,18 @@ namespace FloorBlock::Contact
       {
         report.n_iterations = iteration;
         std::string message;
-        if (!callbacks.solve_update(message))
+        forcing = forcing_term(settings.forcing,
+                               current.residual_norm,
+                               previous_residual,
+                               forcing,
+                               stop_residual);
+        if (!callbacks.solve_update(forcing, message))
           {
             report.failure_reason = "linear solver failed: " + message;
             return report;
           }
         const NewtonIterate previous = current;
+        previous_residual            = current.residual_norm;
         double              step     = 1.;
         bool                accepted = false;
         for (unsigned int search = 0;

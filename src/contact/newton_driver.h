@@ -1,6 +1,7 @@
 #pragma once
 
 #include <contact/active_set.h>
+#include <contact/forcing_term.h>
 
 #include <cstdint>
 #include <functional>
@@ -37,6 +38,8 @@ namespace FloorBlock::Contact
     double max_round_off_relief = 1e3;
     /** A set revisited this often (not consecutively) counts as cycling. */
     unsigned int cycling_limit = 3;
+    /** How tightly each update is solved by an iterative linear solver. */
+    ForcingSettings forcing;
   };
 
   /** @brief What the physics reports about the current iterate. */
@@ -57,8 +60,13 @@ namespace FloorBlock::Contact
   {
     /** Assemble matrix and residual at the current iterate. */
     std::function<NewtonIterate()> assemble;
-    /** Solve for the Newton update; false (with a message) on failure. */
-    std::function<bool(std::string &message)> solve_update;
+    /**
+     * Solve for the Newton update; false (with a message) on failure. The
+     * first argument is the forcing term (forcing_term()): the relative
+     * residual reduction an iterative solver needs; direct solvers ignore
+     * it, and no solver needs to go below its own tolerance.
+     */
+    std::function<bool(double forcing, std::string &message)> solve_update;
     /** Set iterate = iterate at the last solve + step * update. */
     std::function<void(double step)> set_step;
     /**

@@ -165,6 +165,10 @@ namespace FloorBlock::Contact
     unsigned int n_factorizations = 0;
     /** GMRES iterations on stored or fresh LU factors (direct solver only). */
     unsigned int n_krylov_iterations = 0;
+    /** ML AMG hierarchies built (iterative solver only). */
+    unsigned int n_amg_setups = 0;
+    /** GMRES iterations preconditioned by ML AMG (iterative solver only). */
+    unsigned int n_amg_krylov_iterations = 0;
     /** Direct solutions accepted above the residual tolerance (ill-conditioned matrix). */
     unsigned int n_solves_above_tolerance = 0;
     /** Newton iterations of failed attempts (cut back or retried), not in any increment. */

@@ -315,6 +315,8 @@ namespace FloorBlock::Output
             {"linear_solves", result.n_linear_solves},
             {"lu_factorizations", result.n_factorizations},
             {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
+            {"amg_setups", result.n_amg_setups},
+            {"krylov_iterations_with_amg", result.n_amg_krylov_iterations},
             {"linear_solves_above_tolerance", result.n_solves_above_tolerance},
             {"wall_time_s", result.wall_times},
             {"joints", joints},

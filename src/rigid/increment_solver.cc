@@ -218,7 +218,8 @@ namespace FloorBlock::RigidBlocks
       iterate.counts = Contact::count_states(all_states(outcome.responses));
       return iterate;
     };
-    callbacks.solve_update = [&](std::string &message) {
+    // A small dense system solved exactly: the forcing term does not apply.
+    callbacks.solve_update = [&](double /*forcing*/, std::string &message) {
       const std::vector<unsigned int> closed =
         closed_points_per_block(joint_set, outcome.responses);
       for (unsigned int index = 0; index < closed.size(); ++index)

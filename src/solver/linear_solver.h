@@ -72,6 +72,10 @@ namespace FloorBlock::Solver
    * @param[in] constant_modes Rigid translations per component (from
    *   DoFTools::extract_constant_modes), used by ML; may be empty.
    * @param[out] solution The solution; unchanged on failure.
+   * @param[in] forcing Relative residual the caller needs (an inexact
+   *   Newton forcing term, Contact::forcing_term()); the iterative solver
+   *   stops at the larger of it and LinearSolverSettings::
+   *   relative_tolerance, the direct solver ignores it.
    * @return Success flag, which solver ran and its iteration count. A
    *   failure never throws and never leaves NaN in @p solution.
    */
@@ -90,5 +94,6 @@ namespace FloorBlock::Solver
     const dealii::TrilinosWrappers::SparseMatrix &matrix,
     const dealii::TrilinosWrappers::MPI::Vector  &rhs,
     const std::vector<std::vector<bool>>         &constant_modes,
-    dealii::TrilinosWrappers::MPI::Vector        &solution);
+    dealii::TrilinosWrappers::MPI::Vector        &solution,
+    double                                        forcing = 0.);
 } // namespace FloorBlock::Solver

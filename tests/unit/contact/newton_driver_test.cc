@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -19,6 +20,13 @@ namespace
     double noise = 0.;           ///< residual level reached at best (N)
     double floor = 0.;           ///< reported round-off floor (N)
     double x = 0., base = 0., update = 0.;
+    /**
+     * Solve each update only as well as the forcing term asks: the update
+     * falls short by that fraction, so the linear residual is exactly
+     * forcing |r| (the worst an iterative solver may return).
+     */
+    bool                inexact = false;
+    std::vector<double> forcings; ///< as passed to solve_update
 
     NewtonCallbacks
     callbacks()
@@ -30,8 +38,9 @@ namespace
         return iterate; // one contact set throughout: signature 0
       };
       result.round_off_floor = [this]() { return floor; };
-      result.solve_update = [this](std::string &) {
-        update = -(slope * x - load) / slope;
+      result.solve_update = [this](const double forcing, std::string &) {
+        forcings.push_back(forcing);
+        update = -(slope * x - load) / slope * (inexact ? 1. - forcing : 1.);
         base   = x;
         return true;
       };
@@ -87,5 +96,23 @@ namespace
     problem.floor = 1e-5 * load;
     const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
     EXPECT_FALSE(report.converged);
+  }
+
+  // r0 = 8 N, stop at 1e-10 * 8 N. Solve 1: eta = maximum 1e-2, r1 = 0.08.
+  // Solve 2: eta = 0.9 (r1 / r0)^2 = 9e-5, r2 = 7.2e-6. Solve 3: the
+  // squared ratio would ask for 7.3e-9, but half the stop residual,
+  // 4e-10 / 7.2e-6 = 5.6e-5, is enough: r3 = 4e-10, converged.
+  TEST(NewtonDriver, InexactSolvesFollowTheForcingTermToTheStop)
+  {
+    NoisyScalarProblem problem;
+    problem.inexact = true;
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.n_iterations, 3u);
+    ASSERT_EQ(problem.forcings.size(), 3u);
+    EXPECT_DOUBLE_EQ(problem.forcings[0], ForcingSettings().maximum);
+    EXPECT_NEAR(problem.forcings[1], 9e-5, 1e-12);
+    EXPECT_NEAR(problem.forcings[2], 0.5 * 1e-10 * load / 7.2e-6, 1e-10);
+    EXPECT_LE(report.relative_residual, 1e-10);
   }
 } // namespace
