@@ -16,6 +16,7 @@ namespace
   using namespace FloorBlock;
   using dealii::TrilinosWrappers::MPI::Vector;
   using dealii::TrilinosWrappers::SparseMatrix;
+  using FloorBlockTest::relative_residual;
 
   constexpr unsigned int n = 400;
 
@@ -41,34 +42,13 @@ namespace
     matrix.compress(dealii::VectorOperation::insert);
   }
 
-  double
-  relative_residual(const SparseMatrix &matrix, const Vector &x, const Vector &b)
-  {
-    Vector r(b);
-    matrix.vmult(r, x);
-    r -= b;
-    return r.l2_norm() / b.l2_norm();
-  }
-
   class ReusedAmgTest : public ::testing::Test
   {
   protected:
-    void
-    SetUp() override
-    {
-      const dealii::IndexSet all = dealii::complete_index_set(n);
-      FloorBlockTest::make_tridiagonal_pattern(n, pattern);
-      matrix.reinit(pattern);
-      rhs.reinit(all, MPI_COMM_SELF);
-      x.reinit(all, MPI_COMM_SELF);
-      for (unsigned int i = 0; i < n; ++i)
-        rhs(i) = 1. + 0.01 * i;
-      rhs.compress(dealii::VectorOperation::insert);
-    }
-
-    dealii::TrilinosWrappers::SparsityPattern pattern;
-    SparseMatrix                              matrix;
-    Vector                                    rhs, x;
+    FloorBlockTest::TridiagonalSystem system{n};
+    SparseMatrix                     &matrix = system.matrix;
+    Vector                           &rhs    = system.rhs;
+    Vector                           &x      = system.x;
     Solver::LinearSolverSettings              settings;
     /** One component: the constant is the near-null space. */
     const std::vector<std::vector<bool>> modes{std::vector<bool>(n, true)};
