@@ -32,6 +32,8 @@ namespace FloorBlock::Solver
     data.higher_order_elements = false;
     data.smoother_sweeps       = ml_smoother_sweeps;
     data.constant_modes        = modes;
+    // A setup that throws leaves no hierarchy to keep.
+    has_hierarchy = false;
     preconditioner.initialize(matrix, data);
     has_hierarchy = true;
     ++counters.n_setups;
