@@ -24,6 +24,47 @@ namespace
                                            "verify",   "converge", "sweep",
                                            "corner"};
 
+  /**
+   * Of those, the ones that use several processes under mpirun: `solve`
+   * spreads one 3D mesh over them, `sweep` its cases. The others would
+   * run whole on every process and write the same files side by side.
+   */
+  const std::set<std::string> uses_several_processes = {"solve", "sweep"};
+
+  /** Refuses @p command on several processes when it uses only one. */
+  void
+  check_process_count(const std::string &command)
+  {
+    const unsigned int n_processes =
+      dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (n_processes > 1 && uses_several_processes.count(command) == 0)
+      throw InputError("number of processes (mpirun -np)",
+                       std::to_string(n_processes),
+                       "1 for `floorblock " + command +
+                         "`; several processes serve `solve` of a 3D scene "
+                         "and `sweep`");
+  }
+
+  /**
+   * Under mpirun a process that fails cannot tell whether the others wait
+   * for it in a collective call (rank 0 alone meshes, writes the folder,
+   * ...): after saying why, it ends them all with its exit code instead of
+   * leaving them blocked. One process just returns the code.
+   */
+  int
+  end_all_processes_if_several(const int code)
+  {
+    int initialised = 0;
+    MPI_Initialized(&initialised);
+    if (initialised &&
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      {
+        std::cerr.flush();
+        MPI_Abort(MPI_COMM_WORLD, code);
+      }
+    return code;
+  }
+
   /** Adds one subcommand with the options every subcommand shares. */
   CLI::App *
   add_subcommand(CLI::App &               cli,
@@ -54,19 +95,19 @@ namespace
     catch (const InputError &error)
       {
         std::cerr << "floorblock: error: " << error.what() << std::endl;
-        return exit_code::bad_input;
+        return end_all_processes_if_several(exit_code::bad_input);
       }
     catch (const Interrupted &)
       {
         std::cerr << "floorblock: interrupted; finished results were kept, "
                      "the unfinished one was discarded"
                   << std::endl;
-        return exit_code::interrupted;
+        return end_all_processes_if_several(exit_code::interrupted);
       }
     catch (const std::exception &error)
       {
         std::cerr << "floorblock: failed: " << error.what() << std::endl;
-        return exit_code::failure;
+        return end_all_processes_if_several(exit_code::failure);
       }
   }
 
@@ -190,6 +231,13 @@ namespace
               // Again after MPI start-up, in case the MPI library installed
               // handlers of its own.
               install_interrupt_handlers();
+              const std::string name = sub->get_name();
+              return run_guarded(
+                [&](const App::CommandOptions &parsed) {
+                  check_process_count(name);
+                  return command(parsed);
+                },
+                options);
             }
           return run_guarded(command, options);
         }

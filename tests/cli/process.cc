@@ -111,14 +111,19 @@ namespace FloorBlockTest
 #ifdef FLOORBLOCK_MPIEXEC
   ProcessResult
   run_floorblock_on_processes(const unsigned int n_processes,
-                              const std::string &arguments)
+                              const std::string &arguments,
+                              const unsigned int time_limit_seconds)
   {
     // CI runs as root, which Open MPI refuses unless told; a machine with
     // fewer cores than processes needs oversubscription.
+    const std::string time_limit =
+      time_limit_seconds > 0 ?
+        "timeout " + std::to_string(time_limit_seconds) + " " :
+        std::string();
     return run_shell(
       std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
       " && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
-      FLOORBLOCK_MPIEXEC + " " + FLOORBLOCK_MPIEXEC_NUMPROC_FLAG + " " +
+      time_limit + FLOORBLOCK_MPIEXEC + " " + FLOORBLOCK_MPIEXEC_NUMPROC_FLAG + " " +
       std::to_string(n_processes) + " --oversubscribe " +
       FLOORBLOCK_EXECUTABLE + " " + arguments + " 2>&1");
   }

@@ -25,11 +25,14 @@ namespace FloorBlockTest
   /**
    * @brief run_floorblock() under the MPI launcher on @p n_processes
    * processes (`mpiexec -n N`, as CMake's FindMPI names it; allowed to run
-   * as root and on more processes than cores).
+   * as root and on more processes than cores). With @p time_limit_seconds
+   * the launcher is ended after that long (coreutils `timeout`: exit code
+   * 124), so that a test of a hang fails instead of hanging.
    */
   ProcessResult
   run_floorblock_on_processes(const unsigned int n_processes,
-                              const std::string &arguments);
+                              const std::string &arguments,
+                              unsigned int       time_limit_seconds = 0);
 
   /**
    * @brief Starts build/floorblock with @p arguments in the background

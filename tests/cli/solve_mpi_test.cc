@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 using namespace FloorBlockTest;
@@ -168,4 +169,42 @@ TEST(SolveMpi, TwoProcessesRefuseTwoDimensionalScenesAndTheExactLaw)
   EXPECT_NE(exact.output.find("Joints/Law"), std::string::npos)
     << exact.output;
   EXPECT_FALSE(std::filesystem::exists(folder_exact));
+}
+
+// The commands that run on one process refuse several before they write
+// anything: under mpirun each process would otherwise run the whole
+// command and write the same files side by side.
+TEST(SolveMpi, OneProcessCommandsRefuseSeveral)
+{
+  for (const std::string command :
+       {"verify hertz", "run params/default.prm", "mesh params/default.prm"})
+    {
+      const std::string folder = fresh_output_folder("one_process_only");
+      const auto        two    = run_floorblock_on_processes(
+        2, command + " --output " + shell_quoted(folder), 120);
+      EXPECT_EQ(two.exit_code, 2) << command << ": " << two.output;
+      EXPECT_NE(two.output.find("mpirun -np"), std::string::npos)
+        << two.output;
+      EXPECT_FALSE(std::filesystem::exists(folder)) << command;
+    }
+}
+
+// A failure on the first process alone (here: its output folder cannot be
+// made; the same path holds for a mesher failure, as the first process
+// alone meshes) ends every process with its exit code. Before, the second
+// process waited for the mesh for ever (`timeout` ended it: exit 124).
+TEST(SolveMpi, AFailureOnTheFirstProcessEndsAll)
+{
+  const std::string blocker = fresh_output_folder("not_a_folder");
+  {
+    std::ofstream file(blocker);
+    file << "a file where the output folder's parent should be\n";
+  }
+  const auto two = run_floorblock_on_processes(
+    2, coarse_plane_strain + " --output " + shell_quoted(blocker + "/out"),
+    120);
+  EXPECT_EQ(two.exit_code, 1) << two.output;
+  EXPECT_NE(two.output.find("floorblock: failed:"), std::string::npos)
+    << two.output;
+  std::filesystem::remove(blocker);
 }
