@@ -45,6 +45,8 @@ namespace FloorBlock::Contact
     double shear_force        = 0.; ///< N/m, in-plane shear per metre
     double closed_length      = 0.; ///< m, the line's contact length
     double peak_normal_stress = 0.; ///< Pa, the line's largest nodal traction
+    /** The line's node pairs in order along the joint (the area's outline). */
+    std::vector<JointNodeSample> profile;
   };
 
   /**

@@ -97,6 +97,7 @@ namespace FloorBlock::Contact
       section.shear_force        = part.shear_force;
       section.closed_length      = part.closed_length;
       section.peak_normal_stress = part.peak_normal_stress;
+      section.profile            = part.profile;
       return section;
     }
   } // namespace

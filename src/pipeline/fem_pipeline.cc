@@ -7,6 +7,7 @@
 #include <common/units.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
+#include <output/contact_area_picture.h>
 #include <common/input_error.h>
 #include <geometry/extruded_assembly.h>
 #include <geometry/refinement_manifolds.h>
@@ -161,6 +162,30 @@ namespace FloorBlock::Pipeline
         }
       return load;
     }
+
+    /**
+     * A 3D solve's face joint: face_contact_area.csv and .png, the contact
+     * area over the joint surface (Output::contact_area_csv()).
+     */
+    void
+    write_face_contact_area(const FemOutcome                     &outcome,
+                            const Parameters::ScenarioParameters &scene,
+                            const Output::ResultFolder           &folder)
+    {
+      if (!folder.writes_files() || outcome.result.increments.empty())
+        return;
+      const std::string face =
+        "vertical " + std::to_string(scene.geometry.n_blocks);
+      for (const Contact::JointReport &joint :
+           outcome.result.increments.back().joints)
+        if (joint.name == face)
+          {
+            folder.write("face_contact_area.csv",
+                         Output::contact_area_csv(joint));
+            Output::write_contact_area_picture(
+              joint, folder.path_of("face_contact_area.png"));
+          }
+    }
   } // namespace
 
   FemOutcome
@@ -302,6 +327,7 @@ namespace FloorBlock::Pipeline
     return mesh;
   }
 
+
   FemOutcome
   solve_swept_scene(const Parameters::ScenarioParameters &scene,
                     const Output::ResultFolder           &folder,
@@ -317,10 +343,12 @@ namespace FloorBlock::Pipeline
                                     problem);
     const auto solve = [&](const dealii::Triangulation<3>  &solid,
                            const Geometry::MeshStatistics &mesh) {
-      return solve_on_mesh<3>(scene, solid, problem, mesh, folder, write_vtu,
-                              [](const Contact::ContactSolver<3> &) {},
-                              swept_support_load(scene, footprint, solid,
-                                                 problem.model));
+      const FemOutcome outcome = solve_on_mesh<3>(
+        scene, solid, problem, mesh, folder, write_vtu,
+        [](const Contact::ContactSolver<3> &) {},
+        swept_support_load(scene, footprint, solid, problem.model));
+      write_face_contact_area(outcome, scene, folder);
+      return outcome;
     };
     if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
       {

@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 using namespace FloorBlockTest;
 
@@ -139,6 +141,57 @@ TEST(Solve3d, FreeEndFacesAreNotPlaneStrain)
                      face_2d.at("contact_length_m").get<double>()),
             100. * plane_strain_tolerance *
               face_2d.at("contact_length_m").get<double>());
+}
+
+// Issue 16: the face joint's contact area as a picture and its table. The
+// table (face_contact_area.csv) holds every node pair of every
+// cross-section with the patch of joint surface it stands for; per
+// cross-section, the closed patches add up to the section's contact length
+// in fem.json up to the zone ends, which fem.json interpolates between
+// nodes: by at most the patches of the closed pairs next to open ones.
+// Free end faces, so that the sections differ.
+TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
+{
+  const std::string folder = fresh_output_folder("solve_contact_area_3d");
+  const auto        solved = run_floorblock(
+    "solve params/plane_strain_3d.prm --set 'Geometry/End faces=free'" +
+    coarse_mesh + " --output " + shell_quoted(folder));
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  EXPECT_GT(std::filesystem::file_size(folder + "/face_contact_area.png"),
+            10000u);
+  const CsvTable table = read_csv(folder + "/face_contact_area.csv");
+  ASSERT_FALSE(table.rows.empty());
+  const auto face = read_json(folder + "/fem.json").at("joints")[5];
+  ASSERT_EQ(face.at("name"), "vertical 6");
+  for (const auto &section : face.at("along_face"))
+    {
+      const double z = section.at("z_m").get<double>();
+      std::vector<const CsvRow *> rows;
+      for (const CsvRow &row : table.rows)
+        if (std::abs(number_in(row, "z_m") - z) < 1e-9)
+          rows.push_back(&row);
+      ASSERT_GT(rows.size(), 2u) << "z = " << z;
+      double closed = 0.;
+      double at_ends = 0.;
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+          const bool is_closed = rows[k]->at("state") != "open";
+          const double patch = number_in(*rows[k], "arc_to_m") -
+                               number_in(*rows[k], "arc_from_m");
+          EXPECT_GE(patch, 0.);
+          if (!is_closed)
+            continue;
+          closed += patch;
+          const bool next_to_open =
+            (k > 0 && rows[k - 1]->at("state") == "open") ||
+            (k + 1 < rows.size() && rows[k + 1]->at("state") == "open");
+          if (next_to_open)
+            at_ends += patch;
+        }
+      const double length = section.at("contact_length_m").get<double>();
+      EXPECT_GT(length, 0.05) << "z = " << z;
+      EXPECT_LE(std::abs(closed - length), at_ends + 1e-12) << "z = " << z;
+    }
 }
 
 // Issue 16: the exact (rigid) law in 3D, its multipliers and the Coulomb
