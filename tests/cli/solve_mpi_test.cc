@@ -62,6 +62,7 @@ namespace
   /** A solve's folder and fem.json on one process and on two. */
   struct OneAndTwo
   {
+    std::string    folder_1;
     std::string    folder_2;
     nlohmann::json fem_1;
     nlohmann::json fem_2;
@@ -79,7 +80,8 @@ namespace
     const auto        two = run_floorblock_on_processes(
       2, command + " --output " + shell_quoted(folder_2));
     EXPECT_EQ(two.exit_code, 0) << two.output;
-    return {folder_2,
+    return {folder_1,
+            folder_2,
             read_json(folder_1 + "/fem.json"),
             read_json(folder_2 + "/fem.json")};
   }
@@ -106,7 +108,7 @@ namespace
 // DoFs and increments, and ParaView pieces per process with a .pvtu each.
 TEST(SolveMpi, TwoProcessesGiveTheOneProcessAnswer)
 {
-  const auto [folder_2, fem_1, fem_2] =
+  const auto [folder_1, folder_2, fem_1, fem_2] =
     solve_on_one_and_two(coarse_plane_strain, "solve_mpi");
   ASSERT_EQ(fem_2.at("status"), "converged");
   EXPECT_EQ(fem_2.at("n_dofs"), fem_1.at("n_dofs"));
@@ -125,6 +127,20 @@ TEST(SolveMpi, TwoProcessesGiveTheOneProcessAnswer)
   EXPECT_GT(n_records, 0u);
   EXPECT_EQ(count_files_ending(vtu, ".vtu"), 2 * n_records);
   EXPECT_EQ(count_files_ending(vtu, ".pvd"), 1u);
+  // The face joint's contact-area table, written once from the gathered
+  // joint tables: the same pairs, patches and tractions as on one process.
+  const CsvTable area_1 = read_csv(folder_1 + "/face_contact_area.csv");
+  const CsvTable area_2 = read_csv(folder_2 + "/face_contact_area.csv");
+  ASSERT_FALSE(area_1.rows.empty());
+  ASSERT_EQ(area_2.rows.size(), area_1.rows.size());
+  for (std::size_t k = 0; k < area_1.rows.size(); ++k)
+    for (const std::string column :
+         {"z_m", "arc_from_m", "arc_to_m", "normal_traction_Pa"})
+      EXPECT_NEAR(number_in(area_2.rows[k], column),
+                  number_in(area_1.rows[k], column),
+                  process_tolerance *
+                    std::max(1., std::abs(number_in(area_1.rows[k], column))))
+        << "row " << k << " " << column;
 }
 
 // The support on its footprint (params/footprint_3d.prm shrunk: a 0.5 m
@@ -138,7 +154,7 @@ TEST(SolveMpi, FootprintOnTwoProcessesGivesTheOneProcessAnswer)
     " --set 'Mesh/Cells per contact length=2' --set 'Mesh/Corner size=0.1'"
     " --set 'Mesh/Far size=0.5' --set 'Geometry/Face length=1.5'"
     " --set 'Loading/Footprint length=0.5'";
-  const auto [folder_2, fem_1, fem_2] =
+  const auto [folder_1, folder_2, fem_1, fem_2] =
     solve_on_one_and_two(footprint, "footprint_mpi");
   ASSERT_EQ(fem_2.at("status"), "converged");
   expect_same_numbers(fem_1.at("joints"), fem_2.at("joints"), "joints");
