@@ -1,4 +1,5 @@
 #include <app/command_options.h>
+#include <compare/joint_name.h>
 #include <output/analytic_report.h>
 #include <output/comparison_report.h>
 #include <output/fem_summary.h>
@@ -35,7 +36,7 @@ namespace FloorBlock::App
         Output::render_png(Output::lift_history_plot(comparison.lift_history),
                            folder.path_of("face_joint_vs_lift.png"), 1400, 550);
       for (const auto &joint : last.joints)
-        if (joint.name == "vertical " + std::to_string(final_joints.size()))
+        if (joint.name == Compare::face_joint_name(final_joints.size()))
           Output::render_png(Output::traction_profile_plot(joint),
                              folder.path_of("face_joint_traction.png"), 700,
                              700);

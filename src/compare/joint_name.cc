@@ -4,6 +4,12 @@
 
 namespace FloorBlock::Compare
 {
+  std::string
+  face_joint_name(const unsigned int n_blocks)
+  {
+    return "vertical " + std::to_string(n_blocks);
+  }
+
   JointName
   parse_joint_name(const std::string &name)
   {

@@ -15,6 +15,13 @@ namespace FloorBlock::Compare
     unsigned int number = 0; ///< j or i; 0 if the name has no number
   };
 
+  /**
+   * @brief The face joint's name, "vertical n": between block n, next to
+   * the face, and the face block.
+   */
+  std::string
+  face_joint_name(unsigned int n_blocks);
+
   /** @brief Splits "vertical 3" into its kind and number. */
   JointName
   parse_joint_name(const std::string &name);

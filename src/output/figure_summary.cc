@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <compare/joint_name.h>
 #include <output/figure_summary.h>
 
 #include <fmt/format.h>
@@ -60,7 +61,7 @@ namespace FloorBlock::Output
                  const std::optional<FemErrorEstimate> &error_estimate,
                  const unsigned int                     n_blocks)
     {
-      const std::string face = "vertical " + std::to_string(n_blocks);
+      const std::string face = Compare::face_joint_name(n_blocks);
       const Contact::JointReport *joint = nullptr;
       if (!solve.increments.empty())
         for (const auto &candidate : solve.increments.back().joints)

@@ -1,4 +1,5 @@
 #include <pipeline/accuracy_loop.h>
+#include <compare/joint_name.h>
 #include <pipeline/adaptive_levels.h>
 #include <pipeline/error_estimate.h>
 #include <convergence/ladder_budget.h>
@@ -47,12 +48,6 @@ namespace FloorBlock::Pipeline
       throw std::logic_error("unknown target figure");
     }
 
-    std::string
-    face_joint(const Parameters::ScenarioParameters &scene)
-    {
-      return "vertical " + std::to_string(scene.geometry.n_blocks);
-    }
-
     Output::RefinementLevelRecord
     level_record(const unsigned int                    level,
                  const FemOutcome                     &outcome,
@@ -67,7 +62,7 @@ namespace FloorBlock::Pipeline
       record.status    = outcome.report.status;
       if (outcome.converged && !outcome.result.increments.empty())
         for (const auto &joint : outcome.result.increments.back().joints)
-          if (joint.name == face_joint(scene))
+          if (joint.name == Compare::face_joint_name(scene.geometry.n_blocks))
             record.face_figures = {
               {"normal_force_N_per_m", joint.normal_force},
               {"contact_length_m", joint.closed_length},
@@ -173,6 +168,8 @@ namespace FloorBlock::Pipeline
       }
 
     dealii::Timer          timer;
+    const std::string face =
+      Compare::face_joint_name(scene.geometry.n_blocks);
     Output::AccuracyTarget target;
     target.relative_error = scene.mesh.target_relative_error;
     for (const TargetFigure figure : scene.mesh.target_figures)
@@ -204,7 +201,7 @@ namespace FloorBlock::Pipeline
         if (level > 0)
           record.difference_indicator = worst_target_error(
             refined_solve_error(outcomes[level - 1], outcomes[level]),
-            face_joint(scene), scene.mesh.target_figures);
+            face, scene.mesh.target_figures);
         const bool check =
           level == 0 || (record.difference_indicator &&
                          *record.difference_indicator <= target.relative_error);
@@ -230,7 +227,7 @@ namespace FloorBlock::Pipeline
             const Output::FemErrorEstimate level_estimate =
               refined_solve_error(outcomes[level], halved);
             record.worst_target_error = worst_target_error(
-              level_estimate, face_joint(scene), scene.mesh.target_figures);
+              level_estimate, face, scene.mesh.target_figures);
             std::cout << fmt::format(
                            "accuracy: level {} ({} DoFs) checked on its "
                            "halved mesh ({} DoFs): target figures within {} "

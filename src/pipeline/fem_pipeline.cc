@@ -5,6 +5,7 @@
 #include <pipeline/rigid_pipeline.h>
 #include <common/atomic_file.h>
 #include <common/units.h>
+#include <compare/joint_name.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
 #include <output/contact_area_picture.h>
@@ -175,7 +176,7 @@ namespace FloorBlock::Pipeline
       if (!folder.writes_files() || outcome.result.increments.empty())
         return;
       const std::string face =
-        "vertical " + std::to_string(scene.geometry.n_blocks);
+        Compare::face_joint_name(scene.geometry.n_blocks);
       for (const Contact::JointReport &joint :
            outcome.result.increments.back().joints)
         if (joint.name == face)

@@ -110,6 +110,16 @@ namespace
     EXPECT_EQ(face.number, 0u);
   }
 
+  // The solver names the joint between block n and the face block
+  // "vertical n" (Scene::make_floor_contact_problem).
+  TEST(JointName, FaceJointIsTheVerticalJointAfterTheLastBlock)
+  {
+    EXPECT_EQ(Compare::face_joint_name(6), "vertical 6");
+    const auto face = Compare::parse_joint_name(Compare::face_joint_name(3));
+    EXPECT_EQ(face.kind, "vertical");
+    EXPECT_EQ(face.number, 3u);
+  }
+
   TEST(DifferenceStatus, WordsOfEveryStatus)
   {
     EXPECT_EQ(Compare::to_string(DifferenceStatus::defined), "ok");
