@@ -1,4 +1,5 @@
 #include <app/command_options.h>
+#include <common/blas_threads.h>
 #include <common/input_error.h>
 #include <common/interrupt.h>
 #include <common/singleton_mpi_environment.h>
@@ -228,6 +229,7 @@ namespace
             {
               mpi_environment.emplace();
               mpi.emplace(argc, argv, 1);
+              limit_blas_to_one_thread();
               // Again after MPI start-up, in case the MPI library installed
               // handlers of its own.
               install_interrupt_handlers();
