@@ -7,7 +7,7 @@ namespace FloorBlock
    * (OPENBLAS_NUM_THREADS, GOTO_NUM_THREADS or OMP_NUM_THREADS set) or
    * the BLAS in the process is not OpenBLAS. Returns whether it set it.
    *
-   * Why: the BLAS calls here come from UMFPACK's and KLU's dense fronts
+   * Why: the BLAS calls here come from UMFPACK's dense frontal matrices
    * on 2D meshes, which are small, and OpenBLAS's pthread build starts a
    * thread per core that spins between calls. Measured on this 2-core
    * machine (Release):
