@@ -12,7 +12,7 @@ namespace FloorBlock::Contact
                const double           previous_forcing,
                const double           stop_residual)
   {
-    double eta = settings.maximum;
+    double eta = settings.first;
     if (previous_residual > 0. && residual > 0.)
       {
         eta = settings.gamma *

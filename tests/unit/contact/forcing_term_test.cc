@@ -10,11 +10,15 @@ namespace
 
   constexpr double no_stop = 0.;   // a stop residual that never binds
 
-  TEST(ForcingTerm, FirstIterationAsksForTheMaximum)
+  TEST(ForcingTerm, FirstSolveOfALoadStateAsksForTheTightTerm)
   {
     const ForcingSettings settings;
     EXPECT_DOUBLE_EQ(forcing_term(settings, 1., 0., 0., no_stop),
-                     settings.maximum);
+                     settings.first);
+    EXPECT_LT(settings.first, settings.maximum);
+    // Still never tighter than the Newton stop needs: half of a stop
+    // residual 1e-6 is 5e-7 of |R| = 1.
+    EXPECT_NEAR(forcing_term(settings, 1., 0., 0., 1e-6), 5e-7, 1e-20);
   }
 
   TEST(ForcingTerm, FastConvergenceTightensAsTheSquaredRatio)

@@ -98,21 +98,43 @@ namespace
     EXPECT_FALSE(report.converged);
   }
 
-  // r0 = 8 N, stop at 1e-10 * 8 N. Solve 1: eta = maximum 1e-2, r1 = 0.08.
-  // Solve 2: eta = 0.9 (r1 / r0)^2 = 9e-5, r2 = 7.2e-6. Solve 3: the
-  // squared ratio would ask for 7.3e-9, but half the stop residual,
-  // 4e-10 / 7.2e-6 = 5.6e-5, is enough: r3 = 4e-10, converged.
+  // The Eisenstat-Walker sequence, with the first solve as loose as the
+  // maximum. r0 = 8 N, stop at 1e-10 * 8 N. Solve 1: eta = maximum 1e-2,
+  // r1 = 0.08. Solve 2: eta = 0.9 (r1 / r0)^2 = 9e-5, r2 = 7.2e-6.
+  // Solve 3: the squared ratio would ask for 7.3e-9, but half the stop
+  // residual, 4e-10 / 7.2e-6 = 5.6e-5, is enough: r3 = 4e-10, converged.
   TEST(NewtonDriver, InexactSolvesFollowTheForcingTermToTheStop)
   {
     NoisyScalarProblem problem;
-    problem.inexact = true;
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    problem.inexact              = true;
+    NewtonSettings loose_first   = settings();
+    loose_first.forcing.first    = loose_first.forcing.maximum;
+    const NewtonReport report =
+      solve_newton(loose_first, load, problem.callbacks());
     EXPECT_TRUE(report.converged);
     EXPECT_EQ(report.n_iterations, 3u);
     ASSERT_EQ(problem.forcings.size(), 3u);
     EXPECT_DOUBLE_EQ(problem.forcings[0], ForcingSettings().maximum);
     EXPECT_NEAR(problem.forcings[1], 9e-5, 1e-12);
     EXPECT_NEAR(problem.forcings[2], 0.5 * 1e-10 * load / 7.2e-6, 1e-10);
+    EXPECT_LE(report.relative_residual, 1e-10);
+  }
+
+  // With the default tight first solve (1e-8): r1 = 8e-8 N; solve 2 needs
+  // only half the stop residual, 4e-10 / 8e-8 = 5e-3, and stops.
+  TEST(NewtonDriver, FirstSolveOfALoadStateIsTight)
+  {
+    NoisyScalarProblem problem;
+    problem.inexact           = true;
+    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.n_iterations, 2u);
+    ASSERT_EQ(problem.forcings.size(), 2u);
+    EXPECT_DOUBLE_EQ(problem.forcings[0], ForcingSettings().first);
+    // r1 = |4 x - 8| after x = 2 (1 - 1e-8): cancellation leaves it
+    // accurate to about 1e-8 relative.
+    EXPECT_NEAR(problem.forcings[1], 0.5 * 1e-10 * load / 8e-8,
+                1e-8 * 5e-3);
     EXPECT_LE(report.relative_residual, 1e-10);
   }
 } // namespace
