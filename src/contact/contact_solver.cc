@@ -9,6 +9,7 @@
 #include <contact/uplift.h>
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
+#include <fem/rigid_body_modes.h>
 #include <fem/sparsity.h>
 #include <solver/linear_solver.h>
 
@@ -136,7 +137,7 @@ namespace FloorBlock::Contact
     else if (!Solver::uses_direct_solver(settings.linear,
                                          fe_space.dof_handler().n_dofs()))
       amg_solver = std::make_unique<Solver::ReusedAmg>(
-        settings.linear, fe_space.constant_modes());
+        settings.linear, Fem::rigid_body_modes(fe_space));
     const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
     // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
     // so that every rank of a sweep solves its own case independently.
@@ -393,7 +394,8 @@ namespace FloorBlock::Contact
     right_hand_side *= -1.;
     update = 0.;
     // A distributed direct solve (Solver/Linear solver = direct on several
-    // processes) keeps nothing between iterations.
+    // processes) keeps nothing between iterations and needs no near-null
+    // space.
     const Solver::LinearSolveInfo info =
       direct_solver ?
         direct_solver->solve(matrix, right_hand_side, update) :
@@ -402,7 +404,7 @@ namespace FloorBlock::Contact
         Solver::solve_linear_system(settings.linear,
                                     matrix,
                                     right_hand_side,
-                                    fe_space.constant_modes(),
+                                    Solver::NearNullSpace(),
                                     update);
     message = info.message;
     return info.success;

@@ -25,9 +25,6 @@ namespace FloorBlock::Fem
     hanging.reinit(relevant);
     dealii::DoFTools::make_hanging_node_constraints(dofs, hanging);
     hanging.close();
-    dealii::DoFTools::extract_constant_modes(dofs,
-                                             dealii::ComponentMask(),
-                                             modes);
     // Over the locally owned cells and then all processes: a distributed
     // mesh's artificial cells are not this process's to measure.
     min_diameter = std::numeric_limits<double>::infinity();
@@ -92,13 +89,6 @@ namespace FloorBlock::Fem
   FeSpace<dim>::hanging_node_constraints() const
   {
     return hanging;
-  }
-
-  template <int dim>
-  const std::vector<std::vector<bool>> &
-  FeSpace<dim>::constant_modes() const
-  {
-    return modes;
   }
 
   template <int dim>

@@ -51,9 +51,6 @@ namespace FloorBlock::Fem
     /** @brief Hanging-node constraints only (closed). */
     const dealii::AffineConstraints<double> &
     hanging_node_constraints() const;
-    /** @brief Rigid translations per component, for ML AMG. */
-    const std::vector<std::vector<bool>> &
-    constant_modes() const;
     unsigned int
     degree() const;
     /** @brief Smallest cell diameter (m). */
@@ -70,7 +67,6 @@ namespace FloorBlock::Fem
     dealii::IndexSet                  owned;
     dealii::IndexSet                  relevant;
     dealii::AffineConstraints<double> hanging;
-    std::vector<std::vector<bool>>    modes;
     double                            min_diameter;
   };
 } // namespace FloorBlock::Fem

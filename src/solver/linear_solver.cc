@@ -73,13 +73,13 @@ namespace FloorBlock::Solver
   solve_linear_system(const LinearSolverSettings           &settings,
                       const SparseMatrix                   &matrix,
                       const Vector                         &rhs,
-                      const std::vector<std::vector<bool>> &constant_modes,
+                      const NearNullSpace                  &null_space,
                       Vector                               &solution,
                       const double                          forcing)
   {
     return uses_direct_solver(settings, matrix.m()) ?
              solve_direct(settings, matrix, rhs, solution) :
-             ReusedAmg(settings, constant_modes)
+             ReusedAmg(settings, null_space)
                .solve(matrix, rhs, solution, forcing);
   }
 } // namespace FloorBlock::Solver

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <solver/near_null_space.h>
 #include <solver/solver_kinds.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -69,8 +70,8 @@ namespace FloorBlock::Solver
    * @param[in] matrix The system matrix; constrained rows must carry a
    *   non-zero diagonal.
    * @param[in] rhs Right-hand side.
-   * @param[in] constant_modes Rigid translations per component (from
-   *   DoFTools::extract_constant_modes), used by ML; may be empty.
+   * @param[in] null_space Near-null space for ML (Fem::rigid_body_modes);
+   *   the direct solver ignores it.
    * @param[out] solution The solution; unchanged on failure.
    * @param[in] forcing Relative residual the caller needs (an inexact
    *   Newton forcing term, Contact::forcing_term()); the iterative solver
@@ -93,7 +94,7 @@ namespace FloorBlock::Solver
     const LinearSolverSettings                  &settings,
     const dealii::TrilinosWrappers::SparseMatrix &matrix,
     const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-    const std::vector<std::vector<bool>>         &constant_modes,
+    const NearNullSpace                          &null_space,
     dealii::TrilinosWrappers::MPI::Vector        &solution,
     double                                        forcing = 0.);
 } // namespace FloorBlock::Solver

@@ -1,11 +1,15 @@
 #pragma once
 
 #include <solver/linear_solver.h>
+#include <solver/near_null_space.h>
 
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_MultiVector.h>
+
+#include <memory>
 #include <vector>
 
 namespace FloorBlock::Solver
@@ -42,11 +46,11 @@ namespace FloorBlock::Solver
   public:
     /**
      * @param[in] settings GMRES tolerance and iteration cap.
-     * @param[in] constant_modes Near-null space for ML (rigid
-     *   translations per component, DoFTools::extract_constant_modes).
+     * @param[in] null_space Near-null space for ML over the locally owned
+     *   rows of every matrix this solver sees (Fem::rigid_body_modes).
      */
-    ReusedAmg(const LinearSolverSettings           &settings,
-              const std::vector<std::vector<bool>> &constant_modes);
+    ReusedAmg(const LinearSolverSettings &settings,
+              const NearNullSpace        &null_space);
 
     /**
      * @brief Solves matrix x = rhs to the relative residual
@@ -87,7 +91,9 @@ namespace FloorBlock::Solver
           LinearSolveInfo                              &info);
 
     const LinearSolverSettings                settings;
-    const std::vector<std::vector<bool>>      modes;
+    const NearNullSpace                       null_space;
+    /** The modes as ML reads them (column-major), built with the first hierarchy. */
+    std::unique_ptr<Epetra_MultiVector>       ml_null_space;
     dealii::TrilinosWrappers::PreconditionAMG preconditioner;
     bool                                      has_hierarchy = false;
     /** GMRES iterations per decade of reduction on the last fresh hierarchy. */

@@ -3,6 +3,7 @@
 #include <contact/contact_assembly.h>
 #include <contact/joint_pairing.h>
 #include <fem/dirichlet_constraints.h>
+#include <fem/rigid_body_modes.h>
 #include <fem/sparsity.h>
 #include <geometry/triangulation_reader.h>
 #include <scene/assembly_inputs.h>
@@ -62,6 +63,7 @@ namespace FloorBlock::Benchmark
         Scene::floor_problem_settings(scene_parameters)))
     , settings(Scene::contact_solver_settings(scene_parameters, ""))
     , space(triangulation, settings.fe_degree)
+    , null_space(Fem::rigid_body_modes(space))
   {
     std::vector<Fem::DirichletCondition<2>> zero_conditions;
     for (const auto &support : scene.supports)
@@ -143,7 +145,7 @@ namespace FloorBlock::Benchmark
     right_hand_side *= -1.;
     update = 0.;
     const Solver::LinearSolveInfo info = Solver::solve_linear_system(
-      settings.linear, matrix, right_hand_side, space.constant_modes(), update);
+      settings.linear, matrix, right_hand_side, null_space, update);
     constraints.distribute(update);
     return info.success;
   }

@@ -5,6 +5,7 @@
 #include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
+#include <solver/near_null_space.h>
 #include <fem/stored_elastic_system.h>
 #include <geometry/assembly_mesher.h>
 #include <parameters/scenario_parameters.h>
@@ -109,6 +110,8 @@ namespace FloorBlock::Benchmark
     const Contact::ContactProblem<2>     scene;
     const Contact::ContactSolverSettings  settings;
     const Fem::FeSpace<2>                 space;
+    /** ML's near-null space, for the solves that go iterative. */
+    const Solver::NearNullSpace           null_space;
     dealii::AffineConstraints<double>     constraints;
     std::vector<Contact::ContactNode<2>>  nodes;
     std::vector<std::unique_ptr<Contact::CoulombJoint<2>>> joint_laws;

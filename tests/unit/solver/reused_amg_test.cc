@@ -51,7 +51,7 @@ namespace
     Vector                           &x      = system.x;
     Solver::LinearSolverSettings              settings;
     /** One component: the constant is the near-null space. */
-    const std::vector<std::vector<bool>> modes{std::vector<bool>(n, true)};
+    const Solver::NearNullSpace modes{1, {std::vector<double>(n, 1.)}};
   };
 
   TEST_F(ReusedAmgTest, MeetsTheForcingTermAndNotMore)
