@@ -35,6 +35,32 @@ namespace
   /** Face length of params/plane_strain_3d.prm (m). */
   constexpr double face_length = 0.5;
 
+  /** A `solve` of params/plane_strain_3d.prm: its output folder and fem.json. */
+  struct Solved
+  {
+    std::string    folder;
+    nlohmann::json fem;
+  };
+
+  /**
+   * Solves params/plane_strain_3d.prm with `options` (--set ...) into a
+   * fresh folder `name`. A failed run fails the calling test and returns an
+   * empty fem.json, whose at() then throws, so nothing is compared with a
+   * missing result.
+   */
+  Solved
+  solve_plane_strain_scene(const std::string &name, const std::string &options)
+  {
+    Solved     result{fresh_output_folder(name), nlohmann::json::object()};
+    const auto solved = run_floorblock("solve params/plane_strain_3d.prm" +
+                                       options + " --output " +
+                                       shell_quoted(result.folder));
+    EXPECT_EQ(solved.exit_code, 0) << solved.output;
+    if (solved.exit_code == 0)
+      result.fem = read_json(result.folder + "/fem.json");
+    return result;
+  }
+
   void
   expect_relative_near(const double       expected,
                        const double       actual,
@@ -93,19 +119,11 @@ namespace
 // length) and peak normal stress, with the contact area as an area.
 TEST(Solve3d, PlaneStrainSceneGivesTheTwoDimensionalAnswerPerMetre)
 {
-  const std::string folder_3d = fresh_output_folder("solve_plane_strain_3d");
-  const auto        solved_3d = run_floorblock(
-    "solve params/plane_strain_3d.prm --output " + shell_quoted(folder_3d));
-  ASSERT_EQ(solved_3d.exit_code, 0) << solved_3d.output;
-  const std::string folder_2d = fresh_output_folder("solve_plane_strain_2d");
-  const auto        solved_2d = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/Dimension=2' "
-    "--output " +
-    shell_quoted(folder_2d));
-  ASSERT_EQ(solved_2d.exit_code, 0) << solved_2d.output;
-
-  const auto fem_3d = read_json(folder_3d + "/fem.json");
-  const auto fem_2d = read_json(folder_2d + "/fem.json");
+  const auto fem_3d = solve_plane_strain_scene("solve_plane_strain_3d", "").fem;
+  const auto fem_2d =
+    solve_plane_strain_scene("solve_plane_strain_2d",
+                             " --set 'Geometry/Dimension=2'")
+      .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
   // Two slices: three copies of every 2D node, three components each.
   EXPECT_EQ(fem_3d.at("n_dofs").get<unsigned int>(),
@@ -124,19 +142,14 @@ TEST(Solve3d, PlaneStrainSceneGivesTheTwoDimensionalAnswerPerMetre)
 // against 332.7 mm in 2D (+0.5 %).
 TEST(Solve3d, FreeEndFacesAreNotPlaneStrain)
 {
-  const std::string &coarse = coarse_mesh;
-  const std::string folder = fresh_output_folder("solve_free_ends_3d");
-  const auto        solved = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/End faces=free'" +
-    coarse + " --output " + shell_quoted(folder));
-  ASSERT_EQ(solved.exit_code, 0) << solved.output;
-  const std::string folder_2d = fresh_output_folder("solve_free_ends_2d");
-  const auto        solved_2d = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/Dimension=2'" + coarse +
-    " --output " + shell_quoted(folder_2d));
-  ASSERT_EQ(solved_2d.exit_code, 0) << solved_2d.output;
-  const auto face_3d = read_json(folder + "/fem.json").at("joints")[5];
-  const auto face_2d = read_json(folder_2d + "/fem.json").at("joints")[5];
+  const auto face_3d =
+    solve_plane_strain_scene("solve_free_ends_3d",
+                             " --set 'Geometry/End faces=free'" + coarse_mesh)
+      .fem.at("joints")[5];
+  const auto face_2d =
+    solve_plane_strain_scene("solve_free_ends_2d",
+                             " --set 'Geometry/Dimension=2'" + coarse_mesh)
+      .fem.at("joints")[5];
   EXPECT_GT(std::abs(face_3d.at("contact_length_m").get<double>() -
                      face_2d.at("contact_length_m").get<double>()),
             100. * plane_strain_tolerance *
@@ -152,16 +165,15 @@ TEST(Solve3d, FreeEndFacesAreNotPlaneStrain)
 // Free end faces, so that the sections differ.
 TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
 {
-  const std::string folder = fresh_output_folder("solve_contact_area_3d");
-  const auto        solved = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/End faces=free'" +
-    coarse_mesh + " --output " + shell_quoted(folder));
-  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  const auto solved = solve_plane_strain_scene(
+    "solve_contact_area_3d", " --set 'Geometry/End faces=free'" + coarse_mesh);
+  ASSERT_FALSE(solved.fem.empty());
+  const std::string &folder = solved.folder;
   EXPECT_GT(std::filesystem::file_size(folder + "/face_contact_area.png"),
             10000u);
   const CsvTable table = read_csv(folder + "/face_contact_area.csv");
   ASSERT_FALSE(table.rows.empty());
-  const auto face = read_json(folder + "/fem.json").at("joints")[5];
+  const auto &face = solved.fem.at("joints")[5];
   ASSERT_EQ(face.at("name"), "vertical 6");
   for (const auto &section : face.at("along_face"))
     {
@@ -205,18 +217,11 @@ TEST(Solve3d, ExactLawPlaneStrainGivesTheTwoDimensionalAnswer)
   const std::string exact =
     coarse_mesh +
     " --set 'Joints/Law=rigid' --set 'Mesh/Global refinements=0'";
-  const std::string folder_3d = fresh_output_folder("solve_exact_3d");
-  const auto        solved_3d = run_floorblock(
-    "solve params/plane_strain_3d.prm" + exact + " --output " +
-    shell_quoted(folder_3d));
-  ASSERT_EQ(solved_3d.exit_code, 0) << solved_3d.output;
-  const std::string folder_2d = fresh_output_folder("solve_exact_2d");
-  const auto        solved_2d = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/Dimension=2'" + exact +
-    " --output " + shell_quoted(folder_2d));
-  ASSERT_EQ(solved_2d.exit_code, 0) << solved_2d.output;
-  const auto fem_3d = read_json(folder_3d + "/fem.json");
-  const auto fem_2d = read_json(folder_2d + "/fem.json");
+  const auto fem_3d = solve_plane_strain_scene("solve_exact_3d", exact).fem;
+  const auto fem_2d =
+    solve_plane_strain_scene("solve_exact_2d",
+                             " --set 'Geometry/Dimension=2'" + exact)
+      .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
   expect_two_dimensional_answer(fem_3d, fem_2d);
   EXPECT_GT(fem_2d.at("joints")[5].at("contact_length_m").get<double>(), 0.05);
@@ -237,20 +242,16 @@ TEST(Solve3d, ExactLawPlaneStrainGivesTheTwoDimensionalAnswer)
 // more.
 TEST(Solve3d, IterativeSolverGivesTheDirectAnswer)
 {
-  const std::string folder_3d = fresh_output_folder("solve_iterative_3d");
-  const auto        solved_3d = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Solver/Linear solver=iterative'" +
-    coarse_mesh + " --output " + shell_quoted(folder_3d));
-  ASSERT_EQ(solved_3d.exit_code, 0) << solved_3d.output;
-  const std::string folder_2d = fresh_output_folder("solve_iterative_2d");
-  const auto        solved_2d = run_floorblock(
-    "solve params/plane_strain_3d.prm --set 'Geometry/Dimension=2'" +
-    coarse_mesh + " --set 'Solver/Linear solver=direct' --output " +
-    shell_quoted(folder_2d));
-  ASSERT_EQ(solved_2d.exit_code, 0) << solved_2d.output;
-
-  const auto fem_3d = read_json(folder_3d + "/fem.json");
-  const auto fem_2d = read_json(folder_2d + "/fem.json");
+  const auto fem_3d =
+    solve_plane_strain_scene("solve_iterative_3d",
+                             " --set 'Solver/Linear solver=iterative'" +
+                               coarse_mesh)
+      .fem;
+  const auto fem_2d = solve_plane_strain_scene(
+                        "solve_iterative_2d",
+                        " --set 'Geometry/Dimension=2'" + coarse_mesh +
+                          " --set 'Solver/Linear solver=direct'")
+                        .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
   EXPECT_GT(fem_3d.at("amg_setups").get<unsigned int>(), 0u);
   EXPECT_GT(fem_3d.at("krylov_iterations_with_amg").get<unsigned int>(), 0u);
