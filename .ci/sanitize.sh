@@ -16,7 +16,7 @@
 #   blocks, non-matching joints), and every bad-input case. A new CLI test
 #   runs here unless `heavy_duplicates` below names it;
 # - fuzz_tests: 2000 random scenes and the closed forms' hostile inputs;
-# - the unit tests of common, analytic, parameters and rigid.
+# - the unit tests of common, analytic, loading, parameters and rigid.
 # Left out: the other modules' unit tests (geometry, contact, convergence,
 # verification, fem, solver, pipeline, ...) and the scenario label: their
 # code (Gmsh meshing, FEM solves) runs here through cli_tests end to end,
