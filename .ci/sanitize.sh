@@ -38,12 +38,14 @@ targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_lo
 # mesh, a longer ladder, other numbers): under ASan, the slow unwinder and
 # deal.II's debug library a contact solve takes 20-40 times its Release
 # time, and these 20 of the 104 CLI tests take 105 of their 190 s of
-# Release time (on 2 cores). The CI run of 2026-11-27 ran out of its 90 minutes in
-# this step with all of them in.
+# Release time (on 2 cores). The CI run of 2026-11-27 ran out of its 90
+# minutes in this step with all of them in.
 # - 3D: the default-mesh plane-strain solve, the free end faces and the face
 #   contact table (the same compliant 3D solve as Footprint3d.
 #   FootprintCarriesTheWholeSupportLoad and Solve3d.IterativeSolver...,
-#   which stay), two more footprints (the same footprint load);
+#   which stay: free end faces only leave out the two end-face supports
+#   (Scene::swept_contact_problem), and every 3D solve writes the face
+#   contact table), two more footprints (the same footprint load);
 # - ladders: the default scene's error-estimate bracket, the accuracy loop
 #   that runs out, the uniform converge study (the same accuracy loop and
 #   ladder as RunCommand.FaceJointFiguresCarryErrorAndTime and
