@@ -217,6 +217,6 @@ namespace FloorBlock::Contact
     parameters() const;
 
   private:
-    const ComplementarityParameters constants;
+    ComplementarityParameters constants;
   };
 } // namespace FloorBlock::Contact

@@ -92,8 +92,9 @@ namespace FloorBlock::Contact
     /**
      * One increment of the load path: from the extrapolated state (if the
      * predictor applies), else or then from the last converged state, and
-     * for the exact law finally from a penalty start; each start is tried
-     * only when the one before failed.
+     * for the exact law then from a penalty start, and for the exact law
+     * all of these again with the complementarity parameters a tenth;
+     * each start is tried only when the one before failed.
      */
     bool
     solve_increment(const Loading::LoadState            &state,
@@ -110,6 +111,12 @@ namespace FloorBlock::Contact
                      const dealii::Timer      &clock,
                      IncrementResult          &increment,
                      SolveResult              &result);
+    /** The starts of solve_increment() with the current parameters. */
+    bool
+    try_starts(const Loading::LoadState            &state,
+               const Loading::FailedStartRecorder &record_failed_start,
+               IncrementResult                     &increment,
+               std::string                         &failure_reason);
     /** Back to the committed state after the failed @p attempt. */
     void
     discard_attempt(const std::string     &attempt,

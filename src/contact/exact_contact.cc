@@ -174,7 +174,8 @@ namespace FloorBlock::Contact
   template <int dim>
   void
   ExactContact<dim>::add_force_block(
-    dealii::TrilinosWrappers::SparseMatrix &matrix) const
+    dealii::TrilinosWrappers::SparseMatrix &matrix,
+    const double                            weight) const
   {
     // Force on side B per unit multiplier: w c_n (-n) (normal), w c_n
     // tau_j (tangent j),
@@ -193,8 +194,10 @@ namespace FloorBlock::Contact
             const unsigned int column = n_displacement_dofs + dim * k + i;
             for (unsigned int c = 0; c < dim; ++c)
               for (const auto &[sign, dof] : side_dofs(node, c))
-                for (const auto &[row, weight] : distributed(dof))
-                  matrix.add(row, column, sign * weight * direction[c]);
+                for (const auto &[row, share] : distributed(dof))
+                  matrix.add(row,
+                             column,
+                             weight * sign * share * direction[c]);
           }
       }
     matrix.compress(dealii::VectorOperation::add);
@@ -270,6 +273,23 @@ namespace FloorBlock::Contact
               (response.tangential_traction * pair.tangents[j - 1]) / scale :
               0.;
       }
+  }
+
+  template <int dim>
+  void
+  ExactContact<dim>::scale_complementarity(const double factor)
+  {
+    AssertThrow(factor > 0. && std::isfinite(factor),
+                dealii::ExcMessage("complementarity scale must be > 0"));
+    for (ExactPair &pair : pairs)
+      {
+        ComplementarityParameters intact = pair.intact_law.parameters();
+        intact.normal_parameter *= factor;
+        intact.tangential_parameter *= factor;
+        pair.intact_law = CoulombComplementarity<dim>(intact);
+        pair.broken_law = CoulombComplementarity<dim>(without_cohesion(intact));
+      }
+    values /= factor;
   }
 
   template <int dim>

@@ -106,9 +106,15 @@ namespace FloorBlock::Contact
     void
     add_couplings(dealii::DynamicSparsityPattern &pattern) const;
 
-    /** @brief Writes the constant block \f$B^T\f$ into @p matrix. */
+    /**
+     * @brief Adds @p weight times the constant block \f$B^T\f$ to
+     * @p matrix (weight 1 writes it into a matrix without it; after
+     * scale_complementarity(f), weight 1 - 1/f brings a matrix that holds
+     * the old block to the new one).
+     */
     void
-    add_force_block(dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+    add_force_block(dealii::TrilinosWrappers::SparseMatrix &matrix,
+                    const double                            weight = 1.) const;
 
     /**
      * @brief Evaluates every exact pair at the displacement @p solution
@@ -155,6 +161,16 @@ namespace FloorBlock::Contact
      */
     void
     set_multipliers(const std::vector<JointResponse<dim>> &responses);
+
+    /**
+     * @brief Multiplies every pair's complementarity parameters
+     * \f$c_n, c_t\f$ by @p factor (> 0) and divides the multipliers by
+     * it, so that the tractions \f$\lambda = c_n \mu\f$ they stand for
+     * do not change. The converged answer does not depend on the
+     * parameters; the semi-smooth Newton iterates do.
+     */
+    void
+    scale_complementarity(const double factor);
 
     /** @brief The multipliers \f$\mu = \lambda/c_n\f$ (m), working values. */
     dealii::Vector<double> &

@@ -692,4 +692,65 @@ namespace
                   1e-14 * std::abs(multipliers[i]))
         << "multiplier " << i;
   }
+
+  /**
+   * scale_complementarity(f) keeps the tractions the multipliers stand for
+   * (responses before and after agree to 1e-12 relative) and divides the
+   * multipliers by f; the force block brought along with weight 1 - 1/f
+   * equals a block written fresh at the new parameters (1e-12 of its
+   * largest entry); scaling back by 1/f restores the multipliers.
+   */
+  TEST(ExactContact, ScaledComplementarityKeepsTheTractions)
+  {
+    auto system = make_two_pair_system();
+    const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      system->contact->multipliers()(i) = multipliers[i];
+    for (unsigned int d = 0; d < system->n_u; ++d)
+      system->u(d) = 1e-6 * std::cos(2. + d);
+    system->contact->evaluate(system->u, system->histories, system->responses);
+    const std::vector<JointResponse<2>> before = system->responses;
+    system->matrix = 0.;
+    system->contact->add_force_block(system->matrix);
+
+    constexpr double factor = 0.1;
+    system->contact->scale_complementarity(factor);
+    system->contact->add_force_block(system->matrix, 1. - 1. / factor);
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      EXPECT_NEAR(system->contact->multipliers()(i),
+                  multipliers[i] / factor,
+                  1e-14 * std::abs(multipliers[i] / factor));
+    system->contact->evaluate(system->u, system->histories, system->responses);
+    for (unsigned int p : {0u, 2u})
+      {
+        const double scale = std::abs(before[p].normal_traction) +
+                             before[p].tangential_traction.norm();
+        ASSERT_GT(scale, 0.);
+        EXPECT_NEAR(system->responses[p].normal_traction,
+                    before[p].normal_traction, 1e-12 * scale);
+        EXPECT_NEAR((system->responses[p].tangential_traction -
+                     before[p].tangential_traction).norm(),
+                    0., 1e-12 * scale);
+      }
+
+    Matrix fresh;
+    fresh.reinit(system->matrix);
+    fresh = 0.;
+    system->contact->add_force_block(fresh);
+    double largest = 0.;
+    for (unsigned int r = 0; r < system->n_total; ++r)
+      for (unsigned int c = 0; c < system->n_total; ++c)
+        largest = std::max(largest, std::abs(fresh.el(r, c)));
+    ASSERT_GT(largest, 0.);
+    for (unsigned int r = 0; r < system->n_total; ++r)
+      for (unsigned int c = 0; c < system->n_total; ++c)
+        EXPECT_NEAR(system->matrix.el(r, c), fresh.el(r, c), 1e-12 * largest)
+          << "entry " << r << ", " << c;
+
+    system->contact->scale_complementarity(1. / factor);
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      EXPECT_NEAR(system->contact->multipliers()(i),
+                  multipliers[i],
+                  1e-14 * std::abs(multipliers[i]));
+  }
 } // namespace
