@@ -80,7 +80,9 @@ namespace FloorBlock::Parameters
                       "Newton iterates of the exact contact law, not its "
                       "answer: 0.1 took the fewest iterations on the floor "
                       "scenes (params/s6.prm: 51 at 0.1, 193 at 1; at 10 "
-                      "the support stage fails). Units: none.");
+                      "the support stage fails). A load state whose every "
+                      "start fails is tried once more with a tenth of it "
+                      "before a cutback. Units: none.");
     prm.declare_entry("Error estimate", "refined solve",
                       Selection("refined solve|none"),
                       "How `run` estimates the discretisation error of each "
