@@ -308,6 +308,22 @@ namespace
   }
 
   /**
+   * make_two_pair_system() with the given multipliers and the
+   * displacement u_d = 1e-6 cos(2 + d) m, evaluated there.
+   */
+  std::unique_ptr<System>
+  evaluated_two_pair_system(const std::vector<double> &multipliers)
+  {
+    auto system = make_two_pair_system();
+    for (unsigned int i = 0; i < multipliers.size(); ++i)
+      system->contact->multipliers()(i) = multipliers[i];
+    for (unsigned int d = 0; d < system->n_u; ++d)
+      system->u(d) = 1e-6 * std::cos(2. + d);
+    system->contact->evaluate(system->u, system->histories, system->responses);
+    return system;
+  }
+
+  /**
    * Pins down: every entry the Newton matrix gets in the multiplier rows
    * (by all displacements and all multipliers, including the zeros) is
    * the derivative of the residual rows E, for a two-sided pair and a
@@ -674,13 +690,8 @@ namespace
           }
       }
 
-    auto system = make_two_pair_system();
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
-    for (unsigned int i = 0; i < multipliers.size(); ++i)
-      system->contact->multipliers()(i) = multipliers[i];
-    for (unsigned int d = 0; d < system->n_u; ++d)
-      system->u(d) = 1e-6 * std::cos(2. + d);
-    system->contact->evaluate(system->u, system->histories, system->responses);
+    auto system = evaluated_two_pair_system(multipliers);
     // The compliant pair's response is not the exact law's.
     EXPECT_EQ(system->responses[1].normal_traction, 0.);
     for (unsigned int i = 0; i < multipliers.size(); ++i)
@@ -702,13 +713,8 @@ namespace
    */
   TEST(ExactContact, ScaledComplementarityKeepsTheTractions)
   {
-    auto system = make_two_pair_system();
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
-    for (unsigned int i = 0; i < multipliers.size(); ++i)
-      system->contact->multipliers()(i) = multipliers[i];
-    for (unsigned int d = 0; d < system->n_u; ++d)
-      system->u(d) = 1e-6 * std::cos(2. + d);
-    system->contact->evaluate(system->u, system->histories, system->responses);
+    auto system = evaluated_two_pair_system(multipliers);
     const std::vector<JointResponse<2>> before = system->responses;
     system->matrix = 0.;
     system->contact->add_force_block(system->matrix);
