@@ -37,7 +37,7 @@ targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_lo
 # CLI tests left out because a test that stays runs the same code (a finer
 # mesh, a longer ladder, other numbers): under ASan, the slow unwinder and
 # deal.II's debug library a contact solve takes 20-40 times its Release
-# time, and these 20 of the 104 CLI tests take 105 of their 190 s of
+# time, and these 20 of the 104 CLI tests of that day take 105 of their 190 s of
 # Release time (on 2 cores). The CI run of 2026-11-27 ran out of its 90
 # minutes in this step with all of them in.
 # - 3D: the default-mesh plane-strain solve, the free end faces and the face
