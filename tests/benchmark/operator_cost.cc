@@ -1,8 +1,9 @@
 // Cost of one application of the 3D elasticity operator per unknown, as the
 // mesh grows out of the caches: the assembled matrix (Epetra, what GMRES and
 // ML's fine level multiply by today) against deal.II's matrix-free operator
-// (the design issue 16 names for a fine level whose cost per unknown does not
-// grow). A measurement program, not a test: CTest never runs it.
+// (proposed for issue 16 as a fine level whose cost per unknown does not
+// grow; RESULTS.md has what this program measured of that). A measurement
+// program, not a test: CTest never runs it.
 //
 // The mesh is a box of hexahedra with a smooth interior distortion, so that
 // every cell is non-affine as the swept Gmsh meshes are and the matrix-free
@@ -18,7 +19,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
