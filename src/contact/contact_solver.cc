@@ -667,7 +667,6 @@ namespace FloorBlock::Contact
     // penalty start keeps its springs of the configured parameter: they
     // only make a starting point.
     record_failed_start("every start", failure_reason);
-    increment = IncrementResult();
     const auto scale_complementarity = [&](const double factor) {
       exact->scale_complementarity(factor);
       exact->add_force_block(base_matrix, 1. - 1. / factor);
