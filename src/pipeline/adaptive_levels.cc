@@ -147,12 +147,13 @@ namespace FloorBlock::Pipeline
   }
 
   FemOutcome
-  AdaptiveLevels::solve_halved(const Output::ResultFolder &folder) const
+  AdaptiveLevels::solve_halved(const Output::ResultFolder &folder,
+                               const unsigned int          times) const
   {
     dealii::Timer            timer;
     dealii::Triangulation<2> halved;
     halved.copy_triangulation(triangulation);
-    Geometry::refine_globally_on_curves(description, 1, halved);
+    Geometry::refine_globally_on_curves(description, times, halved);
     Geometry::MeshStatistics mesh;
     std::filesystem::create_directories(folder.path_of(""));
     write_solved_mesh(halved, folder.path_of("mesh.msh"), mesh);

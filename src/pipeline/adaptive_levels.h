@@ -76,13 +76,14 @@ namespace FloorBlock::Pipeline
 
     /**
      * @brief Solves a copy of the last level's mesh with every cell halved
-     * (new boundary vertices on the scene's curves) into @p folder,
-     * without VTU: the nested h/2 refinement that run's error estimate
-     * compares the level with (accuracy_loop.h). Leaves the levels as they
-     * are. Pre-condition: solve_next() was called.
+     * @p times times (new boundary vertices on the scene's curves) into
+     * @p folder, without VTU: once, the nested h/2 refinement that run's
+     * error estimate compares the level with (accuracy_loop.h). Leaves the
+     * levels as they are. Pre-condition: solve_next() was called.
      */
     FemOutcome
-    solve_halved(const Output::ResultFolder &folder) const;
+    solve_halved(const Output::ResultFolder &folder,
+                 unsigned int                times = 1) const;
 
     /** Whether the last level left size requests to refine from. */
     bool
