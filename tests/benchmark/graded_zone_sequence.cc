@@ -25,7 +25,8 @@
 // (Pipeline::refined_solve_error: 6 times the difference plus the ends'
 // location uncertainty), i.e. what `run` would report for that step.
 // --halvings N then solves the last step with every cell halved 2..N
-// times: a nested uniform ladder on the graded mesh.
+// times: a nested uniform ladder on the graded mesh. --all-peaks adds the
+// peak of every other closed joint (vertical and bedding) with size h_c.
 // The solves' files go to a folder under the system's temporary directory.
 
 #include <compare/joint_name.h>
@@ -61,6 +62,7 @@ namespace
     bool                     fixed_corner = false;
     bool                     check        = false;
     unsigned int             halvings     = 0;
+    bool                     all_peaks    = false;
     std::vector<std::string> overrides;
   };
 
@@ -71,7 +73,7 @@ namespace
       {
         std::fprintf(stderr,
                      "usage: %s <scene.prm> <h_c mm> <g> <h_j mm> <steps> "
-                     "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--set "
+                     "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--all-peaks] [--set "
                      "\"Section/Name=value\"]...\n",
                      argv[0]);
         std::exit(2);
@@ -91,6 +93,8 @@ namespace
           options.fixed_corner = true;
         else if (argument == "--check")
           options.check = true;
+        else if (argument == "--all-peaks")
+          options.all_peaks = true;
         else if (argument == "--halvings" && k + 1 < argc)
           options.halvings = static_cast<unsigned int>(std::atoi(argv[++k]));
         else if (argument == "--set" && k + 1 < argc)
@@ -215,9 +219,16 @@ main(int argc, char **argv)
         options.fixed_growth ? options.growth_rate :
                                1. + (options.growth_rate - 1.) * halving;
       const double line_size = options.line_size * halving;
+      std::vector<Geometry::LocalSize> requests =
+        zone_requests(*joint, corner_size, line_size);
+      if (options.all_peaks)
+        for (const auto &other : outcome.result.increments.back().joints)
+          if (other.name != face && other.counts.n_closed() > 0)
+            requests.push_back(
+              {{other.peak_position[0], other.peak_position[1]}, corner_size});
       timer.restart();
       outcome = levels.solve_refined_toward(
-        zone_requests(*joint, corner_size, line_size), growth_rate,
+        requests, growth_rate,
         Output::ResultFolder((folder / ("step_" + std::to_string(step)))
                                .string()),
         false);
