@@ -185,6 +185,12 @@ namespace FloorBlock::Contact
     dealii::Vector<double>                         multiplier_update;
     dealii::Vector<double>                         multiplier_base;
     dealii::Vector<double>                         committed_multipliers;
+    /**
+     * The exact law's complementarity parameter per the configured one:
+     * solve_increment() lowers it when every start of a load state fails
+     * and keeps it lowered for the rest of the solve.
+     */
+    double complementarity_scale = 1.;
     std::vector<JointHistory<dim>>  committed_history;
     std::vector<JointHistory<dim>>  working_history;
     std::vector<JointResponse<dim>> committed_responses;

@@ -82,7 +82,9 @@ namespace FloorBlock::Parameters
                       "scenes (params/s6.prm: 51 at 0.1, 193 at 1; at 10 "
                       "the support stage fails). A load state whose every "
                       "start fails is tried once more with a tenth of it "
-                      "before a cutback. Units: none.");
+                      "before a cutback, and a rescued state keeps the "
+                      "tenth for the rest of the solve (at most a "
+                      "hundredth). Units: none.");
     prm.declare_entry("Error estimate", "refined solve",
                       Selection("refined solve|none"),
                       "How `run` estimates the discretisation error of each "
