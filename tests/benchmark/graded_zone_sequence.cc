@@ -24,8 +24,9 @@
 // `run`'s two-grid estimate of the last step from it
 // (Pipeline::refined_solve_error: 6 times the difference plus the ends'
 // location uncertainty), i.e. what `run` would report for that step.
-// --halvings N then solves the last step with every cell halved 2..N
-// times: a nested uniform ladder on the graded mesh. --all-peaks adds the
+// --halvings N solves the last step with every cell halved 1..N times (the
+// first is --check's solve when both are given): a nested uniform ladder
+// on the graded mesh. --all-peaks adds the
 // peak of every other closed joint (vertical and bedding) with size h_c.
 // The solves' files go to a folder under the system's temporary directory.
 
@@ -256,7 +257,9 @@ main(int argc, char **argv)
       else
         std::printf("check: no estimate: %s\n", estimate.status_text.c_str());
     }
-  for (unsigned int times = 2; times <= options.halvings && outcome.converged;
+  // --check already solved the mesh halved once.
+  for (unsigned int times = options.check ? 2 : 1;
+       times <= options.halvings && outcome.converged;
        ++times)
     {
       timer.restart();
