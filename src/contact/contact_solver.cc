@@ -738,6 +738,7 @@ namespace FloorBlock::Contact
     increment.stage        = state.stage;
     increment.stage_factor = state.stage_factor;
     increment.n_cutbacks   = state.n_cutbacks;
+    increment.complementarity_factor = complementarity_scale;
     increment.counts       = count_states(states_of(responses));
     // readable_solution holds current_solution: responses_at_iterate().
     post_processor->describe(

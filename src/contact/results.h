@@ -139,6 +139,14 @@ namespace FloorBlock::Contact
     bool started_from_penalty = false;
     /** Failed attempts (cutbacks) before this increment converged. */
     unsigned int n_cutbacks        = 0;
+    /**
+     * Rigid law: the complementarity parameter in force when this
+     * increment converged, as a fraction of the configured one
+     * (ContactSolver::solve_increment lowers it to 0.1 or 0.01 to rescue a
+     * load state whose active set cycles, and keeps it from then on);
+     * 1 for the compliant law, which has no such parameter.
+     */
+    double complementarity_factor = 1.;
     double       relative_residual = 0.;
     /** Newton stopped on the round-off floor of the residual (see NewtonIterate). */
     bool         round_off_limited = false;

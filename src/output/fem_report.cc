@@ -266,6 +266,8 @@ namespace FloorBlock::Output
            {"newton_iterations", increment.n_newton_iterations},
            {"cutbacks", increment.n_cutbacks},
            {"started_from_penalty", increment.started_from_penalty},
+           {"complementarity_parameter_factor",
+            increment.complementarity_factor},
            {"relative_residual", increment.relative_residual},
            {"stopped_at_round_off_floor", increment.round_off_limited},
            {"n_stick", increment.counts.n_stick},

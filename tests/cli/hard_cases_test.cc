@@ -664,6 +664,27 @@ TEST(HardCases, RigidLawRetriesWithASmallerComplementarityParameter)
   // session 19; 2.5e-13 with the first version of the retry).
   auto a = joints_by_name(read_json(cycling + "/fem.json"));
   auto b = joints_by_name(read_json(usual + "/fem.json"));
+
+  // fem.json says which parameter each increment converged with: the
+  // retried run lowered it (so the rescue was exercised, not just a lucky
+  // start) and kept it; the usual run never did.
+  const auto factors = [](const nlohmann::json &fem) {
+    std::vector<double> result;
+    for (const auto &increment : fem.at("increments"))
+      result.push_back(
+        increment.at("complementarity_parameter_factor").get<double>());
+    return result;
+  };
+  const std::vector<double> retried_factors =
+    factors(read_json(cycling + "/fem.json"));
+  ASSERT_FALSE(retried_factors.empty());
+  EXPECT_LT(retried_factors.back(), 0.5);
+  EXPECT_GT(retried_factors.back(), 0.5e-2);
+  for (std::size_t k = 1; k < retried_factors.size(); ++k)
+    EXPECT_LE(retried_factors[k], retried_factors[k - 1]) << "increment " << k;
+  for (const double factor : factors(read_json(usual + "/fem.json")))
+    EXPECT_EQ(factor, 1.);
+
   double largest = 0.;
   for (auto &[name, joint] : b)
     largest = std::max(largest, std::abs(normal_force(joint)));
