@@ -19,14 +19,17 @@
 // Usage:
 //   floorblock_graded_zone_sequence <scene.prm> <h_c mm> <g> <h_j mm> <steps>
 //       [--fixed-growth] [--fixed-corner] [--check] [--halvings N]
-//       [--set "Section/Name=value"]...
+//       [--from-halving K] [--all-peaks] [--all-ends] [--set "Section/Name=value"]...
 // --check solves the last step once more with every cell halved and prints
 // `run`'s two-grid estimate of the last step from it
 // (Pipeline::refined_solve_error: 6 times the difference plus the ends'
 // location uncertainty), i.e. what `run` would report for that step.
 // --halvings N solves the last step with every cell halved 1..N times (the
 // first is --check's solve when both are given): a nested uniform ladder
-// on the graded mesh. --all-peaks adds the
+// on the graded mesh; --from-halving K skips the halvings below K (a ladder
+// whose coarser levels are known is extended by its next level alone).
+// --all-ends adds both ends of every joint (the blocks' corners, where the
+// elastic field is singular) with size h_c. --all-peaks adds the
 // peak of every other closed joint (vertical and bedding) with size h_c.
 // The solves' files go to a folder under the system's temporary directory.
 
@@ -63,7 +66,9 @@ namespace
     bool                     fixed_corner = false;
     bool                     check        = false;
     unsigned int             halvings     = 0;
+    unsigned int             first_halving = 1;
     bool                     all_peaks    = false;
+    bool                     all_ends     = false;
     std::vector<std::string> overrides;
   };
 
@@ -74,7 +79,7 @@ namespace
       {
         std::fprintf(stderr,
                      "usage: %s <scene.prm> <h_c mm> <g> <h_j mm> <steps> "
-                     "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--all-peaks] [--set "
+                     "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--from-halving K] [--all-peaks] [--all-ends] [--set "
                      "\"Section/Name=value\"]...\n",
                      argv[0]);
         std::exit(2);
@@ -96,8 +101,13 @@ namespace
           options.check = true;
         else if (argument == "--all-peaks")
           options.all_peaks = true;
+        else if (argument == "--all-ends")
+          options.all_ends = true;
         else if (argument == "--halvings" && k + 1 < argc)
           options.halvings = static_cast<unsigned int>(std::atoi(argv[++k]));
+        else if (argument == "--from-halving" && k + 1 < argc)
+          options.first_halving =
+            static_cast<unsigned int>(std::max(1, std::atoi(argv[++k])));
         else if (argument == "--set" && k + 1 < argc)
           options.overrides.push_back(argv[++k]);
         else
@@ -227,6 +237,19 @@ main(int argc, char **argv)
           if (other.name != face && other.counts.n_closed() > 0)
             requests.push_back(
               {{other.peak_position[0], other.peak_position[1]}, corner_size});
+      if (options.all_ends)
+        for (const auto &other : outcome.result.increments.back().joints)
+          if (!other.profile.empty())
+            {
+              const auto [first, last] = std::minmax_element(
+                other.profile.begin(), other.profile.end(),
+                [](const auto &a, const auto &b) {
+                  return a.arc_position < b.arc_position;
+                });
+              for (const auto *end : {&*first, &*last})
+                requests.push_back(
+                  {{end->position[0], end->position[1]}, corner_size});
+            }
       timer.restart();
       outcome = levels.solve_refined_toward(
         requests, growth_rate,
@@ -258,7 +281,8 @@ main(int argc, char **argv)
         std::printf("check: no estimate: %s\n", estimate.status_text.c_str());
     }
   // --check already solved the mesh halved once.
-  for (unsigned int times = options.check ? 2 : 1;
+  for (unsigned int times =
+         std::max(options.first_halving, options.check ? 2u : 1u);
        times <= options.halvings && outcome.converged;
        ++times)
     {
