@@ -79,13 +79,17 @@ namespace FloorBlock::App
         return;
       const Output::AccuracyTarget &target = *estimate->target;
       const auto &reported = target.levels.at(target.reported_level);
+      const bool  check =
+        target.reported_solve == Output::ReportedSolve::refined;
       std::cout << fmt::format(
                      "accuracy: target {:g} % {} after {} levels in {:.1f} "
-                     "s; reporting level {} ({} DoFs): {}\n",
+                     "s; reporting level {}{} ({} DoFs): {}\n",
                      100. * target.relative_error,
                      target.met ? "met" : "NOT met", target.levels.size(),
                      target.wall_time, target.reported_level,
-                     reported.n_dofs, target.stop_reason);
+                     check ? "'s check" : "",
+                     check ? reported.halved_n_dofs : reported.n_dofs,
+                     target.stop_reason);
     }
 
     /// The closing line: what was written, and in how long.

@@ -6,8 +6,20 @@ namespace FloorBlock::Output
 {
   using nlohmann::json;
 
+  const char *
+  reported_solve_name(const ReportedSolve solve)
+  {
+    return solve == ReportedSolve::coarse ? "coarse" : "refined";
+  }
+
   namespace
   {
+    json
+    optional_json(const std::optional<double> &value)
+    {
+      return value ? json(*value) : json(nullptr);
+    }
+
     json
     target_json(const AccuracyTarget &target)
     {
@@ -20,18 +32,19 @@ namespace FloorBlock::Output
            {"wall_time_s", level.wall_time},
            {"status", level.status},
            {"face", level.face_figures},
-           {"difference_indicator", level.difference_indicator ?
-                                      json(*level.difference_indicator) :
-                                      json(nullptr)},
+           {"difference_indicator",
+            optional_json(level.difference_indicator)},
            {"halved_n_dofs", level.halved_n_dofs},
            {"halved_wall_time_s", level.halved_wall_time},
            {"worst_target_relative_error",
-            level.worst_target_error ? json(*level.worst_target_error) :
-                                       json(nullptr)}});
+            optional_json(level.worst_target_error)},
+           {"halved_worst_target_relative_error",
+            optional_json(level.halved_worst_target_error)}});
       return {{"relative_error", target.relative_error},
               {"figures", target.figures},
               {"met", target.met},
               {"reported_level", target.reported_level},
+              {"reported_solve", reported_solve_name(target.reported_solve)},
               {"stop_reason", target.stop_reason},
               {"wall_time_s", target.wall_time},
               {"levels", levels}};
@@ -64,15 +77,16 @@ namespace FloorBlock::Output
             const FigureError &error = errors.*member;
             quantities[key] = {
               {"value", error.value},
+              {"coarse_value", error.coarse_value},
               {"refined_value", error.refined_value},
               {"absolute_error", error.absolute_error},
-              {"relative_error", error.relative_error ?
-                                   json(*error.relative_error) :
-                                   json(nullptr)}};
+              {"relative_error", optional_json(error.relative_error)},
+              {"oscillating", error.oscillating}};
           }
         joints[name] = quantities;
       }
     result["status"]         = "available";
+    result["reported_solve"] = reported_solve_name(estimate.reported_solve);
     result["refined_n_dofs"] = estimate.refined_n_dofs;
     result["refined_status"] = estimate.refined_status;
     result["joints"]         = joints;

@@ -9,18 +9,30 @@
 
 namespace FloorBlock::Output
 {
-  /** One FEM figure against the same figure of a refined solve. */
+  /**
+   * One FEM figure of a pair of solves, a coarse one and a refined one
+   * (the same mesh with every cell halved), and the estimated error of
+   * the one reported (FemErrorEstimate::reported_solve).
+   */
   struct FigureError
   {
-    double value          = 0.; ///< the solve's figure (SI unit of the figure)
+    double value          = 0.; ///< the reported solve's figure (SI unit)
     double refined_value  = 0.; ///< the refined solve's figure
     /**
-     * Estimated error of value: Pipeline::error_from_refined_difference
-     * times |value - refined_value|.
+     * Estimated error of value: Pipeline::error_per_difference() times
+     * |coarse_value - refined_value|, plus for a contact length the
+     * reported solve's ends' location uncertainty.
      */
     double absolute_error = 0.;
     /** absolute_error / |refined_value|; none when refined_value is 0. */
     std::optional<double> relative_error;
+    double coarse_value = 0.; ///< the coarse solve's figure
+    /**
+     * The check moved the figure opposite to the previous level's change
+     * (Pipeline::widen_where_oscillating()): absolute_error is then at
+     * least the range of the three values.
+     */
+    bool oscillating = false;
   };
 
   /** The estimated errors of one joint's figures. */
@@ -31,6 +43,17 @@ namespace FloorBlock::Output
     FigureError sigma_max;          ///< Pa, pointwise peak normal stress
     FigureError sigma_max_averaged; ///< Pa, averaged over the averaging length
   };
+
+  /** Which solve of a compared pair the figures are reported from. */
+  enum class ReportedSolve
+  {
+    coarse, ///< the solve being checked (its error is 6 times the difference)
+    refined ///< its check, every cell halved (3 times the difference)
+  };
+
+  /** summary.json's name of @p solve: "coarse" or "refined". */
+  const char *
+  reported_solve_name(ReportedSolve solve);
 
   /** One mesh of `run`'s accuracy loop (Pipeline::solve_to_target()). */
   struct RefinementLevelRecord
@@ -53,10 +76,15 @@ namespace FloorBlock::Output
     unsigned int halved_n_dofs = 0;
     double       halved_wall_time = 0.; ///< s, the check's mesh and solve
     /**
-     * Largest estimated relative error of the target figures from the
-     * check; none if the level was not checked.
+     * Largest estimated relative error of the level's target figures from
+     * the check; none if the level was not checked.
      */
     std::optional<double> worst_target_error;
+    /**
+     * The same for the check's own figures (the refined solve of the
+     * pair); none if the level was not checked.
+     */
+    std::optional<double> halved_worst_target_error;
   };
 
   /** What `run` was asked to reach, and how far it got. */
@@ -66,6 +94,8 @@ namespace FloorBlock::Output
     std::vector<std::string> figures; ///< fem.json keys of the target figures
     bool         met            = false;
     unsigned int reported_level = 0; ///< the level the figures come from
+    /** The level itself or its check (the level's mesh, every cell halved). */
+    ReportedSolve reported_solve = ReportedSolve::coarse;
     std::string  stop_reason;        ///< why the loop stopped, in words
     double       wall_time = 0.;     ///< s, all levels
     std::vector<RefinementLevelRecord> levels;
@@ -79,6 +109,8 @@ namespace FloorBlock::Output
   {
     std::string  method;            ///< how the refined solve was refined
     bool         available = false; ///< false: the refined solve failed
+    /** Which of the two solves FigureError::value is from. */
+    ReportedSolve reported_solve = ReportedSolve::coarse;
     std::string  status_text;       ///< why not available (else empty)
     unsigned int refined_n_dofs = 0;
     std::string  refined_status;
@@ -90,15 +122,17 @@ namespace FloorBlock::Output
 
   /**
    * @brief summary.json's fem_error_estimate: method and status; when
-   * available the refined DoFs and status and, per joint and figure (keys
-   * of fem.json: normal_force_N_per_m, contact_length_m, sigma_max_Pa,
-   * sigma_max_averaged_Pa), value, refined_value, absolute_error and
-   * relative_error (null where the refined value is 0); with an
-   * accuracy loop its "target": relative_error, figures, met,
-   * reported_level, stop_reason, wall_time_s and per level level, n_cells,
-   * n_dofs, wall_time_s, status, face (figures by fem.json key),
-   * difference_indicator, halved_n_dofs and worst_target_relative_error
-   * (null where not estimated).
+   * available the reported solve ("coarse" or "refined"), the refined
+   * DoFs and status and, per joint and figure (keys of fem.json:
+   * normal_force_N_per_m, contact_length_m, sigma_max_Pa,
+   * sigma_max_averaged_Pa), value, coarse_value, refined_value,
+   * absolute_error, relative_error (null where the refined value is 0)
+   * and oscillating; with an accuracy loop its "target": relative_error, figures, met,
+   * reported_level, reported_solve ("coarse": the level, "refined": its
+   * check), stop_reason, wall_time_s and per level level, n_cells, n_dofs,
+   * wall_time_s, status, face (figures by fem.json key),
+   * difference_indicator, halved_n_dofs, worst_target_relative_error and
+   * halved_worst_target_relative_error (null where not estimated).
    */
   nlohmann::json
   fem_error_estimate_json(const FemErrorEstimate &estimate);

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -10,59 +11,21 @@
 
 namespace FloorBlock::Pipeline
 {
-  Parameters::ScenarioParameters
-  refined_scene(Parameters::ScenarioParameters scene)
+  namespace
   {
-    // The next level of `converge`'s uniform ladder, so that `run` and
-    // `converge` mean the same by "refined": every cell halved, including
-    // those near the end of the contact zone, away from the corners.
-    scene = uniform_level_scene(scene, 1);
-    // The rigid-block model's only discretisation: points along each joint.
-    scene.model.rigid_points_per_joint *= 2;
-    return scene;
-  }
-
-  Output::FemErrorEstimate
-  refined_solve_error(const FemOutcome &coarse, const FemOutcome &fine)
-  {
-    Output::FemErrorEstimate estimate;
-    // The factor is printed from the constant, so text and value agree.
-    estimate.method = fmt::format(
-      "{} times the difference to {}: first-order Richardson with the "
-      "two-grid safety factor 3; contact lengths add their ends' location "
-      "uncertainty (two end rules)",
-      error_from_refined_difference,
-      coarse.report.model == "rigid blocks" ?
-        "one solve with twice the points per joint" :
-        "a solve on the same mesh with every cell halved (nested)");
-    // A refined solve that stopped early describes a different load state:
-    // comparing with it would be no error estimate at all.
-    if (!fine.converged)
-      {
-        estimate.status_text =
-          "the refined solve did not converge: " + fine.report.status_text;
-        return estimate;
-      }
-    estimate.available      = true;
-    estimate.refined_n_dofs = fine.result.n_dofs;
-    estimate.refined_status = fine.report.status;
-    const auto final_joints = [](const FemOutcome &outcome) {
-      return outcome.result.increments.empty() ?
-               std::vector<Contact::JointReport>() :
-               outcome.result.increments.back().joints;
-    };
-    const auto coarse_joints = final_joints(coarse);
-    const auto fine_joints   = final_joints(fine);
     using Figure = double Contact::JointReport::*;
     using Error  = Output::FigureError Output::JointErrors::*;
+
+    /** A figure of JointReport and where its estimate goes. */
     struct EstimatedFigure
     {
       Figure figure;
       Error  error;
-      /** The coarse solve's own uncertainty of the figure, added; or null. */
+      /** The reported solve's own uncertainty of the figure, added; or null. */
       Figure own_uncertainty;
     };
-    const EstimatedFigure figures[] = {
+
+    const EstimatedFigure estimated_figures[] = {
       {&Contact::JointReport::normal_force,
        &Output::JointErrors::normal_force,
        nullptr},
@@ -78,26 +41,124 @@ namespace FloorBlock::Pipeline
       {&Contact::JointReport::averaged_peak_normal_stress,
        &Output::JointErrors::sigma_max_averaged,
        nullptr}};
+
+    std::vector<Contact::JointReport>
+    final_joints(const FemOutcome &outcome)
+    {
+      return outcome.result.increments.empty() ?
+               std::vector<Contact::JointReport>() :
+               outcome.result.increments.back().joints;
+    }
+
+    std::optional<double>
+    relative_to(const double absolute_error, const double refined_value)
+    {
+      return refined_value != 0. ?
+               std::optional<double>(absolute_error / std::abs(refined_value)) :
+               std::nullopt;
+    }
+  } // namespace
+  Parameters::ScenarioParameters
+  refined_scene(Parameters::ScenarioParameters scene)
+  {
+    // The next level of `converge`'s uniform ladder, so that `run` and
+    // `converge` mean the same by "refined": every cell halved, including
+    // those near the end of the contact zone, away from the corners.
+    scene = uniform_level_scene(scene, 1);
+    // The rigid-block model's only discretisation: points along each joint.
+    scene.model.rigid_points_per_joint *= 2;
+    return scene;
+  }
+
+  Output::FemErrorEstimate
+  refined_solve_error(const FemOutcome           &coarse,
+                      const FemOutcome           &fine,
+                      const Output::ReportedSolve reported)
+  {
+    Output::FemErrorEstimate estimate;
+    estimate.reported_solve = reported;
+    const double factor     = error_per_difference(reported);
+    // The factor is printed from the constant, so text and value agree.
+    estimate.method = fmt::format(
+      "{}: {} times the difference to {}: first-order Richardson with the "
+      "two-grid safety factor 3; contact lengths add their ends' location "
+      "uncertainty (two end rules)",
+      reported == Output::ReportedSolve::coarse ?
+        "figures of the coarse solve" :
+        "figures of the refined solve",
+      factor,
+      coarse.report.model == "rigid blocks" ?
+        "one solve with twice the points per joint" :
+        "a solve on the same mesh with every cell halved (nested)");
+    // A refined solve that stopped early describes a different load state:
+    // comparing with it would be no error estimate at all.
+    if (!fine.converged)
+      {
+        estimate.status_text =
+          "the refined solve did not converge: " + fine.report.status_text;
+        return estimate;
+      }
+    estimate.available      = true;
+    estimate.refined_n_dofs = fine.result.n_dofs;
+    estimate.refined_status = fine.report.status;
+    const auto coarse_joints   = final_joints(coarse);
+    const auto fine_joints     = final_joints(fine);
+    const auto &reported_joints =
+      reported == Output::ReportedSolve::coarse ? coarse_joints : fine_joints;
     for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
          ++k)
       {
         Output::JointErrors &errors = estimate.joints[coarse_joints[k].name];
-        for (const auto &[figure, error, own_uncertainty] : figures)
+        for (const auto &[figure, error, own_uncertainty] : estimated_figures)
           {
             const double coarse_value = coarse_joints[k].*figure;
             const double fine_value   = fine_joints[k].*figure;
             const double estimate =
-              error_from_refined_difference *
-                std::abs(coarse_value - fine_value) +
-              (own_uncertainty ? coarse_joints[k].*own_uncertainty : 0.);
-            errors.*error = {coarse_value, fine_value, estimate,
-                             fine_value != 0. ?
-                               std::optional<double>(estimate /
-                                                     std::abs(fine_value)) :
-                               std::nullopt};
+              factor * std::abs(coarse_value - fine_value) +
+              (own_uncertainty ? reported_joints[k].*own_uncertainty : 0.);
+            errors.*error = {reported_joints[k].*figure, fine_value, estimate,
+                             relative_to(estimate, fine_value), coarse_value};
           }
       }
     return estimate;
+  }
+
+  void
+  widen_where_oscillating(Output::FemErrorEstimate &estimate,
+                          const FemOutcome         &previous)
+  {
+    if (!estimate.available || !previous.converged)
+      return;
+    bool widened = false;
+    for (const Contact::JointReport &joint : final_joints(previous))
+      {
+        const auto errors = estimate.joints.find(joint.name);
+        if (errors == estimate.joints.end())
+          continue;
+        for (const auto &[figure, error, own_uncertainty] : estimated_figures)
+          {
+            Output::FigureError &entry = errors->second.*error;
+            const double step  = entry.coarse_value - joint.*figure;
+            const double check = entry.refined_value - entry.coarse_value;
+            if (!(step * check < 0.))
+              continue; // monotone (or a zero step): the pair's estimate holds
+            entry.oscillating = true;
+            const double range =
+              std::max({joint.*figure, entry.coarse_value,
+                        entry.refined_value}) -
+              std::min({joint.*figure, entry.coarse_value,
+                        entry.refined_value});
+            if (range > entry.absolute_error)
+              {
+                entry.absolute_error = range;
+                entry.relative_error = relative_to(range, entry.refined_value);
+                widened              = true;
+              }
+          }
+      }
+    if (widened)
+      estimate.method += "; where the check reversed the previous level's "
+                         "change, at least the range of the three values";
   }
 
   std::optional<Output::FemErrorEstimate>
