@@ -1,6 +1,7 @@
 // The two-grid estimates of one pair of solves (pipeline/error_estimate):
 // Roache's GCI for the coarse solve (6 times the difference) and for the
-// refined one (3 times), each plus its own contact ends' uncertainty.
+// refined one (3 times), each plus its own contact ends' uncertainty; and
+// their guard against a level and its check agreeing by chance.
 
 #include <pipeline/error_estimate.h>
 
@@ -90,4 +91,62 @@ TEST(RefinedSolveError, UnconvergedRefinedSolveGivesNoEstimate)
       EXPECT_NE(estimate.status_text.find("stopped after 4 cutbacks"),
                 std::string::npos);
     }
+}
+
+// The exact law at vertical friction 60 deg (session 21): levels 2 and 3
+// and level 3's check gave 190.54, 190.37 and 190.38 mm. The check moved
+// the length opposite to the step from level 2, so the pair's agreement is
+// no evidence: the tool shall widen both estimates to the range of the
+// three values, mark the figure and say so in the method.
+TEST(WidenWhereOscillating, ReversedCheckGetsTheRangeOfThreeValues)
+{
+  const auto level_2 = solve_with_face(0.19054, 1e-5, 2.6720e6);
+  const auto level_3 = solve_with_face(0.19037, 1.8e-5, 2.6721e6);
+  const auto check   = solve_with_face(0.19038, 1e-5, 2.6722e6);
+  for (const ReportedSolve reported :
+       {ReportedSolve::coarse, ReportedSolve::refined})
+    {
+      auto estimate = Pipeline::refined_solve_error(level_3, check, reported);
+      const double pair_error =
+        estimate.joints.at("vertical 6").contact_length.absolute_error;
+      ASSERT_LT(pair_error, 1e-4);
+      Pipeline::widen_where_oscillating(estimate, level_2);
+      const auto &length = estimate.joints.at("vertical 6").contact_length;
+      EXPECT_TRUE(length.oscillating);
+      EXPECT_NEAR(length.absolute_error, 0.19054 - 0.19037, 1e-12);
+      EXPECT_NEAR(*length.relative_error, length.absolute_error / 0.19038,
+                  1e-15);
+      EXPECT_NE(estimate.method.find("range of the three values"),
+                std::string::npos);
+      // Q rose on both steps: monotone, its pair estimate stays.
+      const auto &force = estimate.joints.at("vertical 6").normal_force;
+      EXPECT_FALSE(force.oscillating);
+      EXPECT_NEAR(force.absolute_error,
+                  Pipeline::error_per_difference(reported) * 100., 1e-6);
+    }
+}
+
+// A check that continues the previous step's direction (the exact law at
+// 30 deg: 97.78, 97.86, then 98.17 mm) leaves the estimate as it was; so
+// does a range smaller than the pair's estimate, which is marked but not
+// widened, and the method then says nothing of it.
+TEST(WidenWhereOscillating, MonotoneOrNarrowRangeLeavesTheEstimate)
+{
+  const auto monotone = Pipeline::refined_solve_error(coarse, fine);
+  auto       widened  = monotone;
+  Pipeline::widen_where_oscillating(widened,
+                                    solve_with_face(0.09778, 7e-5, 2.6999e6));
+  const auto &length = widened.joints.at("vertical 6").contact_length;
+  EXPECT_FALSE(length.oscillating);
+  EXPECT_EQ(length.absolute_error,
+            monotone.joints.at("vertical 6").contact_length.absolute_error);
+  EXPECT_EQ(widened.method, monotone.method);
+
+  auto narrow = monotone;
+  Pipeline::widen_where_oscillating(narrow,
+                                    solve_with_face(0.09790, 7e-5, 2.7e6));
+  EXPECT_TRUE(narrow.joints.at("vertical 6").contact_length.oscillating);
+  EXPECT_EQ(narrow.joints.at("vertical 6").contact_length.absolute_error,
+            monotone.joints.at("vertical 6").contact_length.absolute_error);
+  EXPECT_EQ(narrow.method, monotone.method);
 }
