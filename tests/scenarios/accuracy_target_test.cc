@@ -42,3 +42,44 @@ TEST(AccuracyTarget, ThreeBlocksMeetOnePercentWithAnEstimateThatBrackets)
       EXPECT_LE(std::abs(value - reference), 0.01 * reference) << figure;
     }
 }
+
+// The same scene with a 2 % target meets it on level 0's check: level 0's
+// own estimate (6 times the difference) is 2.5 %, the check's (3 times)
+// 1.2 %. The tool shall then report the check's figures (683.8 mm on 3866
+// DoFs), its files and its estimate, and that estimate must bracket the
+// converged face joint too.
+TEST(AccuracyTarget, ThreeBlocksMeetTwoPercentWithLevelZerosCheck)
+{
+  const std::string folder = fresh_output_folder("accuracy_three_blocks_2");
+  const auto        result = run_floorblock(
+    "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder) +
+    " --set 'Solver/Error estimate=refined solve'"
+    " --set 'Mesh/Target relative error=0.02'");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const json  summary  = read_json(folder + "/summary.json");
+  const json &estimate = summary["fem_error_estimate"];
+  const json &target   = estimate["target"];
+  ASSERT_TRUE(target["met"].get<bool>()) << target;
+  EXPECT_EQ(target["reported_level"].get<unsigned int>(), 0u);
+  EXPECT_EQ(target["reported_solve"].get<std::string>(), "refined");
+  EXPECT_GT(target["levels"][0]["worst_target_relative_error"].get<double>(),
+            0.02);
+  EXPECT_EQ(read_json(folder + "/fem.json")["n_dofs"].get<unsigned int>(),
+            target["levels"][0]["halved_n_dofs"].get<unsigned int>());
+
+  const json &face = estimate["joints"]["vertical 3"];
+  expect_estimates_bracket(face, three_blocks_converged_face);
+  for (const auto &[figure, reference] : three_blocks_converged_face)
+    {
+      // The reported value is the check's.
+      EXPECT_EQ(face[figure]["value"].get<double>(),
+                face[figure]["refined_value"].get<double>())
+        << figure;
+      EXPECT_LE(face[figure]["absolute_error"].get<double>(),
+                0.02 * std::abs(face[figure]["refined_value"].get<double>()))
+        << figure;
+      EXPECT_LE(std::abs(face[figure]["value"].get<double>() - reference),
+                0.02 * reference)
+        << figure;
+    }
+}
