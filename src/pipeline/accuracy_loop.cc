@@ -229,7 +229,7 @@ namespace FloorBlock::Pipeline
             // One pair, two estimates: Roache's GCI of the level (6 times
             // the difference) and of its check (3 times). The level is
             // reported when it meets the target (the cheaper solve: the
-            // default scene's level 0, 0.75 s), otherwise whichever of the
+            // default scene's level 0, under 1 s), otherwise whichever of the
             // two has the smaller estimate, the check as a rule.
             // Both are widened where the check reverses the change from
             // the level before (a chance agreement).

@@ -52,7 +52,7 @@ namespace FloorBlock::Pipeline
    * uncertainty): the level's, 6 times the difference, and the check's,
    * 3 times. The level is reported when its estimate meets the target (it
    * is the cheaper solve -- the default scene meets 1 % on level 0 in
-   * 0.75 s), otherwise whichever of the two estimates is smaller, as a
+   * under 1 s), otherwise whichever of the two estimates is smaller, as a
    * rule the check's: the exact law on the default scene meets 1 % only
    * there. Where a check moves a figure opposite to the change from the
    * level before, both estimates are at least the range of the three

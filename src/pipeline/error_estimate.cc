@@ -58,6 +58,7 @@ namespace FloorBlock::Pipeline
                std::nullopt;
     }
   } // namespace
+
   Parameters::ScenarioParameters
   refined_scene(Parameters::ScenarioParameters scene)
   {
