@@ -127,9 +127,9 @@ namespace FloorBlock::Output
    * normal_force_N_per_m, contact_length_m, sigma_max_Pa,
    * sigma_max_averaged_Pa), value, coarse_value, refined_value,
    * absolute_error, relative_error (null where the refined value is 0)
-   * and oscillating; with an accuracy loop its "target": relative_error, figures, met,
-   * reported_level, reported_solve ("coarse": the level, "refined": its
-   * check), stop_reason, wall_time_s and per level level, n_cells, n_dofs,
+   * and oscillating; with an accuracy loop its "target": relative_error,
+   * figures, met, reported_level, reported_solve ("coarse": the level,
+   * "refined": its check), stop_reason, wall_time_s and per level level, n_cells, n_dofs,
    * wall_time_s, status, face (figures by fem.json key),
    * difference_indicator, halved_n_dofs, worst_target_relative_error and
    * halved_worst_target_relative_error (null where not estimated).
