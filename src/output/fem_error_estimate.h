@@ -97,6 +97,7 @@ namespace FloorBlock::Output
     /** The level itself or its check (the level's mesh, every cell halved). */
     ReportedSolve reported_solve = ReportedSolve::coarse;
     std::string  stop_reason;        ///< why the loop stopped, in words
+    unsigned int fe_degree = 1;      ///< FE degree of the loop's solves
     double       wall_time = 0.;     ///< s, all levels
     std::vector<RefinementLevelRecord> levels;
   };

@@ -1,0 +1,106 @@
+#pragma once
+
+#include <output/fem_error_estimate.h>
+#include <output/result_folder.h>
+#include <parameters/scenario_parameters.h>
+#include <pipeline/adaptive_levels.h>
+#include <pipeline/fem_pipeline.h>
+
+#include <optional>
+#include <vector>
+
+namespace FloorBlock::Pipeline
+{
+  /**
+   * @brief One FE degree's accuracy loop (solve_to_target()), one solve
+   * per step(): level 0, a level's check (every cell halved) or the next
+   * adaptive level. Stepping lets two degrees' loops run turn about
+   * (degree_race.h); a single degree runs step() until finished().
+   *
+   * Level 0 is written into @p base_folder, level k into
+   * <base_folder>/refined/level_<k>/, level k's check into
+   * <base_folder>/refined/level_<k>_halved/. finish() copies the reported
+   * solve's files into @p report_folder when they are elsewhere.
+   * Mesh/Refinement time budget bounds the loop's own solving time.
+   */
+  class TargetLoop
+  {
+  public:
+    TargetLoop(const Parameters::ScenarioParameters &scene,
+               const Output::ResultFolder           &base_folder,
+               const Output::ResultFolder           &report_folder);
+
+    /** Solves the next level or check; only while !finished(). */
+    void
+    step();
+
+    bool
+    finished() const;
+
+    /** Whether a checked solve met the target (false while running). */
+    bool
+    met() const;
+
+    /** Wall time (s) of this loop's steps so far. */
+    double
+    time_spent() const;
+
+    /**
+     * The smallest estimate among the checked solves so far, the one
+     * finish() reports; none before the first check.
+     */
+    std::optional<double>
+    reported_error() const;
+
+    /** The loop's record so far (levels, reported solve, stop reason). */
+    const Output::AccuracyTarget &
+    record() const;
+
+    /**
+     * Stops a loop that has not finished (another degree met the target
+     * first): @p reason becomes its stop reason.
+     */
+    void
+    abandon(const std::string &reason);
+
+    /**
+     * Copies the reported solve's files into the report folder and
+     * returns the solve with its estimate (none when level 0 failed: its
+     * fem.json says why).
+     */
+    std::pair<FemOutcome, std::optional<Output::FemErrorEstimate>>
+    finish();
+
+  private:
+    enum class Action
+    {
+      solve_level,
+      check_level,
+      none
+    };
+
+    void
+    solve_level();
+    void
+    check_level();
+    /** After level `level` is settled: the next level, or a stop. */
+    void
+    plan_next_level();
+
+    const Parameters::ScenarioParameters scene;
+    const Output::ResultFolder           base_folder;
+    const Output::ResultFolder           report_folder;
+    const std::string                    face;
+    AdaptiveLevels                       levels;
+    Output::AccuracyTarget               target;
+    // Every level's outcome is kept: the reported one is the last level
+    // checked, which is not always the last solved.
+    std::vector<FemOutcome> outcomes;
+    // The reported level's check, when it is the check that is reported.
+    std::optional<FemOutcome>               reported_halved;
+    std::optional<Output::FemErrorEstimate> estimate;
+    unsigned int                            level  = 0;
+    Action                                  action = Action::solve_level;
+    double                                  spent  = 0.;
+  };
+} // namespace FloorBlock::Pipeline
