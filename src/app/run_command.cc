@@ -83,13 +83,13 @@ namespace FloorBlock::App
         target.reported_solve == Output::ReportedSolve::refined;
       std::cout << fmt::format(
                      "accuracy: target {:g} % {} after {} levels in {:.1f} "
-                     "s; reporting level {}{} ({} DoFs): {}\n",
+                     "s; reporting level {}{} ({} DoFs, FE degree {}): {}\n",
                      100. * target.relative_error,
                      target.met ? "met" : "NOT met", target.levels.size(),
                      target.wall_time, target.reported_level,
                      check ? "'s check" : "",
                      check ? reported.halved_n_dofs : reported.n_dofs,
-                     target.stop_reason);
+                     target.fe_degree, target.stop_reason);
     }
 
     /// The closing line: what was written, and in how long.

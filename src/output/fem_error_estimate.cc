@@ -23,6 +23,9 @@ namespace FloorBlock::Output
     json
     target_json(const AccuracyTarget &target)
     {
+      json other_degrees = json::array();
+      for (const AccuracyTarget &other : target.other_degrees)
+        other_degrees.push_back(target_json(other));
       json levels = json::array();
       for (const RefinementLevelRecord &level : target.levels)
         levels.push_back(
@@ -46,6 +49,12 @@ namespace FloorBlock::Output
               {"reported_level", target.reported_level},
               {"reported_solve", reported_solve_name(target.reported_solve)},
               {"stop_reason", target.stop_reason},
+              {"fe_degree", target.fe_degree},
+              {"confirming_level",
+               target.confirming_level ? json(*target.confirming_level) :
+                                         json(nullptr)},
+              {"fe_degree_choice", target.fe_degree_choice},
+              {"other_fe_degrees", other_degrees},
               {"wall_time_s", target.wall_time},
               {"levels", levels}};
     }
@@ -81,7 +90,8 @@ namespace FloorBlock::Output
               {"refined_value", error.refined_value},
               {"absolute_error", error.absolute_error},
               {"relative_error", optional_json(error.relative_error)},
-              {"oscillating", error.oscillating}};
+              {"oscillating", error.oscillating},
+              {"next_level_value", optional_json(error.next_level_value)}};
           }
         joints[name] = quantities;
       }

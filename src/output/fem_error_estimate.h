@@ -33,6 +33,13 @@ namespace FloorBlock::Output
      * least the range of the three values.
      */
     bool oscillating = false;
+    /**
+     * The figure on the adaptive level after the reported one, when the
+     * loop solved it to confirm the estimate
+     * (Pipeline::widen_to_contain()); absolute_error is at least the
+     * distance to it.
+     */
+    std::optional<double> next_level_value;
   };
 
   /** The estimated errors of one joint's figures. */
@@ -98,6 +105,18 @@ namespace FloorBlock::Output
     ReportedSolve reported_solve = ReportedSolve::coarse;
     std::string  stop_reason;        ///< why the loop stopped, in words
     unsigned int fe_degree = 1;      ///< FE degree of the loop's solves
+    /**
+     * The adaptive level solved after a checked pair met the target, to
+     * confirm it (Pipeline::widen_to_contain()); none if no pair met.
+     */
+    std::optional<unsigned int> confirming_level;
+    /** How the FE degree was chosen (Solver/FE degree), in words. */
+    std::string fe_degree_choice;
+    /**
+     * The other FE degree's loop when Solver/FE degree = auto raced both
+     * (Pipeline::next_race_turn()): its levels and why it stopped.
+     */
+    std::vector<AccuracyTarget> other_degrees;
     double       wall_time = 0.;     ///< s, all levels
     std::vector<RefinementLevelRecord> levels;
   };
@@ -128,9 +147,12 @@ namespace FloorBlock::Output
    * normal_force_N_per_m, contact_length_m, sigma_max_Pa,
    * sigma_max_averaged_Pa), value, coarse_value, refined_value,
    * absolute_error, relative_error (null where the refined value is 0)
-   * and oscillating; with an accuracy loop its "target": relative_error,
+   * oscillating and next_level_value (null unless a confirming level was
+   * solved); with an accuracy loop its "target": relative_error,
    * figures, met, reported_level, reported_solve ("coarse": the level,
-   * "refined": its check), stop_reason, wall_time_s and per level level, n_cells, n_dofs,
+   * "refined": its check), stop_reason, fe_degree, confirming_level,
+   * fe_degree_choice, other_fe_degrees (the same record, per degree),
+   * wall_time_s and per level level, n_cells, n_dofs,
    * wall_time_s, status, face (figures by fem.json key),
    * difference_indicator, halved_n_dofs, worst_target_relative_error and
    * halved_worst_target_relative_error (null where not estimated).

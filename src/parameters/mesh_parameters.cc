@@ -70,7 +70,9 @@ namespace FloorBlock::Parameters
     prm.declare_entry(
       "Maximum refinement levels", "6", Integer(1, 20),
       "Largest number of adaptive levels `run` solves after the first "
-      "mesh (1: one refined solve, only for the estimate). Units: none.");
+      "mesh (1: one refined solve, only for the estimate), not counting "
+      "the level that confirms a checked pair which met the target "
+      "(src/pipeline/target_loop.h). Units: none.");
     prm.declare_entry(
       "Refinement time budget", "1800", Double(1, 1e6),
       "`run` starts no further level once the wall time of its solves "

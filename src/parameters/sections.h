@@ -197,7 +197,10 @@ namespace FloorBlock::Parameters
   /** Subsection "Solver": the contact FEM's numerics. */
   struct SolverParameters
   {
+    /** The degree of a solve (1 when FE degree = auto). */
     unsigned int       fe_degree;
+    /** FE degree = auto: `run` races degrees 1 and 2 (degree_race.h). */
+    bool               choose_fe_degree;
     unsigned int       n_gravity_steps;
     bool               gravity_with_support_load;
     unsigned int       n_support_steps;

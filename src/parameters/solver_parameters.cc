@@ -11,9 +11,20 @@ namespace FloorBlock::Parameters
   SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("FE degree", "1", Integer(1, 2),
-                      "Polynomial degree of the FE_Q displacement space. "
-                      "Units: none.");
+    prm.declare_entry(
+      "FE degree", "auto", Selection("auto|1|2"),
+      "Polynomial degree of the FE_Q displacement space, or auto: `run` "
+      "picks the degree that meets Mesh/Target relative error sooner. It "
+      "solves degree 1's level 0 and its check; unless that pair meets the "
+      "target (then no degree-2 solve on the same mesh could be faster), "
+      "degree 2's loop joins, and the two loops take turns, the one with "
+      "less time spent solving next, until one meets the target "
+      "(src/pipeline/degree_race.h). Each loop keeps to Mesh/Refinement "
+      "time budget on its own, so a race can take twice the budget. "
+      "Degree 2's solves are under <output>/fe_degree_2/. Every other "
+      "command solves with degree 1 when auto (verify hertz: degree 1 at "
+      "32 cells per half-width meets its tolerances in less time than "
+      "degree 2 at 16). Units: none.");
     prm.declare_entry("Gravity steps", "1", Integer(1, 1000),
                       "Load increments of stage 1 (gravity). Units: none.");
     prm.declare_entry("Gravity with support load", "false",
@@ -101,7 +112,9 @@ namespace FloorBlock::Parameters
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    fe_degree       = prm.get_integer("FE degree");
+    const std::string degree = prm.get("FE degree");
+    choose_fe_degree = degree == "auto";
+    fe_degree        = choose_fe_degree ? 1 : std::stoul(degree);
     n_gravity_steps = prm.get_integer("Gravity steps");
     gravity_with_support_load = prm.get_bool("Gravity with support load");
     n_support_steps = prm.get_integer("Support load steps");

@@ -1,9 +1,13 @@
 #include <pipeline/accuracy_loop.h>
+#include <pipeline/degree_race.h>
 #include <pipeline/error_estimate.h>
 #include <pipeline/target_loop.h>
 #include <scene/rigid_inputs.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <iostream>
 #include <limits>
 #include <stdexcept>
 
@@ -37,6 +41,78 @@ namespace FloorBlock::Pipeline
         if (field.figure == figure)
           return field;
       throw std::logic_error("unknown target figure");
+    }
+
+    /**
+     * Solver/FE degree = auto: degree 1's and degree 2's loops take turns
+     * (next_race_turn()); the winner's solve is reported, the other
+     * loop's record is kept in the estimate (AccuracyTarget::other_degrees).
+     */
+    TargetedSolve
+    race_fe_degrees(const Parameters::ScenarioParameters &scene,
+                    const Output::ResultFolder           &folder)
+    {
+      Parameters::ScenarioParameters degree_2_scene = scene;
+      degree_2_scene.solver.fe_degree                = 2;
+      TargetLoop                degree_1(scene, folder, folder);
+      std::optional<TargetLoop> degree_2;
+      const auto                degree_2_state = [&degree_2]() {
+        return degree_2 ? degree_2->racer_state() : RacerState();
+      };
+      for (RaceTurn turn;
+           (turn = next_race_turn(degree_1.racer_state(), degree_2_state())) !=
+           RaceTurn::over;)
+        if (turn == RaceTurn::degree_1)
+          degree_1.step();
+        else
+          {
+            if (!degree_2)
+              {
+                std::cout << "accuracy: FE degree 1's level 0 did not meet "
+                             "the target; FE degree 2 joins (Solver/FE "
+                             "degree = auto), the loop with less time spent "
+                             "solving next"
+                          << std::endl;
+                degree_2.emplace(
+                  degree_2_scene,
+                  Output::ResultFolder(folder.path_of("fe_degree_2")),
+                  folder);
+              }
+            degree_2->step();
+          }
+      const RacerState   state_1 = degree_1.racer_state();
+      const RacerState   state_2 = degree_2_state();
+      const unsigned int winner  = race_winner(state_1, state_2);
+      TargetLoop        &won     = winner == 1 ? degree_1 : *degree_2;
+      TargetLoop *const  lost =
+        winner == 1 ? (degree_2 ? &*degree_2 : nullptr) : &degree_1;
+      std::string choice;
+      if (!degree_2)
+        choice = "auto: FE degree 1's level 0 met the target, which no "
+                 "degree-2 solve on the same mesh could do sooner";
+      else
+        {
+          if (won.met())
+            lost->abandon(fmt::format("FE degree {} met the target first",
+                                      winner));
+          choice = fmt::format(
+            "auto: FE degrees 1 and 2 took turns; degree {} {} after {:.1f} "
+            "s of its own solves (degree {}: {:.1f} s, {})",
+            winner,
+            won.met() ? "met the target first" :
+                        "has the smaller error estimate, neither met it",
+            won.time_spent(), winner == 1 ? 2 : 1, lost->time_spent(),
+            lost->record().stop_reason);
+        }
+      std::cout << "accuracy: " << choice << std::endl;
+      auto [outcome, estimate] = won.finish();
+      if (estimate && estimate->target)
+        {
+          estimate->target->fe_degree_choice = choice;
+          if (lost)
+            estimate->target->other_degrees.push_back(lost->record());
+        }
+      return {std::move(outcome), std::move(estimate)};
     }
   } // namespace
 
@@ -79,10 +155,15 @@ namespace FloorBlock::Pipeline
         solve.estimate = estimate_error(scene, solve.outcome, folder);
         return solve;
       }
+    if (scene.solver.choose_fe_degree)
+      return race_fe_degrees(scene, folder);
     TargetLoop loop(scene, folder, folder);
     while (!loop.finished())
       loop.step();
     auto [outcome, estimate] = loop.finish();
+    if (estimate && estimate->target)
+      estimate->target->fe_degree_choice =
+        fmt::format("Solver/FE degree = {}", scene.solver.fe_degree);
     return {std::move(outcome), std::move(estimate)};
   }
 } // namespace FloorBlock::Pipeline

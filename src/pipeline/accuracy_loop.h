@@ -63,6 +63,13 @@ namespace FloorBlock::Pipeline
    * (Output::AccuracyTarget, with the reported level and solve) and says
    * when the target was not met and why.
    *
+   * A pair that meets the target is confirmed by the next adaptive
+   * level, which must lie inside every target figure's bracket; else the
+   * estimate is widened to it and the loop refines on (TargetLoop,
+   * widen_to_contain()). With Solver/FE degree = auto, degree 2's loop
+   * joins when degree 1's level-0 pair misses, and the two take turns
+   * until one meets the target (next_race_turn()); its solve is reported.
+   *
    * With Solver/Error estimate = none: one solve, no estimate. The
    * rigid-block model (no mesh): one solve and one with twice the points
    * per joint (estimate_error()).

@@ -117,8 +117,12 @@ namespace FloorBlock::Pipeline
             const double estimate =
               factor * std::abs(coarse_value - fine_value) +
               (own_uncertainty ? reported_joints[k].*own_uncertainty : 0.);
-            errors.*error = {reported_joints[k].*figure, fine_value, estimate,
-                             relative_to(estimate, fine_value), coarse_value};
+            Output::FigureError &entry = errors.*error;
+            entry.value          = reported_joints[k].*figure;
+            entry.refined_value  = fine_value;
+            entry.absolute_error = estimate;
+            entry.relative_error = relative_to(estimate, fine_value);
+            entry.coarse_value   = coarse_value;
           }
       }
     return estimate;
@@ -160,6 +164,40 @@ namespace FloorBlock::Pipeline
     if (widened)
       estimate.method += "; where the check reversed the previous level's "
                          "change, at least the range of the three values";
+  }
+
+  void
+  widen_to_contain(Output::FemErrorEstimate &estimate,
+                   const FemOutcome         &next,
+                   const unsigned int        next_level)
+  {
+    if (!estimate.available || !next.converged)
+      return;
+    bool widened = false;
+    for (const Contact::JointReport &joint : final_joints(next))
+      {
+        const auto errors = estimate.joints.find(joint.name);
+        if (errors == estimate.joints.end())
+          continue;
+        for (const auto &[figure, error, own_uncertainty] : estimated_figures)
+          {
+            Output::FigureError &entry = errors->second.*error;
+            const double distance = std::abs(joint.*figure - entry.value);
+            entry.next_level_value = joint.*figure;
+            if (distance > entry.absolute_error)
+              {
+                entry.absolute_error = distance;
+                entry.relative_error =
+                  relative_to(distance, entry.refined_value);
+                widened = true;
+              }
+          }
+      }
+    if (widened)
+      estimate.method += fmt::format(
+        "; where level {} lies outside the bracket, at least the distance "
+        "to it",
+        next_level);
   }
 
   std::optional<Output::FemErrorEstimate>

@@ -4,6 +4,7 @@
 #include <output/result_folder.h>
 #include <parameters/scenario_parameters.h>
 #include <pipeline/adaptive_levels.h>
+#include <pipeline/degree_race.h>
 #include <pipeline/fem_pipeline.h>
 
 #include <optional>
@@ -52,6 +53,10 @@ namespace FloorBlock::Pipeline
     std::optional<double>
     reported_error() const;
 
+    /** What the degree race needs to know (joined = true). */
+    RacerState
+    racer_state() const;
+
     /** The loop's record so far (levels, reported solve, stop reason). */
     const Output::AccuracyTarget &
     record() const;
@@ -86,6 +91,14 @@ namespace FloorBlock::Pipeline
     /** After level `level` is settled: the next level, or a stop. */
     void
     plan_next_level();
+    /**
+     * The level just solved confirms a pair that met the target: true
+     * (and finished) if it lies inside every target figure's bracket;
+     * otherwise the estimate is widened to contain it and the loop goes
+     * on.
+     */
+    bool
+    confirm_met_target();
 
     const Parameters::ScenarioParameters scene;
     const Output::ResultFolder           base_folder;
@@ -102,5 +115,7 @@ namespace FloorBlock::Pipeline
     unsigned int                            level  = 0;
     Action                                  action = Action::solve_level;
     double                                  spent  = 0.;
+    /** A checked pair met the target; the next level is to confirm it. */
+    bool confirming = false;
   };
 } // namespace FloorBlock::Pipeline

@@ -203,6 +203,7 @@ TEST(RunCommand, AccuracyLoopThatRunsOutReportsTheLastCheck)
   const auto        result = run_floorblock(
     "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder) +
     " --set 'Solver/Error estimate=refined solve'"
+    " --set 'Solver/FE degree=1'"
     " --set 'Mesh/Maximum refinement levels=3'");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("NOT met"), std::string::npos) << result.output;

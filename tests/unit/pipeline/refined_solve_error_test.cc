@@ -150,3 +150,49 @@ TEST(WidenWhereOscillating, MonotoneOrNarrowRangeLeavesTheEstimate)
             monotone.joints.at("vertical 6").contact_length.absolute_error);
   EXPECT_EQ(narrow.method, monotone.method);
 }
+
+// The tool shall widen an estimate whose next adaptive level lies outside
+// its bracket to the distance to that level (the exact law with FE degree
+// 2 on the default scene, session 22: level 0 97.468 mm, its check 97.499
+// mm, level 1 98.04 mm; converged 98.42 mm), and record the level's value.
+TEST(WidenToContain, NextLevelOutsideTheBracketWidensIt)
+{
+  const auto level_0 = solve_with_face(0.097468, 2e-4, 2.7167e6);
+  const auto check   = solve_with_face(0.097499, 2e-4, 2.7170e6);
+  const auto level_1 = solve_with_face(0.09804, 2e-4, 2.7171e6);
+  auto estimate =
+    Pipeline::refined_solve_error(level_0, check, ReportedSolve::refined);
+  const double before =
+    estimate.joints.at("vertical 6").contact_length.absolute_error;
+  ASSERT_NEAR(before, 3. * 3.1e-5 + 2e-4, 1e-12); // 0.30 %: misses 98.42
+  Pipeline::widen_to_contain(estimate, level_1, 1);
+  const auto &length = estimate.joints.at("vertical 6").contact_length;
+  EXPECT_NEAR(length.absolute_error, 0.09804 - 0.097499, 1e-12);
+  EXPECT_NEAR(*length.relative_error, (0.09804 - 0.097499) / 0.097499, 1e-12);
+  ASSERT_TRUE(length.next_level_value.has_value());
+  EXPECT_DOUBLE_EQ(*length.next_level_value, 0.09804);
+  // The force's level 1 lies inside its bracket (3 x 300 N): unchanged.
+  const auto &force = estimate.joints.at("vertical 6").normal_force;
+  EXPECT_NEAR(force.absolute_error, 3. * 300., 1e-6);
+  EXPECT_NE(estimate.method.find("level 1 lies outside"), std::string::npos);
+}
+
+// The tool shall leave an estimate whose next level lies inside every
+// bracket as it is (the default compliant scene, session 22: level 0
+// 347.07 mm +- 1.18 mm, level 1 347.20 mm).
+TEST(WidenToContain, NextLevelInsideLeavesTheEstimate)
+{
+  const auto level_0 = solve_with_face(0.3470692, 5e-5, 2726259.);
+  const auto check   = solve_with_face(0.3472152, 5e-5, 2727968.);
+  const auto level_1 = solve_with_face(0.3472025, 5e-5, 2727540.);
+  auto estimate = Pipeline::refined_solve_error(level_0, check);
+  const auto before = estimate.joints.at("vertical 6");
+  Pipeline::widen_to_contain(estimate, level_1, 1);
+  const auto &after = estimate.joints.at("vertical 6");
+  EXPECT_DOUBLE_EQ(after.contact_length.absolute_error,
+                   before.contact_length.absolute_error);
+  EXPECT_DOUBLE_EQ(after.normal_force.absolute_error,
+                   before.normal_force.absolute_error);
+  EXPECT_DOUBLE_EQ(*after.contact_length.next_level_value, 0.3472025);
+  EXPECT_EQ(estimate.method.find("outside"), std::string::npos);
+}
