@@ -203,7 +203,7 @@ namespace
                          "FE degrees to run the ladders with, e.g. 1,2: one "
                          "set of ladders per degree (named uniform, "
                          "uniform_q2, ...) and the degrees compared at equal "
-                         "error (default: Solver/FE degree)")
+                         "error (default: Solver/FE degree, 1 when auto)")
       ->delimiter(',');
     converge->add_option("--target-error", options.target_error,
                          "Relative error at which uniform and adaptive costs "
