@@ -18,14 +18,29 @@ namespace
     return estimate;
   }
 
+  /** value, refined value, absolute and relative error; the rest default. */
+  Output::FigureError
+  figure_error(const double                value,
+               const double                refined_value,
+               const double                absolute_error,
+               const std::optional<double> relative_error)
+  {
+    Output::FigureError error;
+    error.value          = value;
+    error.refined_value  = refined_value;
+    error.absolute_error = absolute_error;
+    error.relative_error = relative_error;
+    return error;
+  }
+
   Output::JointErrors
   face_errors()
   {
     Output::JointErrors errors;
-    errors.normal_force       = {1e6, 1.001e6, 6e3, 0.006};
-    errors.contact_length     = {0.3, 0.301, 0.006, 0.02};
-    errors.sigma_max          = {1e7, 1.1e7, 6e6, 0.55};
-    errors.sigma_max_averaged = {1e7, 1.01e7, 6e5, 0.06};
+    errors.normal_force       = figure_error(1e6, 1.001e6, 6e3, 0.006);
+    errors.contact_length     = figure_error(0.3, 0.301, 0.006, 0.02);
+    errors.sigma_max          = figure_error(1e7, 1.1e7, 6e6, 0.55);
+    errors.sigma_max_averaged = figure_error(1e7, 1.01e7, 6e5, 0.06);
     return errors;
   }
 } // namespace
@@ -58,12 +73,12 @@ TEST(WorstTargetError, IsTheLargestAmongTheTargetFiguresOnly)
 TEST(WorstTargetError, ZeroRefinedValueCountsOnlyIfBothLevelsAgree)
 {
   auto errors           = face_errors();
-  errors.contact_length = {0., 0., 0., std::nullopt};
+  errors.contact_length = figure_error(0., 0., 0., std::nullopt);
   EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(
                      estimate_of_face(errors), "vertical 6",
                      {TargetFigure::contact_length}),
                    0.);
-  errors.contact_length = {0.01, 0., 0.06, std::nullopt};
+  errors.contact_length = figure_error(0.01, 0., 0.06, std::nullopt);
   EXPECT_TRUE(std::isinf(*Pipeline::worst_target_error(
     estimate_of_face(errors), "vertical 6", {TargetFigure::contact_length})));
 }
