@@ -128,40 +128,61 @@ namespace FloorBlock::Pipeline
     return estimate;
   }
 
+  namespace
+  {
+    /**
+     * Calls @p widening(entry, other_value) for every figure of every
+     * joint that @p estimate and the converged solve @p other share; it
+     * returns the error the entry should have at least. Raises the
+     * entry's error to it and returns whether any was raised.
+     */
+    template <typename Widening>
+    bool
+    widen_against(Output::FemErrorEstimate &estimate,
+                  const FemOutcome         &other,
+                  const Widening           &widening)
+    {
+      if (!estimate.available || !other.converged)
+        return false;
+      bool widened = false;
+      for (const Contact::JointReport &joint : final_joints(other))
+        {
+          const auto errors = estimate.joints.find(joint.name);
+          if (errors == estimate.joints.end())
+            continue;
+          for (const auto &[figure, error, own_uncertainty] : estimated_figures)
+            {
+              Output::FigureError &entry = errors->second.*error;
+              const double least = widening(entry, joint.*figure);
+              if (least > entry.absolute_error)
+                {
+                  entry.absolute_error = least;
+                  entry.relative_error = relative_to(least, entry.refined_value);
+                  widened              = true;
+                }
+            }
+        }
+      return widened;
+    }
+  } // namespace
+
   void
   widen_where_oscillating(Output::FemErrorEstimate &estimate,
                           const FemOutcome         &previous)
   {
-    if (!estimate.available || !previous.converged)
-      return;
-    bool widened = false;
-    for (const Contact::JointReport &joint : final_joints(previous))
-      {
-        const auto errors = estimate.joints.find(joint.name);
-        if (errors == estimate.joints.end())
-          continue;
-        for (const auto &[figure, error, own_uncertainty] : estimated_figures)
-          {
-            Output::FigureError &entry = errors->second.*error;
-            const double step  = entry.coarse_value - joint.*figure;
-            const double check = entry.refined_value - entry.coarse_value;
-            if (!(step * check < 0.))
-              continue; // monotone (or a zero step): the pair's estimate holds
-            entry.oscillating = true;
-            const double range =
-              std::max({joint.*figure, entry.coarse_value,
-                        entry.refined_value}) -
-              std::min({joint.*figure, entry.coarse_value,
-                        entry.refined_value});
-            if (range > entry.absolute_error)
-              {
-                entry.absolute_error = range;
-                entry.relative_error = relative_to(range, entry.refined_value);
-                widened              = true;
-              }
-          }
-      }
-    if (widened)
+    const auto range_if_reversed = [](Output::FigureError &entry,
+                                      const double         previous_value) {
+      const double step  = entry.coarse_value - previous_value;
+      const double check = entry.refined_value - entry.coarse_value;
+      if (!(step * check < 0.))
+        return 0.; // monotone (or a zero step): the pair's estimate holds
+      entry.oscillating = true;
+      return std::max({previous_value, entry.coarse_value,
+                       entry.refined_value}) -
+             std::min({previous_value, entry.coarse_value,
+                       entry.refined_value});
+    };
+    if (widen_against(estimate, previous, range_if_reversed))
       estimate.method += "; where the check reversed the previous level's "
                          "change, at least the range of the three values";
   }
@@ -171,29 +192,12 @@ namespace FloorBlock::Pipeline
                    const FemOutcome         &next,
                    const unsigned int        next_level)
   {
-    if (!estimate.available || !next.converged)
-      return;
-    bool widened = false;
-    for (const Contact::JointReport &joint : final_joints(next))
-      {
-        const auto errors = estimate.joints.find(joint.name);
-        if (errors == estimate.joints.end())
-          continue;
-        for (const auto &[figure, error, own_uncertainty] : estimated_figures)
-          {
-            Output::FigureError &entry = errors->second.*error;
-            const double distance = std::abs(joint.*figure - entry.value);
-            entry.next_level_value = joint.*figure;
-            if (distance > entry.absolute_error)
-              {
-                entry.absolute_error = distance;
-                entry.relative_error =
-                  relative_to(distance, entry.refined_value);
-                widened = true;
-              }
-          }
-      }
-    if (widened)
+    const auto distance = [](Output::FigureError &entry,
+                             const double         next_value) {
+      entry.next_level_value = next_value;
+      return std::abs(next_value - entry.value);
+    };
+    if (widen_against(estimate, next, distance))
       estimate.method += fmt::format(
         "; where level {} lies outside the bracket, at least the distance "
         "to it",
