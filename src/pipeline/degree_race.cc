@@ -21,6 +21,10 @@ namespace FloorBlock::Pipeline
       return RaceTurn::degree_2;
     if (degree_2.finished)
       return RaceTurn::degree_1;
+    if (degree_1.confirming)
+      return RaceTurn::degree_1;
+    if (degree_2.confirming)
+      return RaceTurn::degree_2;
     return degree_2.time_spent < degree_1.time_spent ? RaceTurn::degree_2 :
                                                        RaceTurn::degree_1;
   }

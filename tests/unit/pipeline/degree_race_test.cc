@@ -65,6 +65,16 @@ TEST(DegreeRace, LoopWithLessTimeSpentStepsNext)
             RaceTurn::over);
 }
 
+// The tool shall let a loop whose pair met the target confirm it before
+// the other loop steps again, whatever their times.
+TEST(DegreeRace, ConfirmationComesFirst)
+{
+  RacerState confirming = running(700.);
+  confirming.confirming = true;
+  EXPECT_EQ(next_race_turn(confirming, running(500.)), RaceTurn::degree_1);
+  EXPECT_EQ(next_race_turn(running(300.), confirming), RaceTurn::degree_2);
+}
+
 // The tool shall report the degree that met the target, else the one with
 // the smaller estimate (none counts as unbounded, a tie goes to degree 1).
 TEST(DegreeRace, WinnerMetTheTargetOrHasTheSmallerEstimate)
