@@ -175,6 +175,7 @@ namespace FloorBlock::Pipeline
       solve_level();
     else if (action == Action::check_level)
       check_level();
+    target.wall_time = spent; // also for a loop that is abandoned
   }
 
   void
