@@ -28,7 +28,8 @@ namespace FloorBlock::Analytic
       for (const RadialSample &s : samples)
         scale = std::max(scale, s.distance);
       const std::size_t                n = lambdas.size();
-      std::vector<std::vector<double>> normal(n, std::vector<double>(n + 1, 0.));
+      std::vector<std::vector<double>> normal(n,
+                                              std::vector<double>(n + 1, 0.));
       for (const RadialSample &s : samples)
         {
           std::vector<double> row(n);
@@ -42,9 +43,9 @@ namespace FloorBlock::Analytic
             }
         }
       AsymptoticFit fit;
-      fit.lambda1   = lambdas[0];
-      fit.lambda2   = n > 1 ? lambdas[1] : 0.;
-      fit.n_samples = samples.size();
+      fit.lambda1             = lambdas[0];
+      fit.lambda2             = n > 1 ? lambdas[1] : 0.;
+      fit.n_samples           = samples.size();
       double largest_diagonal = 0.;
       for (std::size_t j = 0; j < n; ++j)
         largest_diagonal = std::max(largest_diagonal, std::abs(normal[j][j]));
@@ -56,13 +57,15 @@ namespace FloorBlock::Analytic
               pivot = row;
           if (!(std::abs(normal[pivot][column]) > 1e-14 * largest_diagonal))
             {
-              fit.rms_relative_residual = std::numeric_limits<double>::infinity();
+              fit.rms_relative_residual =
+                std::numeric_limits<double>::infinity();
               return fit;
             }
           std::swap(normal[pivot], normal[column]);
           for (std::size_t row = column + 1; row < n; ++row)
             {
-              const double factor = normal[row][column] / normal[column][column];
+              const double factor =
+                normal[row][column] / normal[column][column];
               for (std::size_t k = column; k <= n; ++k)
                 normal[row][k] -= factor * normal[column][k];
             }
@@ -77,8 +80,8 @@ namespace FloorBlock::Analytic
         }
       for (std::size_t j = 0; j < n; ++j)
         k[j] /= std::pow(scale, lambdas[j] - 1.); // back to metres
-      fit.k1 = k[0];
-      fit.k2 = n > 1 ? k[1] : 0.;
+      fit.k1         = k[0];
+      fit.k2         = n > 1 ? k[1] : 0.;
       double squares = 0.;
       for (const RadialSample &s : samples)
         {
@@ -136,12 +139,13 @@ namespace FloorBlock::Analytic
     if (!(sxx > 0.))
       return fit;
     const double slope = sxy / sxx;
-    fit.lambda1 = 1. + slope;
-    fit.k1      = std::exp(mean_y - slope * mean_x);
-    double squares = 0.;
+    fit.lambda1        = 1. + slope;
+    fit.k1             = std::exp(mean_y - slope * mean_x);
+    double squares     = 0.;
     for (const RadialSample &s : samples)
-      squares += std::pow(
-        (fit.k1 * std::pow(s.distance, slope) - s.traction) / s.traction, 2);
+      squares += std::pow((fit.k1 * std::pow(s.distance, slope) - s.traction) /
+                            s.traction,
+                          2);
     fit.rms_relative_residual = std::sqrt(squares / samples.size());
     return fit;
   }
@@ -168,7 +172,7 @@ namespace FloorBlock::Analytic
           best = trial;
       }
     // Golden section on the bracket around the best scan point.
-    double low = best.lambda1 - step, high = best.lambda1 + step;
+    double       low = best.lambda1 - step, high = best.lambda1 + step;
     const double ratio = (std::sqrt(5.) - 1.) / 2.;
     for (int iteration = 0; iteration < 60; ++iteration)
       {
@@ -180,8 +184,7 @@ namespace FloorBlock::Analytic
         else
           low = left;
       }
-    const AsymptoticFit refined =
-      project(samples, 0.5 * (low + high), further);
+    const AsymptoticFit refined = project(samples, 0.5 * (low + high), further);
     return refined.rms_relative_residual <= best.rms_relative_residual ?
              refined :
              best;

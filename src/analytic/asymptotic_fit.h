@@ -19,8 +19,8 @@ namespace FloorBlock::Analytic
     double k2      = 0.; ///< Pa m^(1 - lambda2); 0 for the one-term fit
     double lambda2 = 0.; ///< given; 0 for the one-term fit
     /** Root-mean-square of the relative residuals (p_fit - p) / p. */
-    double rms_relative_residual = 0.;
-    unsigned int n_samples       = 0;
+    double       rms_relative_residual = 0.;
+    unsigned int n_samples             = 0;
   };
 
   /**

@@ -32,9 +32,8 @@ namespace FloorBlock::Analytic
                               std::isfinite(chain.support_load[block]) &&
                               chain.weight[block] >= 0. &&
                               chain.support_load[block] >= 0.;
-        const bool inclination_ok =
-          std::isfinite(chain.inclination[block]) &&
-          std::abs(chain.inclination[block]) < M_PI_2;
+        const bool inclination_ok = std::isfinite(chain.inclination[block]) &&
+                                    std::abs(chain.inclination[block]) < M_PI_2;
         if (!loads_ok || !inclination_ok)
           return Status::invalid_input;
       }

@@ -20,8 +20,7 @@ namespace FloorBlock::Analytic
     {
       if (forces.status != Status::ok)
         return;
-      for (std::size_t block = 0; block < forces.lateral_force.size();
-           ++block)
+      for (std::size_t block = 0; block < forces.lateral_force.size(); ++block)
         {
           const bool opens = forces.lateral_force[block] < 0.;
           const bool lifts = forces.normal_force[block] < 0.;

@@ -19,7 +19,7 @@ namespace FloorBlock::Analytic
     for (unsigned int k = 0; k < n; ++k)
       {
         unsigned int pivot_row = k, pivot_column = k;
-        double       largest   = -1.;
+        double       largest = -1.;
         for (unsigned int i = k; i < n; ++i)
           for (unsigned int j = k; j < n; ++j)
             if (std::abs(matrix(i, j)) > largest)
@@ -60,8 +60,8 @@ namespace FloorBlock::Analytic
             Complex sum = 0.;
             for (unsigned int j = k + 1; j < n; ++j)
               sum += matrix(k, j) * permuted[j];
-            permuted[k] = std::abs(matrix(k, k)) > 0. ? -sum / matrix(k, k) :
-                                                        Complex(0.);
+            permuted[k] =
+              std::abs(matrix(k, k)) > 0. ? -sum / matrix(k, k) : Complex(0.);
           }
         null_vector->assign(n, 0.);
         for (unsigned int k = 0; k < n; ++k)
@@ -96,11 +96,11 @@ namespace FloorBlock::Analytic
                          const std::vector<unsigned int> &kept_columns,
                          const double                     relative_pivot)
   {
-    const unsigned int n_rows    = full.n;
-    const unsigned int n_columns = kept_columns.size();
+    const unsigned int                n_rows    = full.n;
+    const unsigned int                n_columns = kept_columns.size();
     std::vector<std::vector<Complex>> a(n_rows,
                                         std::vector<Complex>(n_columns));
-    double largest_entry = 0.;
+    double                            largest_entry = 0.;
     for (unsigned int i = 0; i < n_rows; ++i)
       for (unsigned int j = 0; j < n_columns; ++j)
         {
@@ -114,7 +114,7 @@ namespace FloorBlock::Analytic
     for (; rank < n_columns && rank < n_rows; ++rank)
       {
         unsigned int pivot_row = rank, pivot_column = rank;
-        double       largest   = -1.;
+        double       largest = -1.;
         for (unsigned int i = rank; i < n_rows; ++i)
           for (unsigned int j = rank; j < n_columns; ++j)
             if (std::abs(a[i][j]) > largest)
@@ -153,7 +153,7 @@ namespace FloorBlock::Analytic
     for (unsigned int k = 0; k < n_columns; ++k)
       {
         vector[kept_columns[column[k]]] = permuted[k];
-        size = std::max(size, std::abs(permuted[k]));
+        size                            = std::max(size, std::abs(permuted[k]));
       }
     for (Complex &value : vector)
       value /= size;

@@ -26,8 +26,7 @@ namespace FloorBlock::Analytic
     bisect(const std::function<Complex(Complex)> &f, double a, double b)
     {
       double fa = f(a).real();
-      for (int iteration = 0; iteration < 200 && b - a > 1e-15 * b;
-           ++iteration)
+      for (int iteration = 0; iteration < 200 && b - a > 1e-15 * b; ++iteration)
         {
           const double middle = 0.5 * (a + b);
           const double fm     = f(middle).real();
@@ -78,15 +77,15 @@ namespace FloorBlock::Analytic
 
   std::vector<std::complex<double>>
   complex_roots(const std::function<Complex(Complex)> &f,
-                const RootSearch                       &search)
+                const RootSearch                      &search)
   {
     std::vector<Complex> roots;
-    const double low = search.smallest_real_part;
-    const double high = search.largest_real_part;
+    const double         low  = search.smallest_real_part;
+    const double         high = search.largest_real_part;
 
-    const unsigned int n = search.n_real_samples;
-    double previous_x = low + (high - low) / n;
-    double previous   = f(previous_x).real();
+    const unsigned int n          = search.n_real_samples;
+    double             previous_x = low + (high - low) / n;
+    double             previous   = f(previous_x).real();
     for (unsigned int k = 2; k <= n; ++k)
       {
         const double x     = low + (high - low) * k / n;
@@ -94,7 +93,8 @@ namespace FloorBlock::Analytic
         if (value == 0.)
           add_distinct(roots, x, search.same_root_distance);
         else if ((value < 0.) != (previous < 0.) && previous != 0.)
-          add_distinct(roots, bisect(f, previous_x, x),
+          add_distinct(roots,
+                       bisect(f, previous_x, x),
                        search.same_root_distance);
         previous_x = x;
         previous   = value;
@@ -119,10 +119,12 @@ namespace FloorBlock::Analytic
             add_distinct(roots, kept, search.same_root_distance);
         }
 
-    std::sort(roots.begin(), roots.end(), [](const Complex &a,
-                                             const Complex &b) {
-      return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
-    });
+    std::sort(roots.begin(),
+              roots.end(),
+              [](const Complex &a, const Complex &b) {
+                return a.real() != b.real() ? a.real() < b.real() :
+                                              a.imag() < b.imag();
+              });
     return roots;
   }
 } // namespace FloorBlock::Analytic

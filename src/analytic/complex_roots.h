@@ -9,9 +9,9 @@ namespace FloorBlock::Analytic
   /** @brief Where complex_roots() looks, and how closely. */
   struct RootSearch
   {
-    double smallest_real_part = 1e-3; ///< exclusive lower end of Re z
-    double largest_real_part  = 2.;   ///< inclusive upper end of Re z
-    double largest_imaginary_part = 1.; ///< roots with 0 <= Im z <= this
+    double smallest_real_part     = 1e-3; ///< exclusive lower end of Re z
+    double largest_real_part      = 2.;   ///< inclusive upper end of Re z
+    double largest_imaginary_part = 1.;   ///< roots with 0 <= Im z <= this
     /** Real-axis samples for sign changes (the function is real there). */
     unsigned int n_real_samples = 4000;
     /** Secant starts per unit of Re z and of Im z off the real axis. */

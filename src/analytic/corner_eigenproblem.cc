@@ -12,13 +12,16 @@ namespace FloorBlock::Analytic
 {
   namespace
   {
-    using Complex = std::complex<double>;
+    using Complex       = std::complex<double>;
     constexpr double pi = 3.14159265358979323846;
 
     /** Puts @p row into matrix row @p i at column block @p block. */
     void
-    put(ComplexMatrix &matrix, const unsigned int i, const unsigned int block,
-        const WilliamsRow &row, const Complex factor = 1.)
+    put(ComplexMatrix     &matrix,
+        const unsigned int i,
+        const unsigned int block,
+        const WilliamsRow &row,
+        const Complex      factor = 1.)
     {
       for (unsigned int j = 0; j < 4; ++j)
         matrix(i, 4 * block + j) += factor * row[j];
@@ -26,8 +29,10 @@ namespace FloorBlock::Analytic
 
     /** The two conditions of a face of wedge @p block at angle theta. */
     void
-    add_face(ComplexMatrix &matrix, const unsigned int first_row,
-             const unsigned int block, const FaceCondition condition,
+    add_face(ComplexMatrix      &matrix,
+             const unsigned int  first_row,
+             const unsigned int  block,
+             const FaceCondition condition,
              const WilliamsRows &rows)
     {
       switch (condition)
@@ -51,9 +56,15 @@ namespace FloorBlock::Analytic
     wedge_matrix(const SingleWedge &wedge, const Complex lambda)
     {
       ComplexMatrix matrix(4);
-      add_face(matrix, 0, 0, wedge.first_face,
+      add_face(matrix,
+               0,
+               0,
+               wedge.first_face,
                williams_rows(lambda, 0., wedge.material));
-      add_face(matrix, 2, 0, wedge.second_face,
+      add_face(matrix,
+               2,
+               0,
+               wedge.second_face,
                williams_rows(lambda, wedge.angle, wedge.material));
       return matrix;
     }
@@ -62,14 +73,18 @@ namespace FloorBlock::Analytic
     pair_matrix(const WedgePair &pair, const Complex lambda)
     {
       ComplexMatrix matrix(8);
-      add_face(matrix, 0, 0, FaceCondition::traction_free,
+      add_face(matrix,
+               0,
+               0,
+               FaceCondition::traction_free,
                williams_rows(lambda, pair.first_angle, pair.first_material));
-      add_face(matrix, 2, 1, FaceCondition::traction_free,
-               williams_rows(lambda, -pair.second_angle,
-                             pair.second_material));
+      add_face(matrix,
+               2,
+               1,
+               FaceCondition::traction_free,
+               williams_rows(lambda, -pair.second_angle, pair.second_material));
       const WilliamsRows one = williams_rows(lambda, 0., pair.first_material);
-      const WilliamsRows two =
-        williams_rows(lambda, 0., pair.second_material);
+      const WilliamsRows two = williams_rows(lambda, 0., pair.second_material);
       // Normal traction and normal displacement are continuous in every
       // state: the wedges stay in contact.
       put(matrix, 4, 0, one.normal_stress);
@@ -94,7 +109,10 @@ namespace FloorBlock::Analytic
             // sigma_rt = s mu sigma_tt with sigma_rt = -lambda F' and
             // sigma_tt = lambda (lambda + 1) F: F' + s mu (lambda + 1) F = 0.
             put(matrix, 7, 0, one.shear_stress);
-            put(matrix, 7, 0, one.normal_stress,
+            put(matrix,
+                7,
+                0,
+                one.normal_stress,
                 double(pair.slip_sign) * pair.friction_coefficient *
                   (lambda + 1.));
             break;
@@ -109,10 +127,10 @@ namespace FloorBlock::Analytic
      * (a rigid motion).
      */
     double
-    stress_size(const std::vector<Complex>                     &coefficients,
-                const Complex                                   lambda,
-                const std::vector<std::pair<double, double>>   &ranges,
-                const std::vector<WedgeMaterial>               &materials)
+    stress_size(const std::vector<Complex>                   &coefficients,
+                const Complex                                 lambda,
+                const std::vector<std::pair<double, double>> &ranges,
+                const std::vector<WedgeMaterial>             &materials)
     {
       double largest = 0.;
       for (unsigned int block = 0; block < ranges.size(); ++block)
@@ -121,9 +139,8 @@ namespace FloorBlock::Analytic
             const double theta =
               ranges[block].first +
               (ranges[block].second - ranges[block].first) * k / 8.;
-            const auto [f, derivative] =
-              airy_angular(coefficients, block, lambda, theta,
-                           materials[block]);
+            const auto [f, derivative] = airy_angular(
+              coefficients, block, lambda, theta, materials[block]);
             largest = std::max({largest,
                                 std::abs(lambda * (lambda + 1.) * f),
                                 std::abs(lambda * derivative)});
@@ -146,11 +163,13 @@ namespace FloorBlock::Analytic
     }
 
     void
-    check_angle(const double angle, const std::string &which,
-                const double largest)
+    check_angle(const double       angle,
+                const std::string &which,
+                const double       largest)
     {
       if (!(angle > 0. && angle <= largest))
-        throw InputError(which, std::to_string(angle),
+        throw InputError(which,
+                         std::to_string(angle),
                          "0 < angle <= " + std::to_string(largest) + " rad");
     }
 
@@ -204,15 +223,14 @@ namespace FloorBlock::Analytic
      */
     template <typename MatrixOf>
     std::vector<CornerMode>
-    modes_of(const MatrixOf                                 &matrix_of,
-             const RootSearch                               &search,
-             const std::vector<std::pair<double, double>>   &ranges,
-             const std::vector<WedgeMaterial>               &materials)
+    modes_of(const MatrixOf                               &matrix_of,
+             const RootSearch                             &search,
+             const std::vector<std::pair<double, double>> &ranges,
+             const std::vector<WedgeMaterial>             &materials)
     {
       std::vector<CornerMode> modes;
       for (const Complex lambda : complex_roots(
-             [&](const Complex z) { return eliminate(matrix_of(z)); },
-             search))
+             [&](const Complex z) { return eliminate(matrix_of(z)); }, search))
         {
           if (hadamard_ratio(matrix_of(lambda)) > root_hadamard_ratio)
             continue;
@@ -243,7 +261,8 @@ namespace FloorBlock::Analytic
               mode.traction_ratio =
                 traction_ratio(mode.coefficients, 1., materials[0]);
               modes.push_back(mode);
-              std::sort(modes.begin(), modes.end(),
+              std::sort(modes.begin(),
+                        modes.end(),
                         [](const CornerMode &a, const CornerMode &b) {
                           return a.exponent.real() < b.exponent.real();
                         });
@@ -260,14 +279,18 @@ namespace FloorBlock::Analytic
       double       even = 0., odd = 0., size = 0.;
       for (const double t : {0.13, 0.37, 0.71})
         {
-          const Complex plus =
-            airy_angular(mode.coefficients, 0, mode.exponent,
-                         middle + t * middle, wedge.material)
-              .first;
-          const Complex minus =
-            airy_angular(mode.coefficients, 0, mode.exponent,
-                         middle - t * middle, wedge.material)
-              .first;
+          const Complex plus = airy_angular(mode.coefficients,
+                                            0,
+                                            mode.exponent,
+                                            middle + t * middle,
+                                            wedge.material)
+                                 .first;
+          const Complex minus = airy_angular(mode.coefficients,
+                                             0,
+                                             mode.exponent,
+                                             middle - t * middle,
+                                             wedge.material)
+                                  .first;
           even = std::max(even, std::abs(plus - minus));
           odd  = std::max(odd, std::abs(plus + minus));
           size = std::max({size, std::abs(plus), std::abs(minus)});
@@ -312,13 +335,16 @@ namespace FloorBlock::Analytic
   {
     check_angle(wedge.angle, "wedge angle", 2. * pi);
     check_material(wedge.material, "wedge");
-    std::vector<CornerMode> modes = modes_of(
-      [&](const Complex lambda) { return wedge_matrix(wedge, lambda); },
-      search, {{0., wedge.angle}}, {wedge.material});
+    std::vector<CornerMode> modes =
+      modes_of([&](
+                 const Complex lambda) { return wedge_matrix(wedge, lambda); },
+               search,
+               {{0., wedge.angle}},
+               {wedge.material});
     const bool symmetric_problem = wedge.first_face == wedge.second_face;
     for (CornerMode &mode : modes)
-      mode.symmetry = symmetric_problem ? symmetry_of(mode, wedge) :
-                                          ModeSymmetry::mixed;
+      mode.symmetry =
+        symmetric_problem ? symmetry_of(mode, wedge) : ModeSymmetry::mixed;
     return modes;
   }
 
@@ -340,8 +366,7 @@ namespace FloorBlock::Analytic
                        std::to_string(pair.friction_coefficient),
                        "a finite value >= 0");
     if (pair.slip_sign != 1 && pair.slip_sign != -1)
-      throw InputError("slip sign", std::to_string(pair.slip_sign),
-                       "+1 or -1");
+      throw InputError("slip sign", std::to_string(pair.slip_sign), "+1 or -1");
     return modes_of(
       [&](const Complex lambda) { return pair_matrix(pair, lambda); },
       search,

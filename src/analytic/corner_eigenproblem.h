@@ -99,7 +99,7 @@ namespace FloorBlock::Analytic
     std::complex<double> exponent; ///< lambda (Im >= 0)
     /** A, B, C, D of wedge 1, then of wedge 2 (pair), max |.| = 1. */
     std::vector<std::complex<double>> coefficients;
-    ModeSymmetry symmetry = ModeSymmetry::mixed;
+    ModeSymmetry                      symmetry = ModeSymmetry::mixed;
     /**
      * sigma_rt / sigma_tt on the interface theta = 0 (pair), or on the
      * face theta = 0 (single wedge; NaN where sigma_tt vanishes there):

@@ -1,5 +1,4 @@
 #include <analytic/floor_shape.h>
-
 #include <common/input_error.h>
 
 #include <cmath>
@@ -23,7 +22,8 @@ namespace FloorBlock::Analytic
     finite_or_throw(const double value, const std::string &name)
     {
       if (!std::isfinite(value))
-        throw InputError(name, std::to_string(value),
+        throw InputError(name,
+                         std::to_string(value),
                          "a finite value (inputs too large)");
       return value;
     }

@@ -21,8 +21,7 @@ namespace FloorBlock::Analytic
     contact.peak_pressure = 2. * line_load / (M_PI * contact.half_width);
     // Positive finite inputs near the limits of double can still
     // overflow or underflow the products above.
-    if (!is_positive(contact.half_width) ||
-        !is_positive(contact.peak_pressure))
+    if (!is_positive(contact.half_width) || !is_positive(contact.peak_pressure))
       return HertzLineContact{Status::invalid_input, 0., 0.};
     return contact;
   }

@@ -41,11 +41,11 @@ namespace FloorBlock::Analytic
       {
         Internal::FrameForce incoming; // block 1 has a free away side
         if (block > 0)
-          incoming = Internal::force_from_away_neighbour(
-            chain,
-            block,
-            forces.lateral_force[block - 1],
-            forces.joint_shear[block - 1]);
+          incoming =
+            Internal::force_from_away_neighbour(chain,
+                                                block,
+                                                forces.lateral_force[block - 1],
+                                                forces.joint_shear[block - 1]);
         const double alpha = chain.inclination[block];
         const double vertical_load =
           chain.weight[block] + chain.support_load[block];
@@ -69,8 +69,7 @@ namespace FloorBlock::Analytic
     if (forces.status != Status::ok)
       return forces;
     const std::size_t slipping_block =
-      first_block_exceeding_friction(forces,
-                                     std::tan(chain.vertical_friction));
+      first_block_exceeding_friction(forces, std::tan(chain.vertical_friction));
     if (slipping_block != 0)
       {
         forces.status        = Status::vertical_friction_exceeded;

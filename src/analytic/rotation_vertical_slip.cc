@@ -42,19 +42,18 @@ namespace FloorBlock::Analytic
       {
         Internal::FrameForce incoming;
         if (block > 0)
-          incoming = Internal::force_from_away_neighbour(
-            chain,
-            block,
-            forces.lateral_force[block - 1],
-            forces.joint_shear[block - 1]);
+          incoming =
+            Internal::force_from_away_neighbour(chain,
+                                                block,
+                                                forces.lateral_force[block - 1],
+                                                forces.joint_shear[block - 1]);
         const double alpha = chain.inclination[block];
         const double vertical_load =
           chain.weight[block] + chain.support_load[block];
 
         const double lateral_force =
           (-incoming.along - tan_bedding * incoming.normal +
-           vertical_load *
-             (std::sin(alpha) + tan_bedding * std::cos(alpha))) /
+           vertical_load * (std::sin(alpha) + tan_bedding * std::cos(alpha))) /
           locking;
         const double normal_force = vertical_load * std::cos(alpha) +
                                     lateral_force * tan_vertical -

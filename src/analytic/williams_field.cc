@@ -12,15 +12,17 @@ namespace FloorBlock::Analytic
     const Complex p = lambda + 1., m = lambda - 1.;
     const Complex cp = std::cos(p * theta), sp = std::sin(p * theta);
     const Complex cm = std::cos(m * theta), sm = std::sin(m * theta);
-    const double  kappa   = material.kolosov();
-    const double  two_g   = 2. * material.shear_modulus;
+    const double  kappa = material.kolosov();
+    const double  two_g = 2. * material.shear_modulus;
     WilliamsRows  rows;
-    rows.normal_stress = {cp, sp, cm, sm};
-    rows.shear_stress  = {-p * sp, p * cp, -m * sm, m * cm};
-    rows.radial_displacement = {-p * cp / two_g, -p * sp / two_g,
-                                (kappa - lambda) * cm / two_g,
-                                (kappa - lambda) * sm / two_g};
-    rows.angular_displacement = {p * sp / two_g, -p * cp / two_g,
+    rows.normal_stress        = {cp, sp, cm, sm};
+    rows.shear_stress         = {-p * sp, p * cp, -m * sm, m * cm};
+    rows.radial_displacement  = {-p * cp / two_g,
+                                 -p * sp / two_g,
+                                 (kappa - lambda) * cm / two_g,
+                                 (kappa - lambda) * sm / two_g};
+    rows.angular_displacement = {p * sp / two_g,
+                                 -p * cp / two_g,
                                  (kappa + lambda) * sm / two_g,
                                  -(kappa + lambda) * cm / two_g};
     return rows;

@@ -33,10 +33,10 @@ namespace FloorBlock::Analytic
    * (M. L. Williams, J. Appl. Mech. 19, 1952), radial powers dropped:
    *   sigma_tt = lambda (lambda + 1) F r^(lambda - 1),
    *   sigma_rt = -lambda F' r^(lambda - 1),
-   *   2G u_r = r^lambda [-(lambda + 1)(A c+ + B s+) + (kappa - lambda)(C c- + D s-)],
-   *   2G u_t = r^lambda [(lambda + 1)(A s+ - B c+) + (kappa + lambda)(C s- - D c-)],
-   * c+- = cos((lambda +- 1) theta), s+- = sin(...), kappa = 3 - 4 nu (plane
-   * strain; the r^(lambda+1) terms of Michell's solution, J. R. Barber,
+   *   2G u_r = r^lambda [-(lambda + 1)(A c+ + B s+) + (kappa - lambda)(C c- + D
+   * s-)], 2G u_t = r^lambda [(lambda + 1)(A s+ - B c+) + (kappa + lambda)(C s-
+   * - D c-)], c+- = cos((lambda +- 1) theta), s+- = sin(...), kappa = 3 - 4 nu
+   * (plane strain; the r^(lambda+1) terms of Michell's solution, J. R. Barber,
    * Elasticity). The stress rows hold F and F' (the stresses divided by
    * lambda (lambda + 1) and -lambda), so that no row vanishes with lambda;
    * the displacement rows include 1/(2G). Unit-tested against Hooke's law.

@@ -24,7 +24,7 @@ namespace FloorBlock::App
   }
 
   std::string
-  output_directory(const CommandOptions &                options,
+  output_directory(const CommandOptions                 &options,
                    const Parameters::ScenarioParameters &scene)
   {
     if (!options.output_directory.empty())

@@ -15,26 +15,31 @@ namespace FloorBlock::App
   struct CommandOptions
   {
     std::string              scene_path = "params/default.prm";
-    std::vector<std::string> overrides;        ///< "Subsection/Entry=value"
-    std::string              output_directory; ///< empty: results/<scene>/
+    std::vector<std::string> overrides;         ///< "Subsection/Entry=value"
+    std::string              output_directory;  ///< empty: results/<scene>/
     bool                     print_ids = false; ///< mesh: print the id scheme
     bool                     with_fem  = false; ///< sweep: also run the FEM
     std::string              verification_case; ///< verify: e.g. "hertz"
-    std::string              figure;         ///< sweep: only this figure
+    std::string              figure;            ///< sweep: only this figure
     unsigned int             case_limit = 0; ///< sweep --fem: at most this many
-    /** converge: ladder length; 0 = not given (default_levels, time-budgeted). */
-    unsigned int             n_levels   = 0;
-    std::string              refinement_mode = "both"; ///< converge: uniform|adaptive|remesh|both|all
-    double bulk_fraction = 0.1;  ///< converge: cells refined by the Kelly indicator
-    double coarsen_fraction = Convergence::default_coarsen_fraction; ///< converge adaptive: cells flagged for coarsening
+    /** converge: ladder length; 0 = not given (default_levels, time-budgeted).
+     */
+    unsigned int n_levels = 0;
+    std::string  refinement_mode =
+      "both"; ///< converge: uniform|adaptive|remesh|both|all
+    double bulk_fraction =
+      0.1; ///< converge: cells refined by the Kelly indicator
+    double coarsen_fraction =
+      Convergence::default_coarsen_fraction; ///< converge adaptive: cells
+                                             ///< flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
-    double target_error  = 0.01; ///< converge: relative error of the equal-error comparison
+    double target_error =
+      0.01; ///< converge: relative error of the equal-error comparison
     /** converge: wall time of the whole study (s); NaN = not given. */
-    double budget_seconds = std::numeric_limits<double>::quiet_NaN();
-    std::size_t max_dofs  = 400000; ///< converge: largest level (DoFs)
+    double      budget_seconds = std::numeric_limits<double>::quiet_NaN();
+    std::size_t max_dofs       = 400000; ///< converge: largest level (DoFs)
     /** converge: FE degrees, one set of ladders each; empty = the scene's. */
     std::vector<unsigned int> fe_degrees;
-
   };
 
   /** @brief Reads the scene with its overrides (throws InputError). */
@@ -51,7 +56,7 @@ namespace FloorBlock::App
 
   /** @brief --output if given, otherwise results/<scene name>. */
   std::string
-  output_directory(const CommandOptions &                options,
+  output_directory(const CommandOptions                 &options,
                    const Parameters::ScenarioParameters &scene);
 
   int

@@ -1,10 +1,10 @@
 #include <app/command_options.h>
-#include <pipeline/convergence_ladder.h>
-#include <pipeline/convergence_study.h>
 #include <convergence/equal_error.h>
 #include <output/convergence_report.h>
 #include <output/gnuplot.h>
 #include <output/result_folder.h>
+#include <pipeline/convergence_ladder.h>
+#include <pipeline/convergence_study.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/timer.h>
@@ -13,9 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 
 namespace FloorBlock::App
@@ -25,8 +25,9 @@ namespace FloorBlock::App
     using Convergence::Ladder;
     using Convergence::Quantity;
 
-    constexpr unsigned int max_levels  = 10;
-    /** Levels without --levels: at most this many, within default_budget_seconds. */
+    constexpr unsigned int max_levels = 10;
+    /** Levels without --levels: at most this many, within
+     * default_budget_seconds. */
     constexpr unsigned int default_levels = 5;
     /** Wall time of a study without --levels or --budget-seconds (s). */
     constexpr double default_budget_seconds = 60.;
@@ -47,9 +48,8 @@ namespace FloorBlock::App
     {
       if (!std::isnan(options.budget_seconds))
         return options.budget_seconds;
-      return options.n_levels == 0 ?
-               default_budget_seconds :
-               std::numeric_limits<double>::infinity();
+      return options.n_levels == 0 ? default_budget_seconds :
+                                     std::numeric_limits<double>::infinity();
     }
 
     void
@@ -57,7 +57,8 @@ namespace FloorBlock::App
     {
       if (options.n_levels != 0 &&
           (options.n_levels < 2 || options.n_levels > max_levels))
-        throw InputError("--levels", std::to_string(options.n_levels),
+        throw InputError("--levels",
+                         std::to_string(options.n_levels),
                          "2 to " + std::to_string(max_levels) +
                            " (Richardson extrapolation needs 3)");
       for (const auto &[name, value] :
@@ -75,15 +76,19 @@ namespace FloorBlock::App
         {
           const unsigned int degree = options.fe_degrees[k];
           if (degree < 1 || degree > 2)
-            throw InputError("--degrees", std::to_string(degree),
+            throw InputError("--degrees",
+                             std::to_string(degree),
                              "FE degrees 1 and 2");
           if (std::count(options.fe_degrees.begin(),
-                         options.fe_degrees.begin() + k, degree) > 0)
-            throw InputError("--degrees", std::to_string(degree),
+                         options.fe_degrees.begin() + k,
+                         degree) > 0)
+            throw InputError("--degrees",
+                             std::to_string(degree),
                              "each degree once");
         }
       if (options.max_dofs < 1000)
-        throw InputError("--max-dofs", std::to_string(options.max_dofs),
+        throw InputError("--max-dofs",
+                         std::to_string(options.max_dofs),
                          "at least 1000");
       if (!(options.coarsen_fraction >= 0. && options.coarsen_fraction < 1.))
         throw InputError("--coarsen-fraction",
@@ -117,17 +122,17 @@ namespace FloorBlock::App
 
     /** Runs each ladder, writing the tables after every level. */
     bool
-    run_ladders(const CommandOptions                     &options,
-                const Parameters::ScenarioParameters     &scene,
-                const std::vector<Quantity>              &quantities,
-                const Output::ResultFolder               &folder,
-                const dealii::Timer                      &command_timer,
-                std::vector<Ladder>                      &ladders)
+    run_ladders(const CommandOptions                 &options,
+                const Parameters::ScenarioParameters &scene,
+                const std::vector<Quantity>          &quantities,
+                const Output::ResultFolder           &folder,
+                const dealii::Timer                  &command_timer,
+                std::vector<Ladder>                  &ladders)
     {
       Convergence::RefinementSettings refinement;
-      refinement.bulk_fraction          = options.bulk_fraction;
-      refinement.traction_jump_fraction = options.jump_fraction;
-      bool all_converged = true;
+      refinement.bulk_fraction                      = options.bulk_fraction;
+      refinement.traction_jump_fraction             = options.jump_fraction;
+      bool                            all_converged = true;
       const std::vector<unsigned int> degrees =
         options.fe_degrees.empty() ?
           std::vector<unsigned int>{scene.solver.fe_degree} :
@@ -135,7 +140,7 @@ namespace FloorBlock::App
       for (const unsigned int degree : degrees)
         {
           Parameters::ScenarioParameters degree_scene = scene;
-          degree_scene.solver.fe_degree                = degree;
+          degree_scene.solver.fe_degree               = degree;
           for (const Pipeline::RefinementMode mode :
                Pipeline::refinement_modes(options.refinement_mode))
             {
@@ -144,14 +149,20 @@ namespace FloorBlock::App
               // One budget for the whole command: each ladder gets what the
               // ladders before it left.
               Convergence::LadderBudget budget;
-              budget.seconds  = budget_seconds(options) - command_timer.wall_time();
+              budget.seconds =
+                budget_seconds(options) - command_timer.wall_time();
               budget.max_dofs = options.max_dofs;
-              const auto run = Pipeline::run_ladder(
-                degree_scene, mode, n_levels(options), refinement,
-                options.coarsen_fraction, folder,
+              const auto run  = Pipeline::run_ladder(
+                degree_scene,
+                mode,
+                n_levels(options),
+                refinement,
+                options.coarsen_fraction,
+                folder,
                 [&](const std::vector<Convergence::LevelRecord> &so_far) {
                   ladders.back().levels = so_far;
-                  Convergence::estimate_ladder_errors(ladders.back(), quantities);
+                  Convergence::estimate_ladder_errors(ladders.back(),
+                                                      quantities);
                   write_tables(folder, ladders, quantities);
                 },
                 budget);
@@ -172,28 +183,36 @@ namespace FloorBlock::App
                 const std::vector<Quantity>          &quantities,
                 const Output::ResultFolder           &folder)
     {
-      const auto comparisons = Pipeline::equal_error_comparisons(
-        ladders, quantities, options.target_error);
+      const auto comparisons =
+        Pipeline::equal_error_comparisons(ladders,
+                                          quantities,
+                                          options.target_error);
       const Output::TargetVerdict verdict =
         Pipeline::target_verdict(comparisons, "adaptive");
-      folder.write_json(
-        "convergence.json",
-        Output::convergence_study_json(
-          ladders, quantities, comparisons, verdict,
-          options.refinement_mode == "all" ?
-            std::optional(Pipeline::target_verdict(comparisons, "remesh")) :
-            std::nullopt));
+      folder.write_json("convergence.json",
+                        Output::convergence_study_json(
+                          ladders,
+                          quantities,
+                          comparisons,
+                          verdict,
+                          options.refinement_mode == "all" ?
+                            std::optional(
+                              Pipeline::target_verdict(comparisons, "remesh")) :
+                            std::nullopt));
       Output::render_png(
-        Output::error_vs_time_plot(ladders, quantities,
+        Output::error_vs_time_plot(ladders,
+                                   quantities,
                                    scene.scene_name +
                                      ": error estimate against wall time"),
-        folder.path_of("error_vs_wall_time.png"), 1300, 700);
+        folder.path_of("error_vs_wall_time.png"),
+        1300,
+        700);
       std::cout << "adaptive target (<= " << Pipeline::target_dofs_ratio
                 << " of the DoFs and less time at "
-                << options.target_error * 100 << " % error): "
-                << verdict.status() << ". " << verdict.text << std::endl;
-      const std::string degrees =
-        Pipeline::degree_comparison_text(comparisons);
+                << options.target_error * 100
+                << " % error): " << verdict.status() << ". " << verdict.text
+                << std::endl;
+      const std::string degrees = Pipeline::degree_comparison_text(comparisons);
       if (!degrees.empty())
         std::cout << "FE degrees at " << options.target_error * 100
                   << " % error: " << degrees << std::endl;
@@ -211,8 +230,10 @@ namespace FloorBlock::App
     // The ladder refines the elastic FEM's mesh; rigid blocks have none, and
     // every level would repeat the same rigid answer.
     if (Scene::uses_rigid_blocks(scene))
-      throw InputError("Model/Blocks", "rigid (or auto choosing rigid)",
-                       "converge needs the elastic FEM: Model/Blocks = elastic");
+      throw InputError(
+        "Model/Blocks",
+        "rigid (or auto choosing rigid)",
+        "converge needs the elastic FEM: Model/Blocks = elastic");
     const Output::ResultFolder folder(convergence_folder(options, scene));
     folder.mark_unfinished();
     folder.write_inputs(scene);

@@ -24,7 +24,7 @@ namespace FloorBlock::App
     {
       for (const double radius : scene.corner.rounding_radii)
         {
-          Parameters::ScenarioParameters rounded = scene;
+          Parameters::ScenarioParameters rounded  = scene;
           rounded.geometry.corner_rounding_radius = radius;
           try
             {
@@ -32,9 +32,11 @@ namespace FloorBlock::App
             }
           catch (const InputError &error)
             {
-              throw InputError("Corner/Rounding radii", fmt::format("{}", radius),
+              throw InputError("Corner/Rounding radii",
+                               fmt::format("{}", radius),
                                std::string("every radius must fit the block "
-                                           "corners: ") + error.what());
+                                           "corners: ") +
+                                 error.what());
             }
         }
     }
@@ -46,7 +48,8 @@ namespace FloorBlock::App
     const auto scene = read_scene(options);
     require_plane_scene(scene, "corner");
     if (scene.model.chosen != Parameters::BlockModel::elastic)
-      throw InputError("Model/Blocks", "rigid",
+      throw InputError("Model/Blocks",
+                       "rigid",
                        "the corner field needs the elastic FEM (elastic, or "
                        "auto with Model/Outputs = contact stress)");
     check_rounding_radii(scene);
@@ -62,12 +65,17 @@ namespace FloorBlock::App
       std::cout << line << std::endl;
     };
 
-    const Corner::CornerAnalysis analysis = Corner::analyse_corner(
-      scene, Output::ResultFolder(folder.path_of("zoom")), seconds_left,
-      progress);
-    const Corner::RoundingStudy rounding = Corner::rounding_study(
-      scene, analysis, Output::ResultFolder(folder.path_of("rounding")),
-      seconds_left, progress);
+    const Corner::CornerAnalysis analysis =
+      Corner::analyse_corner(scene,
+                             Output::ResultFolder(folder.path_of("zoom")),
+                             seconds_left,
+                             progress);
+    const Corner::RoundingStudy rounding =
+      Corner::rounding_study(scene,
+                             analysis,
+                             Output::ResultFolder(folder.path_of("rounding")),
+                             seconds_left,
+                             progress);
 
     nlohmann::json report = Corner::corner_json(scene, analysis, rounding);
     report["wall_time_s"] = clock.wall_time();

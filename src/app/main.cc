@@ -21,9 +21,8 @@ namespace
   using Command = std::function<int(const App::CommandOptions &)>;
 
   /// Subcommands that run the finite-element engine.
-  const std::set<std::string> needs_mpi = {"mesh",     "solve", "run",
-                                           "verify",   "converge", "sweep",
-                                           "corner"};
+  const std::set<std::string> needs_mpi =
+    {"mesh", "solve", "run", "verify", "converge", "sweep", "corner"};
 
   /**
    * Of those, the ones that use several processes under mpirun: `solve`
@@ -68,20 +67,25 @@ namespace
 
   /** Adds one subcommand with the options every subcommand shares. */
   CLI::App *
-  add_subcommand(CLI::App &               cli,
-                 const std::string &      name,
-                 const std::string &      description,
-                 App::CommandOptions &    options)
+  add_subcommand(CLI::App            &cli,
+                 const std::string   &name,
+                 const std::string   &description,
+                 App::CommandOptions &options)
   {
     CLI::App *sub = cli.add_subcommand(name, description);
-    sub->add_option("scene", options.scene_path,
-                    "Scene parameter file (.prm or .json)")
+    sub
+      ->add_option("scene",
+                   options.scene_path,
+                   "Scene parameter file (.prm or .json)")
       ->capture_default_str();
-    sub->add_option("--set", options.overrides,
-                    "Override a parameter: \"Subsection/Entry name=value\" "
-                    "(repeatable)")
+    sub
+      ->add_option("--set",
+                   options.overrides,
+                   "Override a parameter: \"Subsection/Entry name=value\" "
+                   "(repeatable)")
       ->allow_extra_args(false);
-    sub->add_option("--output", options.output_directory,
+    sub->add_option("--output",
+                    options.output_directory,
                     "Output folder (default: results/<scene>/)");
     return sub;
   }
@@ -153,17 +157,23 @@ namespace
     // verify takes a case name where the others take a scene file.
     CLI::App *verify = cli.get_subcommand("verify");
     verify->remove_option(verify->get_option("scene"));
-    verify->add_option("case", options.verification_case,
-                       "Verification case: hertz, patch, punch, incline, two-blocks")
+    verify
+      ->add_option(
+        "case",
+        options.verification_case,
+        "Verification case: hertz, patch, punch, incline, two-blocks")
       ->required();
     cli.get_subcommand("mesh")->add_flag(
       "--ids", options.print_ids, "Print the material/boundary id scheme");
     CLI::App *sweep = cli.get_subcommand("sweep");
-    sweep->add_flag("--fem", options.with_fem,
+    sweep->add_flag("--fem",
+                    options.with_fem,
                     "Also run the FEM for every case");
-    sweep->add_option("--figure", options.figure,
+    sweep->add_option("--figure",
+                      options.figure,
                       "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
-    sweep->add_option("--limit", options.case_limit,
+    sweep->add_option("--limit",
+                      options.case_limit,
                       "With --fem: run at most this many cases (0 = all)");
   }
 
@@ -172,40 +182,51 @@ namespace
   add_converge_options(CLI::App &cli, App::CommandOptions &options)
   {
     CLI::App *converge = cli.get_subcommand("converge");
-    converge->add_option("--levels", options.n_levels,
+    converge->add_option("--levels",
+                         options.n_levels,
                          "Number of refinement levels (2-10). Without it: "
                          "up to 5 levels within --budget-seconds 60");
-    converge->add_option("--mode", options.refinement_mode,
-                         "uniform, adaptive (deal.II hanging nodes), remesh "
-                         "(Gmsh size field), both (uniform and adaptive, "
-                         "default) or all three")
+    converge
+      ->add_option("--mode",
+                   options.refinement_mode,
+                   "uniform, adaptive (deal.II hanging nodes), remesh "
+                   "(Gmsh size field), both (uniform and adaptive, "
+                   "default) or all three")
       ->check(CLI::IsMember({"uniform", "adaptive", "remesh", "both", "all"}));
-    converge->add_option("--coarsen-fraction", options.coarsen_fraction,
+    converge->add_option("--coarsen-fraction",
+                         options.coarsen_fraction,
                          "Adaptive: fraction of cells with the smallest Kelly "
                          "indicator flagged for coarsening per level "
                          "(default 0.03, 0 = never coarsen)");
-    converge->add_option("--bulk-fraction", options.bulk_fraction,
+    converge->add_option("--bulk-fraction",
+                         options.bulk_fraction,
                          "Adaptive: fraction of cells with the largest Kelly "
                          "indicator refined per level (default 0.1)");
-    converge->add_option("--jump-fraction", options.jump_fraction,
+    converge->add_option("--jump-fraction",
+                         options.jump_fraction,
                          "Adaptive: joint segments whose normal-traction jump "
                          "exceeds this fraction of the largest are refined "
                          "(default 0.25)");
-    converge->add_option("--budget-seconds", options.budget_seconds,
+    converge->add_option("--budget-seconds",
+                         options.budget_seconds,
                          "Wall time of the whole study (s; default 60 without "
                          "--levels, none with it): a ladder stops before a "
                          "level whose forecast (the last step's growth "
                          "repeated) does not fit");
-    converge->add_option("--max-dofs", options.max_dofs,
+    converge->add_option("--max-dofs",
+                         options.max_dofs,
                          "Largest level a ladder may start (forecast DoFs, "
                          "default 400000)");
-    converge->add_option("--degrees", options.fe_degrees,
-                         "FE degrees to run the ladders with, e.g. 1,2: one "
-                         "set of ladders per degree (named uniform, "
-                         "uniform_q2, ...) and the degrees compared at equal "
-                         "error (default: Solver/FE degree, 1 when auto)")
+    converge
+      ->add_option("--degrees",
+                   options.fe_degrees,
+                   "FE degrees to run the ladders with, e.g. 1,2: one "
+                   "set of ladders per degree (named uniform, "
+                   "uniform_q2, ...) and the degrees compared at equal "
+                   "error (default: Solver/FE degree, 1 when auto)")
       ->delimiter(',');
-    converge->add_option("--target-error", options.target_error,
+    converge->add_option("--target-error",
+                         options.target_error,
                          "Relative error at which uniform and adaptive costs "
                          "are compared (default 0.01)");
   }
@@ -214,8 +235,8 @@ namespace
   int
   run_parsed(const std::map<CLI::App *, Command> &dispatch,
              const App::CommandOptions           &options,
-             int                                  &argc,
-             char                               **&argv)
+             int                                 &argc,
+             char                              **&argv)
   {
     // Closed-form commands skip MPI start-up (about 0.1 s with the singleton
     // settings, 0.4 s without). The environment is declared first so that
@@ -255,7 +276,7 @@ main(int argc, char **argv)
   CLI::App cli{"FloorBlock: FEM cross-check of the multiple sliding block "
                "model of longwall floor failure"};
   cli.require_subcommand(1);
-  App::CommandOptions options;
+  App::CommandOptions           options;
   std::map<CLI::App *, Command> dispatch;
   for (const auto &[name, entry] : command_table())
     dispatch[add_subcommand(cli, name, entry.first, options)] = entry.second;

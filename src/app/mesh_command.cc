@@ -41,10 +41,13 @@ namespace FloorBlock::App
       dealii::GridOut().write_msh(solid, msh);
       write_file_atomically(path, msh.str());
       std::cout << fmt::format(
-                     "extruded along the face over {} m: {} hexahedra, {} "
-                     "vertices in {:.3f} s\nwrote {}\n",
-                     scene.geometry.face_length, solid.n_active_cells(),
-                     solid.n_used_vertices(), timer.wall_time(), path);
+        "extruded along the face over {} m: {} hexahedra, {} "
+        "vertices in {:.3f} s\nwrote {}\n",
+        scene.geometry.face_length,
+        solid.n_active_cells(),
+        solid.n_used_vertices(),
+        timer.wall_time(),
+        path);
     }
   } // namespace
 
@@ -64,25 +67,35 @@ namespace FloorBlock::App
     const std::string msh_path =
       (std::filesystem::path(mesh_folder) / (scene.scene_name + ".msh"))
         .string();
-    const auto statistics = Geometry::write_gmsh_mesh(
-      description, msh_path, Scene::contact_zone_sizes(scene));
+    const auto statistics =
+      Geometry::write_gmsh_mesh(description,
+                                msh_path,
+                                Scene::contact_zone_sizes(scene));
 
     dealii::Triangulation<2> triangulation;
     Geometry::read_triangulation(msh_path, triangulation);
     const Output::ResultFolder folder(output_directory(options, scene));
-    Output::write_mesh_picture(
-      triangulation, folder.path_of("mesh.png"),
-      {1600, 0,
-       fmt::format("{}: {} cells, {} bodies", scene.scene_name,
-                   statistics.n_cells, statistics.n_bodies),
-       {}});
+    Output::write_mesh_picture(triangulation,
+                               folder.path_of("mesh.png"),
+                               {1600,
+                                0,
+                                fmt::format("{}: {} cells, {} bodies",
+                                            scene.scene_name,
+                                            statistics.n_cells,
+                                            statistics.n_bodies),
+                                {}});
 
     std::cout << fmt::format(
-                   "meshed '{}': {} quadrilaterals, {} nodes, {} bodies, {} "
-                   "matched joint pairs in {:.3f} s\nwrote {} and {}\n",
-                   scene.scene_name, statistics.n_cells, statistics.n_nodes,
-                   statistics.n_bodies, statistics.n_matched_pairs,
-                   statistics.wall_time, msh_path, folder.path_of("mesh.png"));
+      "meshed '{}': {} quadrilaterals, {} nodes, {} bodies, {} "
+      "matched joint pairs in {:.3f} s\nwrote {} and {}\n",
+      scene.scene_name,
+      statistics.n_cells,
+      statistics.n_nodes,
+      statistics.n_bodies,
+      statistics.n_matched_pairs,
+      statistics.wall_time,
+      msh_path,
+      folder.path_of("mesh.png"));
     if (scene.geometry.dimension == 3)
       write_extruded_mesh(scene, triangulation, mesh_folder);
     return 0;

@@ -8,8 +8,8 @@
 #include <output/report_markdown.h>
 #include <output/result_folder.h>
 #include <output/run_summary.h>
-#include <pipeline/closed_form_comparison.h>
 #include <pipeline/accuracy_loop.h>
+#include <pipeline/closed_form_comparison.h>
 #include <pipeline/fem_pipeline.h>
 #include <scene/closed_forms.h>
 
@@ -34,11 +34,14 @@ namespace FloorBlock::App
                          folder.path_of("q_per_joint.png"));
       if (!comparison.lift_history.empty())
         Output::render_png(Output::lift_history_plot(comparison.lift_history),
-                           folder.path_of("face_joint_vs_lift.png"), 1400, 550);
+                           folder.path_of("face_joint_vs_lift.png"),
+                           1400,
+                           550);
       for (const auto &joint : last.joints)
         if (joint.name == Compare::face_joint_name(final_joints.size()))
           Output::render_png(Output::traction_profile_plot(joint),
-                             folder.path_of("face_joint_traction.png"), 700,
+                             folder.path_of("face_joint_traction.png"),
+                             700,
                              700);
     }
 
@@ -52,10 +55,10 @@ namespace FloorBlock::App
 
     /// Compares, plots and reports the last converged increment.
     Output::RunComparison
-    compare_and_report(const Pipeline::FemOutcome              &outcome,
-                       const Scene::ClosedForms                &closed_forms,
-                       const Parameters::ScenarioParameters    &scene,
-                       const Output::ResultFolder              &folder,
+    compare_and_report(const Pipeline::FemOutcome           &outcome,
+                       const Scene::ClosedForms             &closed_forms,
+                       const Parameters::ScenarioParameters &scene,
+                       const Output::ResultFolder           &folder,
                        const std::optional<Output::FemErrorEstimate> &estimate)
     {
       const Output::RunComparison comparison =
@@ -64,10 +67,10 @@ namespace FloorBlock::App
       const auto lines = Output::verdicts(comparison.final_joints.back());
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
-      folder.write("report.md",
-                   Output::report_markdown(scene, outcome.result,
-                                           outcome.report, estimate,
-                                           comparison, lines));
+      folder.write(
+        "report.md",
+        Output::report_markdown(
+          scene, outcome.result, outcome.report, estimate, comparison, lines));
       return comparison;
     }
 
@@ -82,14 +85,17 @@ namespace FloorBlock::App
       const bool  check =
         target.reported_solve == Output::ReportedSolve::refined;
       std::cout << fmt::format(
-                     "accuracy: target {:g} % {} after {} levels in {:.1f} "
-                     "s; reporting level {}{} ({} DoFs, FE degree {}): {}\n",
-                     100. * target.relative_error,
-                     target.met ? "met" : "NOT met", target.levels.size(),
-                     target.wall_time, target.reported_level,
-                     check ? "'s check" : "",
-                     check ? reported.halved_n_dofs : reported.n_dofs,
-                     target.fe_degree, target.stop_reason);
+        "accuracy: target {:g} % {} after {} levels in {:.1f} "
+        "s; reporting level {}{} ({} DoFs, FE degree {}): {}\n",
+        100. * target.relative_error,
+        target.met ? "met" : "NOT met",
+        target.levels.size(),
+        target.wall_time,
+        target.reported_level,
+        check ? "'s check" : "",
+        check ? reported.halved_n_dofs : reported.n_dofs,
+        target.fe_degree,
+        target.stop_reason);
     }
 
     /// The closing line: what was written, and in how long.
@@ -101,12 +107,12 @@ namespace FloorBlock::App
       if (outcome.result.increments.empty())
         std::cout << "no load increment converged: no comparison and no "
                      "report.md; wrote "
-                  << folder.path_of("summary.json") << " in " << seconds
-                  << " s" << std::endl;
+                  << folder.path_of("summary.json") << " in " << seconds << " s"
+                  << std::endl;
       else
         std::cout << "wrote " << folder.path_of("report.md") << " and "
-                  << folder.path_of("summary.json") << " in " << seconds
-                  << " s" << std::endl;
+                  << folder.path_of("summary.json") << " in " << seconds << " s"
+                  << std::endl;
     }
   } // namespace
 
@@ -127,23 +133,29 @@ namespace FloorBlock::App
     const Pipeline::FemOutcome &outcome  = solve.outcome;
     const auto                 &estimate = solve.estimate;
     print_target(estimate);
-    std::cout << Output::fem_summary_text(outcome.report, outcome.result,
+    std::cout << Output::fem_summary_text(outcome.report,
+                                          outcome.result,
                                           outcome.mesh);
     std::optional<Output::RunComparison> comparison;
     if (!outcome.result.increments.empty())
       {
         std::cout << "face joint: each figure with its estimated error and "
                      "the time of the solve that gave it\n"
-                  << Output::figure_lines(outcome.result, estimate,
+                  << Output::figure_lines(outcome.result,
+                                          estimate,
                                           scene.geometry.n_blocks);
         comparison =
           compare_and_report(outcome, closed_forms, scene, folder, estimate);
       }
 
     // Written last: its presence marks a finished run.
-    folder.write_summary(Output::run_summary_json(
-      scene, closed_forms, outcome.result, outcome.report, estimate,
-      comparison, timer.wall_time()));
+    folder.write_summary(Output::run_summary_json(scene,
+                                                  closed_forms,
+                                                  outcome.result,
+                                                  outcome.report,
+                                                  estimate,
+                                                  comparison,
+                                                  timer.wall_time()));
     print_written(outcome, folder, timer.wall_time());
     return outcome.converged ? exit_code::success : exit_code::failure;
   }

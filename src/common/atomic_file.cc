@@ -1,11 +1,11 @@
 #include <common/atomic_file.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-
-#include <unistd.h>
 
 namespace FloorBlock
 {
@@ -14,9 +14,8 @@ namespace FloorBlock
   {
     const std::filesystem::path target(path);
     // Same folder, so the final rename never crosses a file system.
-    return (target.parent_path() /
-            ("." + target.filename().string() + ".tmp." +
-             std::to_string(::getpid())))
+    return (target.parent_path() / ("." + target.filename().string() + ".tmp." +
+                                    std::to_string(::getpid())))
       .string();
   }
 

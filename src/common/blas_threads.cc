@@ -24,7 +24,7 @@ namespace FloorBlock
          {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
       if (std::getenv(variable) != nullptr)
         return false;
-    using SetThreads = void (*)(int);
+    using SetThreads       = void (*)(int);
     const auto set_threads = reinterpret_cast<SetThreads>(
       openblas_function("openblas_set_num_threads"));
     if (set_threads == nullptr)
@@ -36,7 +36,7 @@ namespace FloorBlock
   int
   blas_thread_count()
   {
-    using GetThreads = int (*)();
+    using GetThreads       = int (*)();
     const auto get_threads = reinterpret_cast<GetThreads>(
       openblas_function("openblas_get_num_threads"));
     return get_threads != nullptr ? get_threads() : 0;

@@ -31,9 +31,9 @@ namespace FloorBlock
   /** Process exit codes shared by every subcommand. */
   namespace exit_code
   {
-    constexpr int success      = 0;
-    constexpr int failure      = 1; ///< numerical failure or failed check
-    constexpr int bad_input    = 2;
-    constexpr int interrupted  = 130; ///< 128 + SIGINT, the shell convention
-  } // namespace exit_code
+    constexpr int success     = 0;
+    constexpr int failure     = 1; ///< numerical failure or failed check
+    constexpr int bad_input   = 2;
+    constexpr int interrupted = 130; ///< 128 + SIGINT, the shell convention
+  }                                  // namespace exit_code
 } // namespace FloorBlock

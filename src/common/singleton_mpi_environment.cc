@@ -21,10 +21,10 @@ namespace FloorBlock
     make_private_session_directory()
     {
       std::error_code   ignored;
-      const std::string pattern = (std::filesystem::temp_directory_path(
-                                     ignored) /
-                                   "floorblock-mpi-XXXXXX")
-                                    .string();
+      const std::string pattern =
+        (std::filesystem::temp_directory_path(ignored) /
+         "floorblock-mpi-XXXXXX")
+          .string();
       std::vector<char> name(pattern.begin(), pattern.end());
       name.push_back('\0');
       if (::mkdtemp(name.data()) == nullptr)

@@ -65,7 +65,6 @@ namespace FloorBlock
    * @brief The start-up settings SingletonMpiEnvironment gives a singleton
    * (see there for why and what each one saves).
    */
-  constexpr MpiSetting singleton_start_up_settings[] = {
-    {"OMPI_MCA_pml", "ob1"},
-    {"OMPI_MCA_ess_singleton_isolated", "1"}};
+  constexpr MpiSetting singleton_start_up_settings[] =
+    {{"OMPI_MCA_pml", "ob1"}, {"OMPI_MCA_ess_singleton_isolated", "1"}};
 } // namespace FloorBlock

@@ -10,8 +10,8 @@ namespace FloorBlock::Compare
   namespace
   {
     double
-    rotation_of(const Contact::IncrementResult &   increment,
-                const dealii::types::material_id   material)
+    rotation_of(const Contact::IncrementResult  &increment,
+                const dealii::types::material_id material)
     {
       const auto motion = increment.motions.find(material);
       return motion == increment.motions.end() ? 0. : motion->second.rotation;
@@ -26,8 +26,8 @@ namespace FloorBlock::Compare
       ForceComparison comparison;
       comparison.mechanism          = Scene::to_string(entry.mechanism);
       comparison.closed_form_status = entry.forces.status;
-      comparison.status = Analytic::to_string(entry.forces.status);
-      const auto &values   = entry.forces.lateral_force;
+      comparison.status             = Analytic::to_string(entry.forces.status);
+      const auto &values            = entry.forces.lateral_force;
       if (joint == 0 || joint > values.size())
         return comparison;
       comparison.has_value   = true;
@@ -66,8 +66,8 @@ namespace FloorBlock::Compare
 
   std::vector<JointComparison>
   compare_vertical_joints(const Contact::IncrementResult &increment,
-                          const Scene::ClosedForms &      closed_forms,
-                          const ContactConstants &        constants)
+                          const Scene::ClosedForms       &closed_forms,
+                          const ContactConstants         &constants)
   {
     const unsigned int n_blocks = closed_forms.chain.n_blocks();
     const LoadCheck    load = check_load(increment, constants.youngs_modulus);
@@ -95,11 +95,13 @@ namespace FloorBlock::Compare
           constants.block_width * std::tan(contact.relative_rotation);
         contact.force_over_width =
           std::max(report.normal_force, 0.) * constants.support_width;
-        contact.closed_form = Analytic::corner_contact(
-          contact.force_over_width, contact.floor_lift,
-          constants.youngs_modulus, constants.support_width,
-          constants.block_width, constants.block_height);
-        contact.fem_area = report.closed_length * constants.support_width;
+        contact.closed_form = Analytic::corner_contact(contact.force_over_width,
+                                                       contact.floor_lift,
+                                                       constants.youngs_modulus,
+                                                       constants.support_width,
+                                                       constants.block_width,
+                                                       constants.block_height);
+        contact.fem_area    = report.closed_length * constants.support_width;
         contact.fem_mean_stress          = report.mean_normal_stress;
         contact.fem_peak_stress          = report.peak_normal_stress;
         contact.fem_averaged_peak_stress = report.averaged_peak_normal_stress;

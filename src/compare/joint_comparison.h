@@ -32,8 +32,8 @@ namespace FloorBlock::Compare
     std::string      mechanism; ///< Scene::to_string(Mechanism)
     Analytic::Status closed_form_status = Analytic::Status::ok;
     std::string      status; ///< the closed form's status, as a word
-    bool             has_value = false;
-    double           closed_form = 0.; ///< Q_j (N/m); 0 without a value
+    bool             has_value         = false;
+    double           closed_form       = 0.; ///< Q_j (N/m); 0 without a value
     DifferenceStatus difference_status = DifferenceStatus::no_closed_form;
     /** (FEM - closed form) / |closed form|; 0 unless defined. */
     double relative_difference = 0.;
@@ -45,13 +45,13 @@ namespace FloorBlock::Compare
    */
   struct ContactComparison
   {
-    double                  force_over_width = 0.; ///< Q over b from the FEM (N)
-    double                  relative_rotation = 0.; ///< theta_away - theta_face (rad)
-    double                  floor_lift = 0.; ///< y = L tan(relative rotation) (m)
-    Analytic::CornerContact closed_form;     ///< 6.51-6.53 with those inputs
-    double                  fem_area = 0.;   ///< contact length x b (m^2)
-    double                  fem_mean_stress = 0.;     ///< Pa
-    double                  fem_peak_stress = 0.;     ///< pointwise (Pa)
+    double force_over_width  = 0.;       ///< Q over b from the FEM (N)
+    double relative_rotation = 0.;       ///< theta_away - theta_face (rad)
+    double floor_lift        = 0.;       ///< y = L tan(relative rotation) (m)
+    Analytic::CornerContact closed_form; ///< 6.51-6.53 with those inputs
+    double                  fem_area        = 0.; ///< contact length x b (m^2)
+    double                  fem_mean_stress = 0.; ///< Pa
+    double                  fem_peak_stress = 0.; ///< pointwise (Pa)
     double                  fem_averaged_peak_stress = 0.; ///< Pa
     /** False when the increment carries no load (LoadCheck). */
     bool fem_carries_load = true;
@@ -90,6 +90,6 @@ namespace FloorBlock::Compare
    */
   std::vector<JointComparison>
   compare_vertical_joints(const Contact::IncrementResult &increment,
-                          const Scene::ClosedForms &      closed_forms,
-                          const ContactConstants &        constants);
+                          const Scene::ClosedForms       &closed_forms,
+                          const ContactConstants         &constants);
 } // namespace FloorBlock::Compare

@@ -44,10 +44,10 @@ namespace FloorBlock::Contact
     // xi_n = 0 counts as closed (see the class doc: kink choices).
     if (augmented_normal < 0.)
       {
-        response.state                          = JointState::open;
-        response.normal_residual                = normal_multiplier;
-        response.tangential_residual            = tangential_multiplier;
-        derivatives.normal_by_normal_multiplier = 1.;
+        response.state                                  = JointState::open;
+        response.normal_residual                        = normal_multiplier;
+        response.tangential_residual                    = tangential_multiplier;
+        derivatives.normal_by_normal_multiplier         = 1.;
         derivatives.tangential_by_tangential_multiplier = identity;
         return response;
       }

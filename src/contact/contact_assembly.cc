@@ -40,8 +40,8 @@ namespace FloorBlock::Contact
     std::vector<std::vector<dealii::types::global_dof_index>> groups;
     for (const auto &node : nodes)
       {
-        std::vector<dealii::types::global_dof_index> group(
-          node.dofs_b.begin(), node.dofs_b.end());
+        std::vector<dealii::types::global_dof_index> group(node.dofs_b.begin(),
+                                                           node.dofs_b.end());
         if (node.against_rigid_obstacle())
           group.clear();
         group.insert(group.end(), node.dofs_a.begin(), node.dofs_a.end());
@@ -52,7 +52,7 @@ namespace FloorBlock::Contact
 
   template <int dim>
   dealii::IndexSet
-  pair_dofs(const std::vector<ContactNode<dim>> &nodes,
+  pair_dofs(const std::vector<ContactNode<dim>>  &nodes,
             const dealii::types::global_dof_index n_dofs)
   {
     dealii::IndexSet dofs(n_dofs);
@@ -106,8 +106,7 @@ namespace FloorBlock::Contact
                   sign_i * weight * response.force_density[i];
                 for (unsigned int side_j = 0; side_j < n_sides; ++side_j)
                   {
-                    const double sign_j =
-                      (two_sided && side_j == 0) ? 1. : -1.;
+                    const double sign_j = (two_sided && side_j == 0) ? 1. : -1.;
                     for (unsigned int j = 0; j < dim; ++j)
                       local_matrix(side_i * dim + i, side_j * dim + j) =
                         sign_i * sign_j * weight * response.tangent[i][j];

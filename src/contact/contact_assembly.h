@@ -25,10 +25,10 @@ namespace FloorBlock::Contact
    */
   template <int dim>
   std::vector<JointResponse<dim>>
-  evaluate_contact(const std::vector<ContactNode<dim>>        &nodes,
+  evaluate_contact(const std::vector<ContactNode<dim>>          &nodes,
                    const std::vector<const CoulombJoint<dim> *> &laws,
-                   const std::vector<JointHistory<dim>>        &histories,
-                   const dealii::TrilinosWrappers::MPI::Vector &solution);
+                   const std::vector<JointHistory<dim>>         &histories,
+                   const dealii::TrilinosWrappers::MPI::Vector  &solution);
 
   /**
    * @brief Adds the pairs' internal forces \f$\pm w\,(−t_n n + t_t)\f$ to
@@ -52,7 +52,7 @@ namespace FloorBlock::Contact
    */
   template <int dim>
   dealii::IndexSet
-  pair_dofs(const std::vector<ContactNode<dim>> &nodes,
+  pair_dofs(const std::vector<ContactNode<dim>>  &nodes,
             const dealii::types::global_dof_index n_dofs);
 
   /** @brief The DoFs of each pair, for the sparsity pattern. */

@@ -19,7 +19,8 @@ namespace FloorBlock::Contact
     unsigned int joint = 0;
     /** Reference position of the side-A node (m). */
     dealii::Point<dim> position;
-    /** Lumped interface weight: integral of the node's shape function along the joint (m in 2D). */
+    /** Lumped interface weight: integral of the node's shape function along the
+     * joint (m in 2D). */
     double weight = 0.;
     /** Unit normal from side A to side B (outward normal of side A). */
     dealii::Tensor<1, dim> normal;

@@ -32,8 +32,8 @@ namespace FloorBlock::Contact
     /** kn and ks are used by the compliant law only. */
     JointConstants parameters;
     /** If true, side_b is ignored and side_a meets the plane below. */
-    bool                   against_rigid_plane = false;
-    dealii::Point<dim>     plane_point;
+    bool               against_rigid_plane = false;
+    dealii::Point<dim> plane_point;
     /** Unit normal from the body into the obstacle. */
     dealii::Tensor<1, dim> plane_normal;
     /**
@@ -67,17 +67,20 @@ namespace FloorBlock::Contact
   enum class UpliftMotion
   {
     vertical_translation, ///< u = (0, magnitude)
-    dip_translation,      ///< u = magnitude (cos dip, sin dip); sign picks the way
-    tilt,                 ///< rotation by magnitude (rad) about the pivot
-    parabola,             ///< u_y = (x - pivot_x)^2 / magnitude for x > pivot_x, else 0 (y = x^2/k)
-    slope                 ///< u_y = magnitude (x - pivot_x) for x > pivot_x, else 0 (planar slope)
+    dip_translation, ///< u = magnitude (cos dip, sin dip); sign picks the way
+    tilt,            ///< rotation by magnitude (rad) about the pivot
+    parabola, ///< u_y = (x - pivot_x)^2 / magnitude for x > pivot_x, else 0 (y
+              ///< = x^2/k)
+    slope     ///< u_y = magnitude (x - pivot_x) for x > pivot_x, else 0 (planar
+              ///< slope)
   };
 
   /** @brief The prescribed floor uplift at the end of stage 3. */
   struct UpliftSettings
   {
     UpliftMotion mode = UpliftMotion::vertical_translation;
-    /** m for translations, rad for tilt, the length k (m) for parabola, the gradient (-) for slope. */
+    /** m for translations, rad for tilt, the length k (m) for parabola, the
+     * gradient (-) for slope. */
     double magnitude = 0.;
     /** Direction of dip_translation, from +x towards +y (rad). */
     double dip_angle = 0.;
@@ -104,8 +107,8 @@ namespace FloorBlock::Contact
   struct ContactSolverSettings
   {
     /** FE_Q degree, 1 or 2. */
-    unsigned int              fe_degree = 1;
-    NewtonSettings            newton;
+    unsigned int                 fe_degree = 1;
+    NewtonSettings               newton;
     Solver::LinearSolverSettings linear;
     /** Halvings of a failed increment before giving up. */
     unsigned int max_cutbacks = 6;

@@ -1,6 +1,6 @@
 #include <common/input_error.h>
-#include <contact/contact_assembly.h>
 #include <common/interrupt.h>
+#include <contact/contact_assembly.h>
 #include <contact/contact_solver.h>
 #include <contact/crosspoints.h>
 #include <contact/joint_pairing.h>
@@ -61,16 +61,16 @@ namespace FloorBlock::Contact
   } // namespace
 
   template <int dim>
-  ContactSolver<dim>::ContactSolver(const dealii::Triangulation<dim> &triangulation,
-                               const ContactProblem<dim>       &problem,
-                               const ContactSolverSettings    &settings)
+  ContactSolver<dim>::ContactSolver(
+    const dealii::Triangulation<dim> &triangulation,
+    const ContactProblem<dim>        &problem,
+    const ContactSolverSettings      &settings)
     : problem(problem)
     , settings(on_processes(settings, triangulation.get_communicator()))
     , fe_space(triangulation, settings.fe_degree)
     , console(std::cout,
-              settings.verbose &&
-                dealii::Utilities::MPI::this_mpi_process(
-                  triangulation.get_communicator()) == 0)
+              settings.verbose && dealii::Utilities::MPI::this_mpi_process(
+                                    triangulation.get_communicator()) == 0)
     , timer(console,
             dealii::TimerOutput::never,
             dealii::TimerOutput::wall_times)
@@ -79,17 +79,15 @@ namespace FloorBlock::Contact
     // evaluates every joint node (joint_pairing.h, contact_assembly.h),
     // the bulk and the linear algebra are distributed. The exact law's
     // multipliers and the kept LU factors are not (yet): refused.
-    const bool distributed =
-      dealii::Utilities::MPI::n_mpi_processes(
-        fe_space.dof_handler().get_communicator()) > 1;
-    dealii::TimerOutput::Scope scope(timer, "Contact: setup");
+    const bool distributed = dealii::Utilities::MPI::n_mpi_processes(
+                               fe_space.dof_handler().get_communicator()) > 1;
+    dealii::TimerOutput::Scope                scope(timer, "Contact: setup");
     std::vector<Fem::DirichletCondition<dim>> zero_conditions;
     for (const auto &support : problem.supports)
-      zero_conditions.push_back({support.boundary_id,
-                                 support.constrained_components,
-                                 [](const dealii::Point<dim> &) {
-                                   return dealii::Tensor<1, dim>();
-                                 }});
+      zero_conditions.push_back(
+        {support.boundary_id,
+         support.constrained_components,
+         [](const dealii::Point<dim> &) { return dealii::Tensor<1, dim>(); }});
     homogeneous_constraints =
       Fem::make_constraints(fe_space, zero_conditions, true, dirichlet_dofs);
     // After the supports: a node they hold is ground for the crosspoints.
@@ -109,9 +107,9 @@ namespace FloorBlock::Contact
     matrix.reinit(pattern);
     bulk = std::make_unique<Fem::StoredElasticSystem<dim>>(
       fe_space, problem.model, homogeneous_constraints, pattern);
-    if (std::any_of(exact_laws.begin(),
-                    exact_laws.end(),
-                    [](const auto &law) { return law.has_value(); }))
+    if (std::any_of(exact_laws.begin(), exact_laws.end(), [](const auto &law) {
+          return law.has_value();
+        }))
       {
         if (distributed)
           throw std::logic_error(
@@ -136,8 +134,9 @@ namespace FloorBlock::Contact
         std::make_unique<Solver::ReusedFactorization>(settings.linear);
     else if (!Solver::uses_direct_solver(settings.linear,
                                          fe_space.dof_handler().n_dofs()))
-      amg_solver = std::make_unique<Solver::ReusedAmg>(
-        settings.linear, Fem::rigid_body_modes(fe_space));
+      amg_solver =
+        std::make_unique<Solver::ReusedAmg>(settings.linear,
+                                            Fem::rigid_body_modes(fe_space));
     const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
     // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
     // so that every rank of a sweep solves its own case independently.
@@ -204,16 +203,20 @@ namespace FloorBlock::Contact
       joint_is_exact.push_back(joint.law == JointLawKind::rigid);
     const std::vector<bool> yields_at_crosspoint =
       crosspoint_pairs(nodes, joint_is_exact, dirichlet_dofs);
-    const unsigned int n_crosspoint_pairs = std::count(
-      yields_at_crosspoint.begin(), yields_at_crosspoint.end(), true);
+    const unsigned int n_crosspoint_pairs =
+      std::count(yields_at_crosspoint.begin(),
+                 yields_at_crosspoint.end(),
+                 true);
     if (n_crosspoint_pairs > 0)
       console << "  " << n_crosspoint_pairs
               << " rigid-law pairs at crosspoints follow springs of the "
                  "surface stiffness"
               << std::endl;
 
-    const std::vector<double> pair_lengths = weights_along_joint(
-      nodes, problem.joints.size(), face_length_of(triangulation));
+    const std::vector<double> pair_lengths =
+      weights_along_joint(nodes,
+                          problem.joints.size(),
+                          face_length_of(triangulation));
     for (unsigned int p = 0; p < nodes.size(); ++p)
       {
         const ContactNode<dim>     &node  = nodes[p];
@@ -250,7 +253,8 @@ namespace FloorBlock::Contact
             // complementarity parameter, which must not change a result).
             springs.normal_stiffness = law.surface_stiffness;
             springs.shear_stiffness  = law.surface_stiffness;
-            penalty_laws.push_back(std::make_unique<CoulombJoint<dim>>(springs));
+            penalty_laws.push_back(
+              std::make_unique<CoulombJoint<dim>>(springs));
             pair_laws.push_back(penalty_laws.back().get());
             penalty_pair_laws.push_back(pair_laws.back());
             exact_laws.emplace_back();
@@ -291,16 +295,18 @@ namespace FloorBlock::Contact
   ContactSolver<dim>::setup_exact_system()
   {
     const unsigned int n_u = fe_space.dof_handler().n_dofs();
-    exact                  = std::make_unique<ExactContact<dim>>(
-      nodes, exact_laws, homogeneous_constraints, n_u);
-    complementarity_scale = 1.; // the configured parameter
-    const unsigned int n_total = n_u + exact->n_multipliers();
+    exact                  = std::make_unique<ExactContact<dim>>(nodes,
+                                                exact_laws,
+                                                homogeneous_constraints,
+                                                n_u);
+    complementarity_scale  = 1.; // the configured parameter
+    const unsigned int             n_total = n_u + exact->n_multipliers();
     dealii::DynamicSparsityPattern couplings(n_total, n_total);
     for (auto entry = pattern.begin(); entry != pattern.end(); ++entry)
       couplings.add(entry->row(), entry->column());
     exact->add_couplings(couplings);
-    const MPI_Comm   communicator = fe_space.dof_handler().get_communicator();
-    const dealii::IndexSet all    = dealii::complete_index_set(n_total);
+    const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
+    const dealii::IndexSet all  = dealii::complete_index_set(n_total);
     system_pattern.reinit(all, all, couplings, communicator);
     system_pattern.compress();
     // K and the multipliers' forces B^T never change: stored once, copied
@@ -330,7 +336,7 @@ namespace FloorBlock::Contact
   ContactSolver<dim>::constraints_at(const double uplift_factor)
   {
     std::vector<Fem::DirichletCondition<dim>> conditions;
-    const UpliftSettings uplift = problem.uplift;
+    const UpliftSettings                      uplift = problem.uplift;
     for (const auto &support : problem.supports)
       {
         const bool moves = support.moves_with_uplift;
@@ -338,9 +344,8 @@ namespace FloorBlock::Contact
           {support.boundary_id,
            support.constrained_components,
            [uplift, uplift_factor, moves](const dealii::Point<dim> &point) {
-             return moves ?
-                      uplift_displacement(uplift, uplift_factor, point) :
-                      dealii::Tensor<1, dim>();
+             return moves ? uplift_displacement(uplift, uplift_factor, point) :
+                            dealii::Tensor<1, dim>();
            }});
       }
     return Fem::make_constraints(fe_space, conditions, false, dirichlet_dofs);
@@ -398,15 +403,13 @@ namespace FloorBlock::Contact
     // processes) keeps nothing between iterations and needs no near-null
     // space.
     const Solver::LinearSolveInfo info =
-      direct_solver ?
-        direct_solver->solve(matrix, right_hand_side, update) :
-      amg_solver ?
-        amg_solver->solve(matrix, right_hand_side, update, forcing) :
-        Solver::solve_linear_system(settings.linear,
-                                    matrix,
-                                    right_hand_side,
-                                    Solver::NearNullSpace(),
-                                    update);
+      direct_solver ? direct_solver->solve(matrix, right_hand_side, update) :
+      amg_solver ? amg_solver->solve(matrix, right_hand_side, update, forcing) :
+                   Solver::solve_linear_system(settings.linear,
+                                               matrix,
+                                               right_hand_side,
+                                               Solver::NearNullSpace(),
+                                               update);
     message = info.message;
     return info.success;
   }
@@ -414,9 +417,9 @@ namespace FloorBlock::Contact
   template <int dim>
   bool
   ContactSolver<dim>::solve_load_state(const Loading::LoadFactors &factors,
-                                  const double       prediction,
-                                  IncrementResult   &increment,
-                                  std::string       &failure_reason)
+                                       const double                prediction,
+                                       IncrementResult            &increment,
+                                       std::string &failure_reason)
   {
     const dealii::AffineConstraints<double> constraints = [&]() {
       dealii::TimerOutput::Scope scope(timer, "Contact: constraints");
@@ -428,12 +431,14 @@ namespace FloorBlock::Contact
 
     NewtonCallbacks callbacks;
     callbacks.assemble = [&]() {
-      dealii::TimerOutput::Scope scope(timer, "Contact: assemble");
+      dealii::TimerOutput::Scope            scope(timer, "Contact: assemble");
       const std::vector<JointResponse<dim>> responses = responses_at_iterate();
       matrix.copy_from(exact_equations() ? base_matrix :
                                            bulk->condensed_stiffness());
-      bulk->residual(
-        current_solution, factors.gravity, factors.support, residual);
+      bulk->residual(current_solution,
+                     factors.gravity,
+                     factors.support,
+                     residual);
       assemble_contact(
         nodes, responses, homogeneous_constraints, &matrix, &residual);
       if (exact_equations())
@@ -451,9 +456,10 @@ namespace FloorBlock::Contact
       iterate.set_signature = active_set.signature();
       iterate.counts        = active_set.counts();
       last_iterate_counts   = iterate.counts;
-      console << "    residual " << iterate.residual_norm << " N, stick/slip/open "
-              << iterate.counts.n_stick << "/" << iterate.counts.n_slip << "/"
-              << iterate.counts.n_open << std::endl;
+      console << "    residual " << iterate.residual_norm
+              << " N, stick/slip/open " << iterate.counts.n_stick << "/"
+              << iterate.counts.n_slip << "/" << iterate.counts.n_open
+              << std::endl;
       return iterate;
     };
     callbacks.solve_update = [&](const double forcing, std::string &message) {
@@ -476,8 +482,9 @@ namespace FloorBlock::Contact
         }
     };
     callbacks.round_off_floor = [&]() {
-      const double bulk_floor = bulk->round_off_floor(
-        current_solution, factors.gravity, factors.support);
+      const double bulk_floor = bulk->round_off_floor(current_solution,
+                                                      factors.gravity,
+                                                      factors.support);
       const double contact_floor =
         exact_equations() ? exact->round_off_floor(current_solution) : 0.;
       return std::hypot(bulk_floor, contact_floor);
@@ -540,9 +547,10 @@ namespace FloorBlock::Contact
 
   template <int dim>
   bool
-  ContactSolver<dim>::solve_from_penalty_start(const Loading::LoadFactors &factors,
-                                          IncrementResult   &increment,
-                                          std::string       &failure_reason)
+  ContactSolver<dim>::solve_from_penalty_start(
+    const Loading::LoadFactors &factors,
+    IncrementResult            &increment,
+    std::string                &failure_reason)
   {
     // The exact law's first iterate ties every pair (stick at g = 0,
     // lambda = 0); from there a block can reach an iterate held by
@@ -581,8 +589,8 @@ namespace FloorBlock::Contact
       {
         const JointResponse<dim> &response = responses[p];
         JointHistory<dim>        &history  = committed_history[p];
-        history.tangential_base = response.tangential_traction;
-        history.reference_slip  = response.slip;
+        history.tangential_base            = response.tangential_traction;
+        history.reference_slip             = response.slip;
         // UDEC convention: cohesion and tensile strength are lost for good
         // once the pair slips or opens.
         history.intact = history.intact && response.state == JointState::stick;
@@ -601,16 +609,16 @@ namespace FloorBlock::Contact
     committed_solution     = 0.;
     if (exact)
       {
-        exact->multipliers() = 0.;
+        exact->multipliers()  = 0.;
         committed_multipliers = exact->multipliers();
       }
 
     IncrementResult            increment;
     dealii::Timer              clock;
     Loading::LoadPathCallbacks callbacks;
-    callbacks.solve = [&](const Loading::LoadState            &state,
+    callbacks.solve = [&](const Loading::LoadState           &state,
                           const Loading::FailedStartRecorder &record_failure,
-                          std::string                         &reason) {
+                          std::string                        &reason) {
       clock.restart();
       return solve_increment(state, record_failure, increment, reason);
     };
@@ -624,8 +632,10 @@ namespace FloorBlock::Contact
     // solve, so nothing half-computed reaches a result file.
     callbacks.at_safe_point = stop_if_interrupted;
 
-    const Loading::LoadPathOutcome outcome = Loading::follow_load_path(
-      problem.steps, settings.max_cutbacks, callbacks);
+    const Loading::LoadPathOutcome outcome =
+      Loading::follow_load_path(problem.steps,
+                                settings.max_cutbacks,
+                                callbacks);
     add_statistics(result);
     if (!outcome.completed)
       {
@@ -648,10 +658,10 @@ namespace FloorBlock::Contact
   template <int dim>
   bool
   ContactSolver<dim>::solve_increment(
-    const Loading::LoadState            &state,
+    const Loading::LoadState           &state,
     const Loading::FailedStartRecorder &record_failed_start,
-    IncrementResult                     &increment,
-    std::string                         &failure_reason)
+    IncrementResult                    &increment,
+    std::string                        &failure_reason)
   {
     if (try_starts(state, record_failed_start, increment, failure_reason))
       return true;
@@ -697,10 +707,10 @@ namespace FloorBlock::Contact
   template <int dim>
   bool
   ContactSolver<dim>::try_starts(
-    const Loading::LoadState            &state,
+    const Loading::LoadState           &state,
     const Loading::FailedStartRecorder &record_failed_start,
-    IncrementResult                     &increment,
-    std::string                         &failure_reason)
+    IncrementResult                    &increment,
+    std::string                        &failure_reason)
   {
     increment = IncrementResult();
     const double prediction =
@@ -729,20 +739,22 @@ namespace FloorBlock::Contact
   template <int dim>
   void
   ContactSolver<dim>::commit_increment(const Loading::LoadState &state,
-                                  const dealii::Timer      &clock,
-                                  IncrementResult          &increment,
-                                  SolveResult              &result)
+                                       const dealii::Timer      &clock,
+                                       IncrementResult          &increment,
+                                       SolveResult              &result)
   {
-    dealii::TimerOutput::Scope scope(timer, "Contact: post-process");
+    dealii::TimerOutput::Scope            scope(timer, "Contact: post-process");
     const std::vector<JointResponse<dim>> responses = responses_at_iterate();
-    increment.stage        = state.stage;
-    increment.stage_factor = state.stage_factor;
-    increment.n_cutbacks   = state.n_cutbacks;
-    increment.complementarity_factor = complementarity_scale;
-    increment.counts       = count_states(states_of(responses));
+    increment.stage                                 = state.stage;
+    increment.stage_factor                          = state.stage_factor;
+    increment.n_cutbacks                            = state.n_cutbacks;
+    increment.complementarity_factor                = complementarity_scale;
+    increment.counts = count_states(states_of(responses));
     // readable_solution holds current_solution: responses_at_iterate().
-    post_processor->describe(
-      state.factors, responses, readable_solution, increment);
+    post_processor->describe(state.factors,
+                             responses,
+                             readable_solution,
+                             increment);
     last_change = current_solution;
     last_change -= committed_solution;
     commit(responses);
@@ -750,8 +762,8 @@ namespace FloorBlock::Contact
     console << "  " << Loading::stage_name(state.stage) << " "
             << state.stage_factor << ": newton "
             << increment.n_newton_iterations << ", stick/slip/open "
-            << increment.counts.n_stick << "/" << increment.counts.n_slip
-            << "/" << increment.counts.n_open << ", residual "
+            << increment.counts.n_stick << "/" << increment.counts.n_slip << "/"
+            << increment.counts.n_open << ", residual "
             << increment.relative_residual << ", imbalance "
             << increment.balance.relative_imbalance << std::endl;
     // The output has its own timer: stop this one, so that the report
@@ -760,8 +772,9 @@ namespace FloorBlock::Contact
     if (!settings.output_directory.empty())
       {
         dealii::TimerOutput::Scope output_scope(timer, "Contact: output");
-        post_processor->write_vtu(
-          responses, readable_solution, settings.output_directory);
+        post_processor->write_vtu(responses,
+                                  readable_solution,
+                                  settings.output_directory);
       }
     result.increments.push_back(increment);
   }
@@ -769,7 +782,7 @@ namespace FloorBlock::Contact
   template <int dim>
   void
   ContactSolver<dim>::discard_attempt(const std::string     &attempt,
-                                 const IncrementResult &increment)
+                                      const IncrementResult &increment)
   {
     n_failed_newton_iterations += increment.n_newton_iterations;
     console << "  failed: " << attempt << std::endl;
@@ -789,7 +802,7 @@ namespace FloorBlock::Contact
     result.n_failed_newton_iterations = n_failed_newton_iterations;
     if (amg_solver)
       {
-        result.n_amg_setups            = amg_solver->statistics().n_setups;
+        result.n_amg_setups = amg_solver->statistics().n_setups;
         result.n_amg_krylov_iterations =
           amg_solver->statistics().n_krylov_iterations;
       }

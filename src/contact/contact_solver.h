@@ -2,17 +2,17 @@
 
 #include <contact/active_set.h>
 #include <contact/contact_node.h>
+#include <contact/contact_problem.h>
 #include <contact/exact_contact.h>
 #include <contact/increment_post_processor.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
-#include <contact/contact_problem.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
 #include <loading/load_path.h>
-#include <solver/reused_factorization.h>
 #include <solver/reused_amg.h>
+#include <solver/reused_factorization.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -56,8 +56,8 @@ namespace FloorBlock::Contact
      * no law.
      */
     ContactSolver(const dealii::Triangulation<dim> &triangulation,
-                  const ContactProblem<dim>       &problem,
-                  const ContactSolverSettings    &settings);
+                  const ContactProblem<dim>        &problem,
+                  const ContactSolverSettings      &settings);
 
     /**
      * @brief Runs all stages.
@@ -97,10 +97,10 @@ namespace FloorBlock::Contact
      * each start is tried only when the one before failed.
      */
     bool
-    solve_increment(const Loading::LoadState            &state,
+    solve_increment(const Loading::LoadState           &state,
                     const Loading::FailedStartRecorder &record_failed_start,
-                    IncrementResult                     &increment,
-                    std::string                         &failure_reason);
+                    IncrementResult                    &increment,
+                    std::string                        &failure_reason);
     /**
      * Post-processes the converged @p increment into @p result, then makes
      * it the committed state.
@@ -113,10 +113,10 @@ namespace FloorBlock::Contact
                      SolveResult              &result);
     /** The starts of solve_increment() with the current parameters. */
     bool
-    try_starts(const Loading::LoadState            &state,
+    try_starts(const Loading::LoadState           &state,
                const Loading::FailedStartRecorder &record_failed_start,
-               IncrementResult                     &increment,
-               std::string                         &failure_reason);
+               IncrementResult                    &increment,
+               std::string                        &failure_reason);
     /** Back to the committed state after the failed @p attempt. */
     void
     discard_attempt(const std::string     &attempt,
@@ -124,9 +124,9 @@ namespace FloorBlock::Contact
     /** @p prediction: multiple of last_change added to the start (0: none). */
     bool
     solve_load_state(const Loading::LoadFactors &factors,
-                     const double       prediction,
-                     IncrementResult   &increment,
-                     std::string       &failure_reason);
+                     const double                prediction,
+                     IncrementResult            &increment,
+                     std::string                &failure_reason);
     /** Builds the multipliers' system (rigid-law pairs only). */
     void
     setup_exact_system();
@@ -143,8 +143,8 @@ namespace FloorBlock::Contact
      */
     bool
     solve_from_penalty_start(const Loading::LoadFactors &factors,
-                             IncrementResult   &increment,
-                             std::string       &failure_reason);
+                             IncrementResult            &increment,
+                             std::string                &failure_reason);
     dealii::AffineConstraints<double>
     constraints_at(const double uplift_factor);
     double
@@ -157,76 +157,76 @@ namespace FloorBlock::Contact
     void
     commit(const std::vector<JointResponse<dim>> &responses);
 
-    const ContactProblem<dim>      problem;
-    const ContactSolverSettings   settings;
-    const Fem::FeSpace<dim>         fe_space;
-    std::vector<ContactNode<dim>>   nodes;
+    const ContactProblem<dim>                       problem;
+    const ContactSolverSettings                     settings;
+    const Fem::FeSpace<dim>                         fe_space;
+    std::vector<ContactNode<dim>>                   nodes;
     std::vector<std::unique_ptr<CoulombJoint<dim>>> joint_laws;
-    std::vector<const CoulombJoint<dim> *>           pair_laws;
+    std::vector<const CoulombJoint<dim> *>          pair_laws;
     /** Per pair: the exact law, empty for a compliant pair. */
-    std::vector<std::optional<ExactPairLaw>>       exact_laws;
+    std::vector<std::optional<ExactPairLaw>> exact_laws;
     /**
      * Owns the springs of rigid-law pairs: kn = ks = c_n for the penalty
      * start, E/h for the pairs that yield at crosspoints.
      */
     std::vector<std::unique_ptr<CoulombJoint<dim>>> penalty_laws;
     /** pair_laws with the penalty springs in place of the exact law. */
-    std::vector<const CoulombJoint<dim> *>           penalty_pair_laws;
+    std::vector<const CoulombJoint<dim> *> penalty_pair_laws;
     /** Solving the penalty start (solve_from_penalty_start). */
-    bool                                           penalty_start = false;
+    bool penalty_start = false;
     /** The exact law's equations; null when every pair is compliant. */
-    std::unique_ptr<ExactContact<dim>>               exact;
+    std::unique_ptr<ExactContact<dim>> exact;
     /** Displacements and multipliers (exact law only). */
-    dealii::TrilinosWrappers::SparsityPattern      system_pattern;
+    dealii::TrilinosWrappers::SparsityPattern system_pattern;
     /** K and B^T, the constant part of the Newton matrix (exact law). */
-    dealii::TrilinosWrappers::SparseMatrix         base_matrix;
-    dealii::TrilinosWrappers::MPI::Vector          system_residual;
-    dealii::TrilinosWrappers::MPI::Vector          system_update;
-    dealii::Vector<double>                         multiplier_update;
-    dealii::Vector<double>                         multiplier_base;
-    dealii::Vector<double>                         committed_multipliers;
+    dealii::TrilinosWrappers::SparseMatrix base_matrix;
+    dealii::TrilinosWrappers::MPI::Vector  system_residual;
+    dealii::TrilinosWrappers::MPI::Vector  system_update;
+    dealii::Vector<double>                 multiplier_update;
+    dealii::Vector<double>                 multiplier_base;
+    dealii::Vector<double>                 committed_multipliers;
     /**
      * The exact law's complementarity parameter per the configured one:
      * solve_increment() lowers it when every start of a load state fails
      * and keeps it lowered for the rest of the solve.
      */
-    double complementarity_scale = 1.;
-    std::vector<JointHistory<dim>>  committed_history;
-    std::vector<JointHistory<dim>>  working_history;
-    std::vector<JointResponse<dim>> committed_responses;
+    double                            complementarity_scale = 1.;
+    std::vector<JointHistory<dim>>    committed_history;
+    std::vector<JointHistory<dim>>    working_history;
+    std::vector<JointResponse<dim>>   committed_responses;
     dealii::AffineConstraints<double> homogeneous_constraints;
     dealii::IndexSet                  dirichlet_dofs;
     /** Locally relevant DoFs and every pair's: what this process reads. */
-    dealii::IndexSet                  readable_dofs;
-    dealii::TrilinosWrappers::SparsityPattern pattern;
-    dealii::TrilinosWrappers::SparseMatrix    matrix;
+    dealii::IndexSet                               readable_dofs;
+    dealii::TrilinosWrappers::SparsityPattern      pattern;
+    dealii::TrilinosWrappers::SparseMatrix         matrix;
     std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
     /** Set when the linear systems are solved directly (see run()). */
     std::unique_ptr<Solver::ReusedFactorization> direct_solver;
     /** Set instead when GMRES + ML solves (large or distributed systems). */
-    std::unique_ptr<Solver::ReusedAmg>           amg_solver;
-    unsigned int                                 n_linear_solves = 0;
-    unsigned int n_failed_newton_iterations = 0;
-    dealii::TrilinosWrappers::MPI::Vector     current_solution;
+    std::unique_ptr<Solver::ReusedAmg>    amg_solver;
+    unsigned int                          n_linear_solves            = 0;
+    unsigned int                          n_failed_newton_iterations = 0;
+    dealii::TrilinosWrappers::MPI::Vector current_solution;
     /**
      * current_solution where a process reads it: its locally relevant
      * DoFs and every pair's (ghosts on a distributed mesh).
      */
-    dealii::TrilinosWrappers::MPI::Vector     readable_solution;
-    dealii::TrilinosWrappers::MPI::Vector     committed_solution;
-    dealii::TrilinosWrappers::MPI::Vector     newton_base;
-    dealii::TrilinosWrappers::MPI::Vector     update;
-    dealii::TrilinosWrappers::MPI::Vector     residual;
+    dealii::TrilinosWrappers::MPI::Vector readable_solution;
+    dealii::TrilinosWrappers::MPI::Vector committed_solution;
+    dealii::TrilinosWrappers::MPI::Vector newton_base;
+    dealii::TrilinosWrappers::MPI::Vector update;
+    dealii::TrilinosWrappers::MPI::Vector residual;
     /** Displacement change of the last converged increment (m), which
      *  the predictor scales by LoadState::prediction_ratio. */
-    dealii::TrilinosWrappers::MPI::Vector     last_change;
-    ActiveSet                                 active_set;
-    StateCounts                               last_iterate_counts;
+    dealii::TrilinosWrappers::MPI::Vector last_change;
+    ActiveSet                             active_set;
+    StateCounts                           last_iterate_counts;
     /** Appended to a failure message when compliant joints are very stiff. */
-    std::string                               stiffness_hint;
+    std::string stiffness_hint;
     /** Reports and VTU files of the converged increments. */
-    std::unique_ptr<IncrementPostProcessor<dim>>   post_processor;
-    dealii::ConditionalOStream                console;
-    dealii::TimerOutput                       timer;
+    std::unique_ptr<IncrementPostProcessor<dim>> post_processor;
+    dealii::ConditionalOStream                   console;
+    dealii::TimerOutput                          timer;
   };
 } // namespace FloorBlock::Contact

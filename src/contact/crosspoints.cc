@@ -81,9 +81,8 @@ namespace FloorBlock::Contact
         if (!is_exact[node.joint])
           continue;
         const unsigned int a = sets.index(vertex_of(node.dofs_a));
-        const unsigned int b = sets.index(node.against_rigid_obstacle() ?
-                                            ground_key :
-                                            vertex_of(node.dofs_b));
+        const unsigned int b = sets.index(
+          node.against_rigid_obstacle() ? ground_key : vertex_of(node.dofs_b));
         yields[p] = !sets.join(a, b);
       }
     return yields;

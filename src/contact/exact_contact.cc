@@ -50,10 +50,10 @@ namespace FloorBlock::Contact
 
   template <int dim>
   ExactContact<dim>::ExactContact(
-    const std::vector<ContactNode<dim>>                         &nodes,
-    const std::vector<std::optional<ExactPairLaw>>              &laws,
-    const dealii::AffineConstraints<double> &constraints,
-    const unsigned int                       n_displacement_dofs)
+    const std::vector<ContactNode<dim>>            &nodes,
+    const std::vector<std::optional<ExactPairLaw>> &laws,
+    const dealii::AffineConstraints<double>        &constraints,
+    const unsigned int                              n_displacement_dofs)
     : nodes(nodes)
     , constraints(constraints)
     , n_displacement_dofs(n_displacement_dofs)
@@ -195,9 +195,7 @@ namespace FloorBlock::Contact
             for (unsigned int c = 0; c < dim; ++c)
               for (const auto &[sign, dof] : side_dofs(node, c))
                 for (const auto &[row, share] : distributed(dof))
-                  matrix.add(row,
-                             column,
-                             weight * sign * share * direction[c]);
+                  matrix.add(row, column, weight * sign * share * direction[c]);
           }
       }
     matrix.compress(dealii::VectorOperation::add);
@@ -219,9 +217,9 @@ namespace FloorBlock::Contact
         for (unsigned int c = 0; c < dim; ++c)
           for (const auto &[sign, dof] : side_dofs(node, c))
             jump[c] += sign * solution(dof);
-        const double                 weight = node.weight;
-        const double                 gap    = jump * node.normal;
-        const dealii::Tensor<1, dim> slip   = jump - gap * node.normal;
+        const double                 weight  = node.weight;
+        const double                 gap     = jump * node.normal;
+        const dealii::Tensor<1, dim> slip    = jump - gap * node.normal;
         const JointHistory<dim>     &history = histories[pair.node];
 
         const double scale = pair.intact_law.parameters().normal_parameter;
@@ -237,7 +235,7 @@ namespace FloorBlock::Contact
                                                tangential_multiplier,
                                                gap,
                                                slip - history.reference_slip);
-        evaluations[k].weight = weight;
+        evaluations[k].weight   = weight;
 
         JointResponse<dim> &response = responses[pair.node];
         response                     = JointResponse<dim>();
@@ -390,18 +388,19 @@ namespace FloorBlock::Contact
                 add_fixed_direction_row(first + j, pair, matrix, residual);
                 continue;
               }
-            by_multipliers = {};
+            by_multipliers                        = {};
             const dealii::Tensor<1, dim> &tangent = pair.tangents[j - 1];
-            residual(first + j) += weight * (tangent * response.tangential_residual);
+            residual(first + j) +=
+              weight * (tangent * response.tangential_residual);
             by_multipliers[0] = tangent * d.tangential_by_normal_multiplier;
             for (unsigned int m = 1; m < dim; ++m)
               by_multipliers[m] =
-                tangent * (d.tangential_by_tangential_multiplier *
-                           pair.tangents[m - 1]);
+                tangent *
+                (d.tangential_by_tangential_multiplier * pair.tangents[m - 1]);
             const dealii::Tensor<1, dim> by_jump =
-              weight * ((tangent * d.tangential_by_gap) * normal +
-                        tangent * d.tangential_by_slip_increment *
-                          tangent_projector);
+              weight *
+              ((tangent * d.tangential_by_gap) * normal +
+               tangent * d.tangential_by_slip_increment * tangent_projector);
             add_row(first + j, pair, by_multipliers, by_jump, matrix);
           }
       }

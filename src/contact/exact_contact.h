@@ -80,11 +80,10 @@ namespace FloorBlock::Contact
      * @p nodes and @p constraints are kept by reference: they must outlive
      * this object and keep their addresses (ContactSolver owns all three).
      */
-    ExactContact(
-      const std::vector<ContactNode<dim>>                      &nodes,
-      const std::vector<std::optional<ExactPairLaw>>           &laws,
-      const dealii::AffineConstraints<double> &constraints,
-      const unsigned int                       n_displacement_dofs);
+    ExactContact(const std::vector<ContactNode<dim>>            &nodes,
+                 const std::vector<std::optional<ExactPairLaw>> &laws,
+                 const dealii::AffineConstraints<double>        &constraints,
+                 const unsigned int n_displacement_dofs);
 
     /** @brief Number of pairs with multipliers. */
     unsigned int
@@ -142,7 +141,8 @@ namespace FloorBlock::Contact
      * error of forming the gap of a closed pair.
      */
     double
-    round_off_floor(const dealii::TrilinosWrappers::MPI::Vector &solution) const;
+    round_off_floor(
+      const dealii::TrilinosWrappers::MPI::Vector &solution) const;
 
     /**
      * @brief Sets the multipliers of the pairs open at the last
@@ -207,11 +207,11 @@ namespace FloorBlock::Contact
      * dropped for a Dirichlet DoF) as the constraints say.
      */
     void
-    add_row(const unsigned int                        row,
-            const ExactPair                          &pair,
-            const std::array<double, dim>            &by_multipliers,
-            const dealii::Tensor<1, dim>             &by_jump,
-            dealii::TrilinosWrappers::SparseMatrix   &matrix) const;
+    add_row(const unsigned int                      row,
+            const ExactPair                        &pair,
+            const std::array<double, dim>          &by_multipliers,
+            const dealii::Tensor<1, dim>           &by_jump,
+            dealii::TrilinosWrappers::SparseMatrix &matrix) const;
 
     /** The equation mu = 0 of a direction held on both sides. */
     void

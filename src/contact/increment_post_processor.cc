@@ -19,8 +19,8 @@ namespace FloorBlock::Contact
     const Fem::FeSpace<dim>             &fe_space,
     const ContactProblem<dim>           &problem,
     const std::vector<ContactNode<dim>> &nodes,
-    const dealii::IndexSet            &dirichlet_dofs,
-    const double                       averaging_length)
+    const dealii::IndexSet              &dirichlet_dofs,
+    const double                         averaging_length)
     : fe_space(fe_space)
     , problem(problem)
     , nodes(nodes)
@@ -47,7 +47,7 @@ namespace FloorBlock::Contact
   void
   IncrementPostProcessor<dim>::describe(
     const Loading::LoadFactors                  &factors,
-    const std::vector<JointResponse<dim>>         &responses,
+    const std::vector<JointResponse<dim>>       &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution,
     IncrementResult                             &increment)
   {
@@ -78,7 +78,7 @@ namespace FloorBlock::Contact
   ForceBalance
   IncrementPostProcessor<dim>::force_balance(
     const Loading::LoadFactors                  &factors,
-    const std::vector<JointResponse<dim>>         &responses,
+    const std::vector<JointResponse<dim>>       &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
     Fem::ElasticModel<dim> model = problem.model;
@@ -138,8 +138,9 @@ namespace FloorBlock::Contact
           reaction_magnitude += magnitude;
         }
     const MPI_Comm communicator = fe_space.dof_handler().get_communicator();
-    applied_load     = dealii::Utilities::MPI::sum(applied_load, communicator);
-    support_reaction = dealii::Utilities::MPI::sum(support_reaction, communicator);
+    applied_load = dealii::Utilities::MPI::sum(applied_load, communicator);
+    support_reaction =
+      dealii::Utilities::MPI::sum(support_reaction, communicator);
     reaction_magnitude =
       dealii::Utilities::MPI::sum(reaction_magnitude, communicator);
     const double scale = applied_load.norm() + reaction_magnitude;
@@ -158,7 +159,7 @@ namespace FloorBlock::Contact
   template <int dim>
   void
   IncrementPostProcessor<dim>::write_vtu(
-    const std::vector<JointResponse<dim>>         &responses,
+    const std::vector<JointResponse<dim>>       &responses,
     const dealii::TrilinosWrappers::MPI::Vector &solution,
     const std::string                           &directory)
   {

@@ -38,7 +38,7 @@ namespace FloorBlock::Contact
     IncrementPostProcessor(const Fem::FeSpace<dim>             &fe_space,
                            const ContactProblem<dim>           &problem,
                            const std::vector<ContactNode<dim>> &nodes,
-                           const dealii::IndexSet            &dirichlet_dofs,
+                           const dealii::IndexSet              &dirichlet_dofs,
                            const double averaging_length);
 
     /**
@@ -50,7 +50,7 @@ namespace FloorBlock::Contact
      */
     void
     describe(const Loading::LoadFactors                  &factors,
-             const std::vector<JointResponse<dim>>         &responses,
+             const std::vector<JointResponse<dim>>       &responses,
              const dealii::TrilinosWrappers::MPI::Vector &solution,
              IncrementResult                             &increment);
 
@@ -59,27 +59,27 @@ namespace FloorBlock::Contact
      * @p directory, with the pairs' states as a debug field.
      */
     void
-    write_vtu(const std::vector<JointResponse<dim>>         &responses,
+    write_vtu(const std::vector<JointResponse<dim>>       &responses,
               const dealii::TrilinosWrappers::MPI::Vector &solution,
               const std::string                           &directory);
 
   private:
     ForceBalance
     force_balance(const Loading::LoadFactors                  &factors,
-                  const std::vector<JointResponse<dim>>         &responses,
+                  const std::vector<JointResponse<dim>>       &responses,
                   const dealii::TrilinosWrappers::MPI::Vector &solution);
 
     const Fem::FeSpace<dim>             &fe_space;
     const ContactProblem<dim>           &problem;
     const std::vector<ContactNode<dim>> &nodes;
-    const dealii::IndexSet            &dirichlet_dofs;
-    const double                       averaging_length;
+    const dealii::IndexSet              &dirichlet_dofs;
+    const double                         averaging_length;
     /**
      * Length of face the mesh stands for (m): 1 in 2D, the extent along
      * z in 3D; the reports give forces per metre of it.
      */
-    const double                       face_length;
-    std::vector<std::string>           joint_names;
+    const double             face_length;
+    std::vector<std::string> joint_names;
     /** Vector component (x 0, y 1, z 2) of every DoF. */
     std::vector<unsigned int> dof_component;
     Fem::CellMatrixCache      cell_matrices;

@@ -84,10 +84,9 @@ namespace FloorBlock::Contact
         response.tangential_traction = shear_limit * direction;
         // d t_t / d jump = (limit/|trial|) ks (I - n n - e e)
         //                + e (d limit / d jump), non-symmetric.
-        response.tangent += shear_limit / trial_magnitude *
-                            constants.shear_stiffness *
-                            (identity - normal_projector -
-                             outer_product(direction, direction));
+        response.tangent +=
+          shear_limit / trial_magnitude * constants.shear_stiffness *
+          (identity - normal_projector - outer_product(direction, direction));
         if (shear_limit > 0.)
           response.tangent -= friction_coefficient *
                               constants.normal_stiffness *

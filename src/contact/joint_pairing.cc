@@ -82,13 +82,13 @@ namespace FloorBlock::Contact
                  const dealii::types::boundary_id side)
     {
       using namespace dealii;
-      const FiniteElement<dim> &fe = space.fe();
-      FEFaceValues<dim> face_values(space.mapping(),
+      const FiniteElement<dim>            &fe = space.fe();
+      FEFaceValues<dim>                    face_values(space.mapping(),
                                     fe,
                                     space.face_quadrature(),
                                     update_values | update_normal_vectors |
                                       update_JxW_values);
-      const unsigned int n_cell_dofs = fe.n_dofs_per_cell();
+      const unsigned int                   n_cell_dofs = fe.n_dofs_per_cell();
       std::vector<types::global_dof_index> dof_indices(n_cell_dofs);
       std::map<types::global_dof_index, SideNode<dim>> nodes;
       for (const auto &cell : space.dof_handler().active_cell_iterators())
@@ -127,10 +127,11 @@ namespace FloorBlock::Contact
                   }
               }
           }
-      nodes = merge_over_processes(nodes, space.dof_handler().get_communicator());
+      nodes =
+        merge_over_processes(nodes, space.dof_handler().get_communicator());
       if (nodes.empty())
-        throw InputError("joint side with boundary id " +
-                         std::to_string(side) + " has no faces in the mesh");
+        throw InputError("joint side with boundary id " + std::to_string(side) +
+                         " has no faces in the mesh");
       std::vector<SideNode<dim>> result;
       for (const auto &entry : nodes)
         result.push_back(entry.second);
@@ -390,9 +391,8 @@ namespace FloorBlock::Contact
       for (unsigned int k = 0; k < nodes_a.size(); ++k)
         if (taken_a[k])
           common.push_back(nodes_a[k]);
-      const JointLine line = joint_line(common);
-      const auto      sections_a =
-        unpaired_by_section(nodes_a, taken_a, tolerance);
+      const JointLine line  = joint_line(common);
+      const auto sections_a = unpaired_by_section(nodes_a, taken_a, tolerance);
       const auto sections_b = unpaired_by_section(nodes_b, taken_b, tolerance);
       const auto section_z  = [](const auto &section) {
         if constexpr (dim == 2)
@@ -401,7 +401,7 @@ namespace FloorBlock::Contact
           return section.front()->position[2];
       };
       std::vector<ContactNode<dim>> pairs;
-      std::vector<bool> b_section_used(sections_b.size(), false);
+      std::vector<bool>             b_section_used(sections_b.size(), false);
       for (const auto &section_a : sections_a)
         {
           // The side-B nodes of the same cross-section, if any.
@@ -456,7 +456,7 @@ namespace FloorBlock::Contact
   {
     const std::vector<SideNode<dim>> nodes_a = collect_side(space, side_a);
     const std::vector<SideNode<dim>> nodes_b = collect_side(space, side_b);
-    const std::string joint_name =
+    const std::string                joint_name =
       "joint " + std::to_string(side_a) + "/" + std::to_string(side_b);
     const double tolerance =
       position_tolerance_factor * space.minimal_cell_diameter();
@@ -511,7 +511,7 @@ namespace FloorBlock::Contact
         ContactNode<dim> pair = make_contact_node(node, joint_index);
         pair.normal           = plane_normal / plane_normal.norm();
         const dealii::Tensor<1, dim> offset = node.position - plane_point;
-        const double normal_offset = offset * pair.normal;
+        const double                 normal_offset = offset * pair.normal;
         // s^2 = |x - p0|^2 - ((x - p0) . n)^2 in any dimension.
         const double along_squared =
           std::max(0., offset.norm_square() - normal_offset * normal_offset);

@@ -12,9 +12,11 @@ namespace FloorBlock::Contact
   {
     /** Pairs of coincident nodes (initial gap 0). */
     unsigned int n_coincident = 0;
-    /** Pairs of mirror-image fillet nodes across the joint (initial gap > 0). */
+    /** Pairs of mirror-image fillet nodes across the joint (initial gap > 0).
+     */
     unsigned int n_mirrored = 0;
-    /** Nodes of side A / side B beyond the common part left without a partner (free surface). */
+    /** Nodes of side A / side B beyond the common part left without a partner
+     * (free surface). */
     unsigned int n_free_a = 0;
     unsigned int n_free_b = 0;
   };

@@ -34,29 +34,31 @@ namespace FloorBlock::Contact
                      const std::vector<unsigned int>   &members)
     {
       std::vector<std::pair<dealii::Tensor<1, 2>, double>> groups;
-      dealii::Tensor<1, 2> weighted_sum;
-      double               total_weight = 0.;
+      dealii::Tensor<1, 2>                                 weighted_sum;
+      double                                               total_weight = 0.;
       for (const unsigned int p : members)
         {
           const ContactNode<2> &node = nodes[p];
           weighted_sum += node.weight * node.normal;
           total_weight += node.weight;
-          auto group = std::find_if(
-            groups.begin(), groups.end(), [&](const auto &candidate) {
-              return (candidate.first - node.normal).norm() <
-                     same_normal_tolerance;
-            });
+          auto group =
+            std::find_if(groups.begin(),
+                         groups.end(),
+                         [&](const auto &candidate) {
+                           return (candidate.first - node.normal).norm() <
+                                  same_normal_tolerance;
+                         });
           if (group == groups.end())
             groups.emplace_back(node.normal, node.weight);
           else
             group->second += node.weight;
         }
-      const auto heaviest = std::max_element(
-        groups.begin(), groups.end(), [](const auto &a, const auto &b) {
-          return a.second < b.second;
-        });
-      if (heaviest->second >= total_weight / 2. ||
-          !(weighted_sum.norm() > 0.))
+      const auto heaviest = std::max_element(groups.begin(),
+                                             groups.end(),
+                                             [](const auto &a, const auto &b) {
+                                               return a.second < b.second;
+                                             });
+      if (heaviest->second >= total_weight / 2. || !(weighted_sum.norm() > 0.))
         return heaviest->first;
       return weighted_sum / weighted_sum.norm();
     }
@@ -71,13 +73,12 @@ namespace FloorBlock::Contact
     weight_shares(const std::vector<JointNodeSample> &profile,
                   const std::vector<double>          &weights)
     {
-      const unsigned int n_nodes = profile.size();
+      const unsigned int                     n_nodes = profile.size();
       std::vector<std::pair<double, double>> shares(n_nodes, {0., 0.});
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
           const double to_previous =
-            k == 0 ? 0. :
-                     profile[k].arc_position - profile[k - 1].arc_position;
+            k == 0 ? 0. : profile[k].arc_position - profile[k - 1].arc_position;
           const double to_next =
             k + 1 == n_nodes ?
               0. :
@@ -106,10 +107,10 @@ namespace FloorBlock::Contact
                     const unsigned int                  closed,
                     const unsigned int                  open)
     {
-      const bool         inward_up = closed > open;
-      const bool         has_next  = inward_up ? closed + 1 < profile.size() :
-                                                 closed > 0;
-      const unsigned int next      = inward_up ? closed + 1 : closed - 1;
+      const bool inward_up = closed > open;
+      const bool has_next =
+        inward_up ? closed + 1 < profile.size() : closed > 0;
+      const unsigned int     next     = inward_up ? closed + 1 : closed - 1;
       const JointNodeSample &end_node = profile[closed];
       if (end_node.exact_traction && has_next &&
           profile[next].state != JointState::open &&
@@ -120,13 +121,13 @@ namespace FloorBlock::Contact
           const double segment =
             std::abs(profile[open].arc_position - end_node.arc_position);
           if (p_next > p_end && segment > 0.)
-            return std::min(1.,
-                            square_root_edge_extent(
-                              p_end,
-                              p_next,
-                              std::abs(profile[next].arc_position -
-                                       end_node.arc_position)) /
-                              segment);
+            return std::min(
+              1.,
+              square_root_edge_extent(p_end,
+                                      p_next,
+                                      std::abs(profile[next].arc_position -
+                                               end_node.arc_position)) /
+                segment);
         }
       const double inside  = indicators[closed];
       const double outside = indicators[open];
@@ -153,7 +154,7 @@ namespace FloorBlock::Contact
                                 const unsigned int                  closed,
                                 const unsigned int                  open)
     {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const double nan     = std::numeric_limits<double>::quiet_NaN();
       const int    inward  = closed > open ? 1 : -1;
       const int    n_nodes = static_cast<int>(profile.size());
       const auto   node_at = [&](const int step) -> int {
@@ -176,14 +177,13 @@ namespace FloorBlock::Contact
           const double p2 = profile[beyond].normal_traction;
           if (!(p2 > p1 && p1 > 0.))
             return nan;
-          const double spacing = std::abs(profile[beyond].arc_position -
-                                          profile[next].arc_position);
+          const double spacing =
+            std::abs(profile[beyond].arc_position - profile[next].arc_position);
           // Zero of the line through (s_next, p1^2), (s_beyond, p2^2),
           // measured outward from the next node, then from the end node.
           const double from_next = p1 * p1 * spacing / (p2 * p2 - p1 * p1);
           const double from_end =
-            from_next -
-            std::abs(profile[next].arc_position - s_closed);
+            from_next - std::abs(profile[next].arc_position - s_closed);
           return std::clamp(from_end / segment, 0., 1.);
         }
       const int far = static_cast<int>(open) - inward;
@@ -192,7 +192,8 @@ namespace FloorBlock::Contact
       const double s[3] = {profile[far].arc_position,
                            profile[open].arc_position,
                            s_closed};
-      const double g[3] = {indicators[far], indicators[open],
+      const double g[3] = {indicators[far],
+                           indicators[open],
                            indicators[closed]};
       if (!(g[2] >= 0. && g[1] < 0.) || std::isnan(g[0]))
         return nan;
@@ -230,7 +231,7 @@ namespace FloorBlock::Contact
     std::pair<double, double>
     interpolated_closed_length(const std::vector<JointNodeSample> &profile,
                                const std::vector<double>          &weights,
-                               const std::vector<double> &indicators)
+                               const std::vector<double>          &indicators)
     {
       double length      = 0.;
       double uncertainty = 0.;
@@ -255,9 +256,11 @@ namespace FloorBlock::Contact
           if (std::isnan(fraction))
             continue;
           length += fraction * segment - closed_share;
-          const double alternative = alternative_closed_fraction(
-            profile, indicators, first_closed ? k : k + 1,
-            first_closed ? k + 1 : k);
+          const double alternative =
+            alternative_closed_fraction(profile,
+                                        indicators,
+                                        first_closed ? k : k + 1,
+                                        first_closed ? k + 1 : k);
           if (!std::isnan(alternative))
             uncertainty += std::abs(alternative - fraction) * segment;
         }
@@ -342,7 +345,7 @@ namespace FloorBlock::Contact
                      const std::vector<std::string>      &names,
                      const double                         averaging_length)
   {
-    std::vector<JointReport> reports(names.size());
+    std::vector<JointReport>               reports(names.size());
     std::vector<std::vector<unsigned int>> members(names.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)
       members[nodes[p].joint].push_back(p);
@@ -354,8 +357,8 @@ namespace FloorBlock::Contact
         report.averaging_length = averaging_length;
         if (members[j].empty())
           continue;
-        const ContactNode<2> &first = nodes[members[j].front()];
-        const dealii::Tensor<1, 2> normal  = reference_normal(nodes, members[j]);
+        const ContactNode<2>      &first  = nodes[members[j].front()];
+        const dealii::Tensor<1, 2> normal = reference_normal(nodes, members[j]);
         const dealii::Tensor<1, 2> tangent = tangent_of(normal);
         std::sort(members[j].begin(),
                   members[j].end(),
@@ -363,8 +366,8 @@ namespace FloorBlock::Contact
                     return (nodes[a].position - first.position) * tangent <
                            (nodes[b].position - first.position) * tangent;
                   });
-        std::vector<double>    weights;
-        std::vector<double>    indicators;
+        std::vector<double> weights;
+        std::vector<double> indicators;
         for (const unsigned int p : members[j])
           {
             const JointResponse<2> &response = responses[p];
@@ -388,8 +391,7 @@ namespace FloorBlock::Contact
             sample.exact_traction = response.exact_traction;
             report.profile.push_back(sample);
             weights.push_back(weight);
-            indicators.push_back(
-              contact_indicator(response));
+            indicators.push_back(contact_indicator(response));
             // The joint's forces are the components of the resultant
             // along the reference normal and tangent, so that the joint
             // tables balance each block also where fillet nodes turn

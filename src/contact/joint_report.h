@@ -108,8 +108,8 @@ namespace FloorBlock::Contact
    * window integrates force whatever the node spacing and its mean never
    * exceeds the pointwise peak; windows are centred on nodes' intervals
    * and shifted to stay inside the joint (the whole joint if it is
-   * shorter than the window). Shared with the rigid-block model so both report the same
-   * averaged peak.
+   * shorter than the window). Shared with the rigid-block model so both report
+   * the same averaged peak.
    *
    * @param[in,out] report Profile sorted by arc_position, peaks zero.
    * @param[in] weights Length each profile node stands for (m).

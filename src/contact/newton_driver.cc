@@ -21,15 +21,14 @@ namespace FloorBlock::Contact
          0.;
     // A zero load and zero first residual means nothing to do; the
     // smallest normal double keeps the ratio finite.
-    const double reference = std::max({reference_force,
-                                       first_residual,
-                                       std::numeric_limits<double>::min()});
+    const double reference = std::max(
+      {reference_force, first_residual, std::numeric_limits<double>::min()});
     std::map<std::uint64_t, unsigned int> revisits;
-    const double stop_residual = settings.relative_tolerance * reference;
+    const double stop_residual     = settings.relative_tolerance * reference;
     double       previous_residual = 0.; // none before the first step
     double       forcing           = settings.forcing.maximum;
-    report.counts            = current.counts;
-    report.relative_residual = current.residual_norm / reference;
+    report.counts                  = current.counts;
+    report.relative_residual       = current.residual_norm / reference;
 
     for (unsigned int iteration = 1; iteration <= settings.max_iterations;
          ++iteration)
@@ -48,8 +47,8 @@ namespace FloorBlock::Contact
           }
         const NewtonIterate previous = current;
         previous_residual            = current.residual_norm;
-        double              step     = 1.;
-        bool                accepted = false;
+        double step                  = 1.;
+        bool   accepted              = false;
         for (unsigned int search = 0;
              search <= settings.max_line_search_steps && !accepted;
              ++search)
@@ -77,9 +76,9 @@ namespace FloorBlock::Contact
             report.failure_reason = "non-finite residual";
             return report;
           }
-        const bool set_stable =
-          current.set_signature == previous.set_signature;
-        if (set_stable && report.relative_residual <= settings.relative_tolerance)
+        const bool set_stable = current.set_signature == previous.set_signature;
+        if (set_stable &&
+            report.relative_residual <= settings.relative_tolerance)
           {
             report.converged = true;
             return report;

@@ -120,9 +120,9 @@ namespace FloorBlock::Contact
    * @param[in] reference How the reference force is formed.
    */
   NewtonReport
-  solve_newton(const NewtonSettings  &settings,
-               const double           reference_force,
-               const NewtonCallbacks &callbacks,
-               const ReferenceForce   reference =
-                 ReferenceForce::given_or_first_residual);
+  solve_newton(
+    const NewtonSettings  &settings,
+    const double           reference_force,
+    const NewtonCallbacks &callbacks,
+    const ReferenceForce   reference = ReferenceForce::given_or_first_residual);
 } // namespace FloorBlock::Contact

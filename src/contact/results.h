@@ -20,12 +20,12 @@ namespace FloorBlock::Contact
   struct JointNodeSample
   {
     /** Distance along the joint from its first node (m). */
-    double arc_position = 0.;
+    double           arc_position = 0.;
     dealii::Point<2> position;
-    double           normal_traction     = 0.; ///< Pa, compression > 0
-    double           tangential_traction = 0.; ///< Pa, along the tangent (-n_y, n_x)
-    double           gap                 = 0.; ///< m
-    JointState       state               = JointState::open;
+    double           normal_traction = 0.; ///< Pa, compression > 0
+    double     tangential_traction = 0.; ///< Pa, along the tangent (-n_y, n_x)
+    double     gap                 = 0.; ///< m
+    JointState state               = JointState::open;
     /** JointResponse::exact_traction of the pair. */
     bool exact_traction = false;
   };
@@ -38,9 +38,9 @@ namespace FloorBlock::Contact
    */
   struct JointSection
   {
-    double z      = 0.; ///< m, the line's position along the face
-    double z_from = 0.; ///< m, start of the face it stands for
-    double z_to   = 0.; ///< m, end of the face it stands for
+    double z                  = 0.; ///< m, the line's position along the face
+    double z_from             = 0.; ///< m, start of the face it stands for
+    double z_to               = 0.; ///< m, end of the face it stands for
     double normal_force       = 0.; ///< N/m, the line's normal force per metre
     double shear_force        = 0.; ///< N/m, in-plane shear per metre
     double closed_length      = 0.; ///< m, the line's contact length
@@ -78,7 +78,8 @@ namespace FloorBlock::Contact
     dealii::Point<2> peak_position;
     /** 3D: z of the pointwise peak (m); 0 in 2D. */
     double peak_position_z = 0.;
-    /** Largest normal traction averaged over ContactSolverSettings::averaging_length (Pa). */
+    /** Largest normal traction averaged over
+     * ContactSolverSettings::averaging_length (Pa). */
     double averaged_peak_normal_stress = 0.;
     double averaging_length            = 0.;
     /** normal_force / closed_length, 0 when open (Pa). */
@@ -125,7 +126,7 @@ namespace FloorBlock::Contact
   {
     Loading::LoadStage stage = Loading::LoadStage::gravity;
     /** Fraction of the stage's load reached (-). */
-    double       stage_factor        = 0.;
+    double stage_factor = 0.;
     /**
      * Of the start that converged; a discarded extrapolated start's
      * iterations count in SolveResult::n_failed_newton_iterations.
@@ -138,7 +139,7 @@ namespace FloorBlock::Contact
      */
     bool started_from_penalty = false;
     /** Failed attempts (cutbacks) before this increment converged. */
-    unsigned int n_cutbacks        = 0;
+    unsigned int n_cutbacks = 0;
     /**
      * Rigid law: the complementarity parameter in force when this
      * increment converged, as a fraction of the configured one
@@ -147,12 +148,13 @@ namespace FloorBlock::Contact
      * 1 for the compliant law, which has no such parameter.
      */
     double complementarity_factor = 1.;
-    double       relative_residual = 0.;
-    /** Newton stopped on the round-off floor of the residual (see NewtonIterate). */
-    bool         round_off_limited = false;
-    StateCounts  counts;
-    ForceBalance balance;
-    std::vector<JointReport>                                      joints;
+    double relative_residual      = 0.;
+    /** Newton stopped on the round-off floor of the residual (see
+     * NewtonIterate). */
+    bool                     round_off_limited = false;
+    StateCounts              counts;
+    ForceBalance             balance;
+    std::vector<JointReport> joints;
     /**
      * Rigid-body fit of every body; 3D: the x-y translation and the
      * rotation about z, averaged over the volume (u_z is not kept).
@@ -167,7 +169,7 @@ namespace FloorBlock::Contact
     std::vector<IncrementResult> increments;
     /** Wall time per TimerOutput section ("Contact: assemble", ...) (s). */
     std::map<std::string, double> wall_times;
-    unsigned int                  n_dofs         = 0;
+    unsigned int                  n_dofs          = 0;
     unsigned int                  n_contact_pairs = 0;
     /** Linear solves of all Newton iterations, failed increments included. */
     unsigned int n_linear_solves = 0;
@@ -179,9 +181,11 @@ namespace FloorBlock::Contact
     unsigned int n_amg_setups = 0;
     /** GMRES iterations preconditioned by ML AMG (iterative solver only). */
     unsigned int n_amg_krylov_iterations = 0;
-    /** Direct solutions accepted above the residual tolerance (ill-conditioned matrix). */
+    /** Direct solutions accepted above the residual tolerance (ill-conditioned
+     * matrix). */
     unsigned int n_solves_above_tolerance = 0;
-    /** Newton iterations of failed attempts (cut back or retried), not in any increment. */
+    /** Newton iterations of failed attempts (cut back or retried), not in any
+     * increment. */
     unsigned int n_failed_newton_iterations = 0;
   };
 
@@ -193,10 +197,10 @@ namespace FloorBlock::Contact
   class ContactSolveFailure : public std::runtime_error
   {
   public:
-    ContactSolveFailure(const std::string              &message,
-                        std::vector<std::string>        attempts,
-                        std::optional<IncrementResult>  last_converged,
-                        const StateCounts              &last_iterate_counts)
+    ContactSolveFailure(const std::string             &message,
+                        std::vector<std::string>       attempts,
+                        std::optional<IncrementResult> last_converged,
+                        const StateCounts             &last_iterate_counts)
       : std::runtime_error(message)
       , attempts(std::move(attempts))
       , last_converged(std::move(last_converged))
@@ -204,7 +208,7 @@ namespace FloorBlock::Contact
     {}
 
     /** One line per failed attempt: stage, factor, reason. */
-    std::vector<std::string> attempts;
+    std::vector<std::string>       attempts;
     std::optional<IncrementResult> last_converged;
     /** Open/stick/slip counts of the last Newton iterate tried. */
     StateCounts last_iterate_counts;

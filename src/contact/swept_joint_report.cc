@@ -49,8 +49,8 @@ namespace FloorBlock::Contact
           plane_node.normal      = in_plane(node.normal);
           plane_node.initial_gap = node.initial_gap;
           JointResponse<2> plane_response;
-          plane_response.state               = response.state;
-          plane_response.normal_traction     = response.normal_traction;
+          plane_response.state           = response.state;
+          plane_response.normal_traction = response.normal_traction;
           plane_response.tangential_traction =
             in_plane(response.tangential_traction);
           plane_response.force_density     = in_plane(response.force_density);
@@ -61,8 +61,10 @@ namespace FloorBlock::Contact
           plane_nodes.push_back(plane_node);
           plane_responses.push_back(plane_response);
         }
-      return make_joint_reports(
-               plane_nodes, plane_responses, {name}, averaging_length)
+      return make_joint_reports(plane_nodes,
+                                plane_responses,
+                                {name},
+                                averaging_length)
         .front();
     }
 
@@ -87,12 +89,12 @@ namespace FloorBlock::Contact
                const double                                  face_length)
     {
       JointSection section;
-      section.z      = section_z(nodes, sections[k]);
-      section.z_from = k == 0 ? 0. :
-                                (section_z(nodes, sections[k - 1]) + section.z) / 2.;
-      section.z_to   = k + 1 == sections.size() ?
-                         face_length :
-                         (section.z + section_z(nodes, sections[k + 1])) / 2.;
+      section.z = section_z(nodes, sections[k]);
+      section.z_from =
+        k == 0 ? 0. : (section_z(nodes, sections[k - 1]) + section.z) / 2.;
+      section.z_to               = k + 1 == sections.size() ?
+                                     face_length :
+                                     (section.z + section_z(nodes, sections[k + 1])) / 2.;
       section.normal_force       = part.normal_force;
       section.shear_force        = part.shear_force;
       section.closed_length      = part.closed_length;
@@ -122,8 +124,8 @@ namespace FloorBlock::Contact
         report.face_length      = face_length;
         const auto sections =
           sections_along_face(nodes, members[j], face_length);
-        const auto lengths = section_lengths(nodes, sections, face_length);
-        const double middle_z       = face_length / 2.;
+        const auto   lengths  = section_lengths(nodes, sections, face_length);
+        const double middle_z = face_length / 2.;
         double       profile_offset = std::numeric_limits<double>::infinity();
         double       contact_area   = 0.;
         double       uncertainty    = 0.;

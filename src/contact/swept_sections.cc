@@ -59,8 +59,9 @@ namespace FloorBlock::Contact
           if constexpr (dim == 2)
             smallest = std::min(smallest, cell->diameter());
           else
-            smallest = std::min(
-              smallest, cell->face(bottom_face_of_hexahedron)->diameter());
+            smallest =
+              std::min(smallest,
+                       cell->face(bottom_face_of_hexahedron)->diameter());
         }
     return dealii::Utilities::MPI::min(smallest,
                                        triangulation.get_communicator());
@@ -108,9 +109,8 @@ namespace FloorBlock::Contact
       }
     std::vector<double> lengths;
     for (const double weight : weights)
-      lengths.push_back(joint_weight > 0. ?
-                          face_length * weight / joint_weight :
-                          0.);
+      lengths.push_back(
+        joint_weight > 0. ? face_length * weight / joint_weight : 0.);
     return lengths;
   }
 
@@ -135,7 +135,8 @@ namespace FloorBlock::Contact
             const auto lengths = section_lengths(nodes, sections, face_length);
             for (unsigned int k = 0; k < sections.size(); ++k)
               for (const unsigned int p : sections[k])
-                weights[p] = lengths[k] > 0. ? nodes[p].weight / lengths[k] : 0.;
+                weights[p] =
+                  lengths[k] > 0. ? nodes[p].weight / lengths[k] : 0.;
           }
       }
     else

@@ -11,8 +11,8 @@ namespace FloorBlock::Contact
                       const dealii::Point<dim> &position)
   {
     dealii::Tensor<1, dim> displacement;
-    const double         dx = position[0] - settings.pivot_x;
-    const double         dy = position[1] - settings.pivot_y;
+    const double           dx = position[0] - settings.pivot_x;
+    const double           dy = position[1] - settings.pivot_y;
     switch (settings.mode)
       {
         case UpliftMotion::vertical_translation:
@@ -24,8 +24,7 @@ namespace FloorBlock::Contact
           displacement[1] =
             stage_factor * settings.magnitude * std::sin(settings.dip_angle);
           break;
-        case UpliftMotion::tilt:
-          {
+          case UpliftMotion::tilt: {
             const double angle = stage_factor * settings.magnitude;
             displacement[0] = std::cos(angle) * dx - std::sin(angle) * dy - dx;
             displacement[1] = std::sin(angle) * dx + std::cos(angle) * dy - dy;

@@ -11,8 +11,8 @@ namespace FloorBlock::Contact
    * @brief Displacement (m) of a moved support point at fraction
    * @p stage_factor (0..1) of the uplift stage.
    *
-   * Translations, the parabola and the slope scale linearly with the factor; the tilt
-   * is an exact rotation by factor x angle about the pivot, so rigid
+   * Translations, the parabola and the slope scale linearly with the factor;
+   * the tilt is an exact rotation by factor x angle about the pivot, so rigid
    * rotations stay strain-free.
    * @param[in] settings Uplift mode and magnitude.
    * @param[in] stage_factor Fraction of the stage reached (-).

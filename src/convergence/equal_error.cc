@@ -13,8 +13,9 @@ namespace FloorBlock::Convergence
      * non-converged level breaks it.
      */
     std::optional<unsigned int>
-    level_within(const Ladder &ladder, const std::size_t quantity_index,
-                 const double target)
+    level_within(const Ladder     &ladder,
+                 const std::size_t quantity_index,
+                 const double      target)
     {
       const auto &relative = ladder.errors.at(quantity_index).relative_errors;
       std::optional<unsigned int> first;
@@ -37,7 +38,8 @@ namespace FloorBlock::Convergence
   } // namespace
 
   void
-  estimate_ladder_errors(Ladder &ladder, const std::vector<Quantity> &quantities)
+  estimate_ladder_errors(Ladder                      &ladder,
+                         const std::vector<Quantity> &quantities)
   {
     ladder.errors.clear();
     for (const Quantity &quantity : quantities)

@@ -11,22 +11,26 @@ namespace FloorBlock::Convergence
   /** @brief A refinement ladder and the error estimate of each quantity. */
   struct Ladder
   {
-    std::string                 mode; ///< "uniform" or "adaptive"
-    std::vector<LevelRecord>    levels;
-    std::vector<SequenceErrors> errors; ///< one per quantities_of_interest() entry
-    /** Why the ladder ended before its last requested level (budget); empty otherwise. */
+    std::string              mode; ///< "uniform" or "adaptive"
+    std::vector<LevelRecord> levels;
+    std::vector<SequenceErrors>
+      errors; ///< one per quantities_of_interest() entry
+    /** Why the ladder ended before its last requested level (budget); empty
+     * otherwise. */
     std::string stopped_because;
   };
 
   /** @brief Estimates the errors of every quantity of a ladder. */
   void
-  estimate_ladder_errors(Ladder &ladder, const std::vector<Quantity> &quantities);
+  estimate_ladder_errors(Ladder                      &ladder,
+                         const std::vector<Quantity> &quantities);
 
   /** @brief Cost of uniform and adaptive refinement at one error level. */
   struct EqualErrorComparison
   {
     std::string quantity;
-    /** The refined ladder compared with uniform refinement ("adaptive" or "remesh"). */
+    /** The refined ladder compared with uniform refinement ("adaptive" or
+     * "remesh"). */
     std::string adaptive_mode;
     double      target_relative_error = 0.;
     /**

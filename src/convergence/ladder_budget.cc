@@ -37,12 +37,14 @@ namespace FloorBlock::Convergence
     if (forecast.n_dofs > double(budget.max_dofs))
       return fmt::format("the next level would have about {:.0f} DoFs, "
                          "above --max-dofs {}",
-                         forecast.n_dofs, budget.max_dofs);
+                         forecast.n_dofs,
+                         budget.max_dofs);
     const double left = budget.seconds - spent_seconds;
     if (forecast.wall_time > left)
       return fmt::format("the next level would take about {:.0f} s, {:.0f} s "
                          "of the --budget-seconds are left",
-                         forecast.wall_time, std::max(0., left));
+                         forecast.wall_time,
+                         std::max(0., left));
     return std::nullopt;
   }
 } // namespace FloorBlock::Convergence

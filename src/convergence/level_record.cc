@@ -7,24 +7,24 @@ namespace FloorBlock::Convergence
   {
     std::vector<Quantity> quantities;
     for (unsigned int joint = 1; joint <= n_blocks; ++joint)
-      quantities.push_back(
-        {joint == n_blocks ? std::string("Q_face") :
-                             "Q_" + std::to_string(joint),
-         "N_per_m", [joint](const LevelRecord &record) {
-           return record.joint_normal_forces.at(joint - 1);
-         }});
-    quantities.push_back({"contact_length_face", "m",
-                          [](const LevelRecord &record) {
-                            return record.face_contact_length;
-                          }});
-    quantities.push_back({"sigma_max_face", "Pa",
-                          [](const LevelRecord &record) {
-                            return record.face_sigma_max;
-                          }});
-    quantities.push_back({"sigma_max_averaged_face", "Pa",
-                          [](const LevelRecord &record) {
-                            return record.face_sigma_max_averaged;
-                          }});
+      quantities.push_back({joint == n_blocks ? std::string("Q_face") :
+                                                "Q_" + std::to_string(joint),
+                            "N_per_m",
+                            [joint](const LevelRecord &record) {
+                              return record.joint_normal_forces.at(joint - 1);
+                            }});
+    quantities.push_back(
+      {"contact_length_face", "m", [](const LevelRecord &record) {
+         return record.face_contact_length;
+       }});
+    quantities.push_back(
+      {"sigma_max_face", "Pa", [](const LevelRecord &record) {
+         return record.face_sigma_max;
+       }});
+    quantities.push_back(
+      {"sigma_max_averaged_face", "Pa", [](const LevelRecord &record) {
+         return record.face_sigma_max_averaged;
+       }});
     return quantities;
   }
 

@@ -12,23 +12,29 @@ namespace FloorBlock::Convergence
   /** @brief One level of a refinement ladder: its mesh, cost and answers. */
   struct LevelRecord
   {
-    std::string  mode;  ///< "uniform", "adaptive" or "remesh"
+    std::string  mode; ///< "uniform", "adaptive" or "remesh"
     unsigned int level = 0;
-    /** "converged", "not converged" (loading path not completed) or "failed" (mesh or solver error). */
+    /** "converged", "not converged" (loading path not completed) or "failed"
+     * (mesh or solver error). */
     std::string status;
     std::string status_text;
 
-    /** Base size function h(d) = min(far, corner + (growth - 1) d) of the level (m, m, 1). */
+    /** Base size function h(d) = min(far, corner + (growth - 1) d) of the level
+     * (m, m, 1). */
     double corner_size = 0.;
     double far_size    = 0.;
     double growth_rate = 0.;
-    /** Times every cell of that Gmsh mesh was halved (uniform: grows by one per level). */
+    /** Times every cell of that Gmsh mesh was halved (uniform: grows by one per
+     * level). */
     unsigned int global_refinements = 0;
-    /** Adaptive and remesh: number of solution-driven size requests the mesh honours. */
+    /** Adaptive and remesh: number of solution-driven size requests the mesh
+     * honours. */
     std::size_t n_local_sizes = 0;
-    /** Adaptive: refinement sweeps that made this level's mesh from the previous one. */
+    /** Adaptive: refinement sweeps that made this level's mesh from the
+     * previous one. */
     unsigned int n_refinement_sweeps = 0;
-    /** Adaptive: cells of the previous level removed by coarsening (children of coarsened parents). */
+    /** Adaptive: cells of the previous level removed by coarsening (children of
+     * coarsened parents). */
     std::size_t n_cells_coarsened = 0;
 
     std::size_t  n_cells           = 0;
@@ -40,7 +46,8 @@ namespace FloorBlock::Convergence
     /** Worst relative force imbalance over the converged increments (1). */
     double force_balance_error = 0.;
 
-    /** Wall time per stage (s): "mesh", the solver's "Contact: ..." sections, "indicator". */
+    /** Wall time per stage (s): "mesh", the solver's "Contact: ..." sections,
+     * "indicator". */
     std::map<std::string, double> stage_wall_times;
     /** Wall time of this level (s). */
     double wall_time = 0.;
@@ -53,7 +60,8 @@ namespace FloorBlock::Convergence
 
     /** Normal force Q_i of vertical joints 1..n, chapter numbering (N/m). */
     std::vector<double> joint_normal_forces;
-    /** Face joint (vertical joint n): closed length (m), pointwise and averaged peak normal stress (Pa). */
+    /** Face joint (vertical joint n): closed length (m), pointwise and averaged
+     * peak normal stress (Pa). */
     double face_contact_length     = 0.;
     double face_sigma_max          = 0.;
     double face_sigma_max_averaged = 0.;

@@ -25,7 +25,8 @@ namespace FloorBlock::Convergence
       std::vector<BoundaryFace> faces;
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == id)
             faces.push_back({cell, f});
       return faces;
     }
@@ -150,10 +151,11 @@ namespace FloorBlock::Convergence
                         const dealii::Point<2> &start,
                         const dealii::Point<2> &end)
     {
-      const dealii::Tensor<1, 2> along  = end - start;
+      const dealii::Tensor<1, 2> along   = end - start;
       const double               length2 = along.norm_square();
-      const double               t =
-        length2 > 0. ? std::clamp((point - start) * along / length2, 0., 1.) : 0.;
+      const double               t       = length2 > 0. ?
+                                             std::clamp((point - start) * along / length2, 0., 1.) :
+                                             0.;
       return point.distance(start + t * along);
     }
 
@@ -166,8 +168,8 @@ namespace FloorBlock::Convergence
                      const dealii::TriaAccessor<2, 2, 2> &cell)
     {
       constexpr std::array<unsigned int, 4> around = {{0, 1, 3, 2}};
-      double nearest = std::numeric_limits<double>::infinity();
-      bool   inside  = true;
+      double nearest     = std::numeric_limits<double>::infinity();
+      bool   inside      = true;
       double orientation = 0.;
       for (unsigned int k = 0; k < 4; ++k)
         {
@@ -176,7 +178,7 @@ namespace FloorBlock::Convergence
           nearest = std::min(nearest, distance_to_segment(point, start, end));
           const dealii::Tensor<1, 2> edge = end - start;
           const dealii::Tensor<1, 2> to   = point - start;
-          const double side = edge[0] * to[1] - edge[1] * to[0];
+          const double               side = edge[0] * to[1] - edge[1] * to[0];
           if (orientation == 0.)
             orientation = side;
           else if (side * orientation < 0.)
@@ -196,7 +198,8 @@ namespace FloorBlock::Convergence
         : requests(std::move(unsorted))
         , growth_rate(growth)
       {
-        std::sort(requests.begin(), requests.end(),
+        std::sort(requests.begin(),
+                  requests.end(),
                   [](const auto &a, const auto &b) {
                     return a.position.x < b.position.x;
                   });
@@ -204,30 +207,37 @@ namespace FloorBlock::Convergence
 
       /**
        * Smallest graded request on @p cell: Geometry::graded_size() at the
-       * distance d_p from request p to the cell (0 inside). Only requests within reach matter: beyond
-       * d = s / (g - 1) a request asks for more than the cell's own size s;
-       * candidates come from that x window plus the cell's extent.
+       * distance d_p from request p to the cell (0 inside). Only requests
+       * within reach matter: beyond d = s / (g - 1) a request asks for more
+       * than the cell's own size s; candidates come from that x window plus the
+       * cell's extent.
        */
       double
       on(const dealii::TriaAccessor<2, 2, 2> &cell) const
       {
-        const double size  = cell_size(cell);
-        const double reach = (growth_rate > 1. + 1e-12 ?
-                                size / (growth_rate - 1.) :
-                                std::numeric_limits<double>::infinity()) +
-                             cell.diameter();
-        const double x     = cell.center()[0];
-        const auto   first = std::lower_bound(
-          requests.begin(), requests.end(), x - reach,
-          [](const auto &a, const double p) { return a.position.x < p; });
-        double requested = std::numeric_limits<double>::infinity();
-        for (auto it = first; it != requests.end() && it->position.x <= x + reach;
+        const double size = cell_size(cell);
+        const double reach =
+          (growth_rate > 1. + 1e-12 ? size / (growth_rate - 1.) :
+                                      std::numeric_limits<double>::infinity()) +
+          cell.diameter();
+        const double x         = cell.center()[0];
+        const auto   first     = std::lower_bound(requests.begin(),
+                                            requests.end(),
+                                            x - reach,
+                                            [](const auto &a, const double p) {
+                                              return a.position.x < p;
+                                            });
+        double       requested = std::numeric_limits<double>::infinity();
+        for (auto it = first;
+             it != requests.end() && it->position.x <= x + reach;
              ++it)
-          requested = std::min(
-            requested,
-            Geometry::graded_size(
-              *it, growth_rate,
-              distance_to_cell({it->position.x, it->position.y}, cell)));
+          requested =
+            std::min(requested,
+                     Geometry::graded_size(*it,
+                                           growth_rate,
+                                           distance_to_cell({it->position.x,
+                                                             it->position.y},
+                                                            cell)));
         return requested;
       }
     };
@@ -248,7 +258,7 @@ namespace FloorBlock::Convergence
         // lies within its tolerance in position too (a projection moves no
         // more than the point), so each search scans a window, not the side.
         const dealii::Tensor<1, 2> along_joint = mean_direction(side_a);
-        const dealii::Point<2>     start       = shape_of(side_a.front()).centre;
+        const dealii::Point<2>     start = shape_of(side_a.front()).centre;
         std::vector<FaceShape>     shapes_b;
         for (const auto &face : side_b)
           shapes_b.push_back(shape_of(face));
@@ -263,9 +273,11 @@ namespace FloorBlock::Convergence
                                 const double            fraction) {
           const double position  = (centre - start) * along_joint;
           const double tolerance = fraction * length;
-          for (auto entry = std::lower_bound(
-                 sorted_b.begin(), sorted_b.end(),
-                 std::make_pair(position - tolerance, std::size_t(0)));
+          for (auto entry =
+                 std::lower_bound(sorted_b.begin(),
+                                  sorted_b.end(),
+                                  std::make_pair(position - tolerance,
+                                                 std::size_t(0)));
                entry != sorted_b.end() && entry->first <= position + tolerance;
                ++entry)
             if (!taken_b[entry->second] &&
@@ -366,21 +378,23 @@ namespace FloorBlock::Convergence
     if (fraction <= 0.)
       return 0;
     if (indicator.size() != triangulation.n_active_cells())
-      throw std::logic_error("flag_smooth_cells_for_coarsening: the indicator "
-                             "has " + std::to_string(indicator.size()) +
-                             " entries for " +
-                             std::to_string(triangulation.n_active_cells()) +
-                             " cells");
+      throw std::logic_error(
+        "flag_smooth_cells_for_coarsening: the indicator "
+        "has " +
+        std::to_string(indicator.size()) + " entries for " +
+        std::to_string(triangulation.n_active_cells()) + " cells");
     const SortedRequests    sorted(requests, growth_rate);
     std::vector<ActiveCell> coarsenable;
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->level() > 0 &&
-          cell_size(*cell->parent()) <= std::sqrt(2.) * sorted.on(*cell->parent()))
+      if (cell->level() > 0 && cell_size(*cell->parent()) <=
+                                 std::sqrt(2.) * sorted.on(*cell->parent()))
         coarsenable.push_back(cell);
-    const std::size_t n_wanted = std::min<std::size_t>(
-      coarsenable.size(),
-      static_cast<std::size_t>(fraction * triangulation.n_active_cells()));
-    std::partial_sort(coarsenable.begin(), coarsenable.begin() + n_wanted,
+    const std::size_t n_wanted =
+      std::min<std::size_t>(coarsenable.size(),
+                            static_cast<std::size_t>(
+                              fraction * triangulation.n_active_cells()));
+    std::partial_sort(coarsenable.begin(),
+                      coarsenable.begin() + n_wanted,
                       coarsenable.end(),
                       [&](const ActiveCell &a, const ActiveCell &b) {
                         return indicator[a->active_cell_index()] <

@@ -52,8 +52,8 @@ namespace FloorBlock::Convergence
    * @throws std::logic_error if the flags have not settled after many rounds.
    */
   void
-  prepare_matched_refinement(dealii::Triangulation<2>       &triangulation,
-                             const std::vector<JointSides>  &joints);
+  prepare_matched_refinement(dealii::Triangulation<2>      &triangulation,
+                             const std::vector<JointSides> &joints);
 
   /**
    * Growth rate that makes a request act on the cells it touches only
@@ -99,11 +99,12 @@ namespace FloorBlock::Convergence
   /** What refine_matched() did. */
   struct MatchedRefinementSummary
   {
-    unsigned int n_passes           = 0; ///< refinement sweeps executed
-    unsigned int n_cells_before     = 0;
-    unsigned int n_cells_after      = 0;
-    unsigned int n_coarsen_flagged  = 0; ///< cells flagged in the first pass
-    unsigned int n_cells_coarsened  = 0; ///< of those, coarsened (after the joint and 2:1 rules)
+    unsigned int n_passes          = 0; ///< refinement sweeps executed
+    unsigned int n_cells_before    = 0;
+    unsigned int n_cells_after     = 0;
+    unsigned int n_coarsen_flagged = 0; ///< cells flagged in the first pass
+    unsigned int n_cells_coarsened =
+      0; ///< of those, coarsened (after the joint and 2:1 rules)
   };
 
   /**

@@ -117,13 +117,14 @@ namespace FloorBlock::Convergence
 
     // L: finest usable level, p: its observed order, q_inf: the
     // extrapolated value (the symbols of the formula in the header).
-    const std::size_t L      = *finest;
-    const std::string reason = irregularity(values, estimate.observed_orders, L);
+    const std::size_t L = *finest;
+    const std::string reason =
+      irregularity(values, estimate.observed_orders, L);
     if (reason.empty())
       {
-        const double p     = *estimate.observed_orders[L];
-        const double q_inf = *values[L] + (*values[L] - *values[L - 1]) /
-                                          (std::exp2(p) - 1.);
+        const double p = *estimate.observed_orders[L];
+        const double q_inf =
+          *values[L] + (*values[L] - *values[L - 1]) / (std::exp2(p) - 1.);
         estimate.method    = ErrorMethod::richardson;
         estimate.reason    = "regular convergence of the finest three levels";
         estimate.reference = q_inf;

@@ -49,9 +49,11 @@ namespace FloorBlock::Convergence
      * when both differences are non-zero and have the same sign.
      */
     std::vector<std::optional<double>> observed_orders;
-    /** Richardson value (richardson) or the finest usable value (finest_difference). */
+    /** Richardson value (richardson) or the finest usable value
+     * (finest_difference). */
     std::optional<double> reference;
-    /** Absolute error estimate per level; empty for unusable levels and, with finest_difference, for the finest level itself. */
+    /** Absolute error estimate per level; empty for unusable levels and, with
+     * finest_difference, for the finest level itself. */
     std::vector<std::optional<double>> errors;
     /** errors / |reference|; empty where errors is, or if reference is 0. */
     std::vector<std::optional<double>> relative_errors;

@@ -72,10 +72,10 @@ namespace FloorBlock::Convergence
         for (std::size_t k = 0; k < n_segments; ++k)
           if (divisor[k] > 0.)
             {
-              const double size = std::max(
-                settings.smallest_size,
-                profile[k].position.distance(profile[k + 1].position) /
-                  divisor[k]);
+              const double size =
+                std::max(settings.smallest_size,
+                         profile[k].position.distance(profile[k + 1].position) /
+                           divisor[k]);
               targets.push_back({point2(profile[k].position), size});
               targets.push_back({point2(profile[k + 1].position), size});
             }
@@ -98,9 +98,13 @@ namespace FloorBlock::Convergence
     // face, and the solver's vector is one rank's non-ghosted vector.
     const dealii::Vector<double> displacement(solution);
     dealii::Vector<float> indicator(dofs.get_triangulation().n_active_cells());
-    dealii::KellyErrorEstimator<2>::estimate(
-      space.mapping(), dofs, dealii::QGauss<1>(space.degree() + 1), {},
-      displacement, indicator);
+    dealii::KellyErrorEstimator<2>::estimate(space.mapping(),
+                                             dofs,
+                                             dealii::QGauss<1>(space.degree() +
+                                                               1),
+                                             {},
+                                             displacement,
+                                             indicator);
     return indicator;
   }
 
@@ -111,11 +115,13 @@ namespace FloorBlock::Convergence
   {
     std::vector<unsigned int> order(indicator.size());
     std::iota(order.begin(), order.end(), 0u);
-    const std::size_t n_marked = std::min<std::size_t>(
-      order.size(),
-      static_cast<std::size_t>(std::ceil(settings.bulk_fraction *
-                                         order.size())));
-    std::partial_sort(order.begin(), order.begin() + n_marked, order.end(),
+    const std::size_t n_marked =
+      std::min<std::size_t>(order.size(),
+                            static_cast<std::size_t>(std::ceil(
+                              settings.bulk_fraction * order.size())));
+    std::partial_sort(order.begin(),
+                      order.begin() + n_marked,
+                      order.end(),
                       [&](const unsigned int a, const unsigned int b) {
                         return indicator[a] > indicator[b];
                       });
@@ -140,7 +146,8 @@ namespace FloorBlock::Convergence
     // Relative margin below which a candidate adds nothing (round-off of
     // the distance and size arithmetic). Units: 1.
     constexpr double redundancy_margin = 1e-9;
-    std::sort(candidates.begin(), candidates.end(),
+    std::sort(candidates.begin(),
+              candidates.end(),
               [](const Geometry::LocalSize &a, const Geometry::LocalSize &b) {
                 return a.size < b.size;
               });

@@ -42,9 +42,11 @@ namespace FloorBlock::Convergence
      * few cells. Units: 1.
      */
     double zone_end_refinement = 4.;
-    /** Fraction of all cells, those with the largest Kelly indicator, refined in the bulk. Units: 1. */
+    /** Fraction of all cells, those with the largest Kelly indicator, refined
+     * in the bulk. Units: 1. */
     double bulk_fraction = 0.1;
-    /** No request goes below this size (m); see Geometry::validate_local_sizes(). */
+    /** No request goes below this size (m); see
+     * Geometry::validate_local_sizes(). */
     double smallest_size = 1e-3;
   };
 
@@ -106,7 +108,7 @@ namespace FloorBlock::Convergence
    * of a segment, earlier levels) do not pile up in the mesher.
    */
   void
-  merge_size_requests(std::vector<Geometry::LocalSize>       &requests,
-                      std::vector<Geometry::LocalSize>        candidates,
-                      const double                            growth_rate);
+  merge_size_requests(std::vector<Geometry::LocalSize> &requests,
+                      std::vector<Geometry::LocalSize>  candidates,
+                      const double                      growth_rate);
 } // namespace FloorBlock::Convergence

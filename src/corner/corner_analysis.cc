@@ -20,7 +20,9 @@ namespace FloorBlock::Corner
               const CornerProfile &coarse,
               const double         tolerance)
     {
-      return converged_range(fine.samples, coarse.samples, tolerance,
+      return converged_range(fine.samples,
+                             coarse.samples,
+                             tolerance,
                              fit_from_spacings * fine.edge_spacing,
                              fit_to_peak_fraction * fine.peak_distance);
     }
@@ -32,15 +34,15 @@ namespace FloorBlock::Corner
      */
     double
     averaging_length_for(const std::vector<Analytic::RadialSample> &samples,
-                         const double                                target)
+                         const double                               target)
     {
       double integral = 0., d_before = 0., t_before = 0., best = 0.;
       for (const auto &sample : samples)
         {
-          integral += 0.5 * (t_before + sample.traction) *
-                      (sample.distance - d_before);
-          d_before = sample.distance;
-          t_before = sample.traction;
+          integral +=
+            0.5 * (t_before + sample.traction) * (sample.distance - d_before);
+          d_before          = sample.distance;
+          t_before          = sample.traction;
           const double mean = integral / sample.distance;
           // The mean rises to its largest near the peak and then falls:
           // the length wanted is where it falls through the target.
@@ -58,7 +60,7 @@ namespace FloorBlock::Corner
                  const Progress                       &progress)
   {
     CornerAnalysis analysis;
-    analysis.site = floor_corner_site(scene, scene.corner.joint);
+    analysis.site           = floor_corner_site(scene, scene.corner.joint);
     analysis.materials.rock = {scene.material.shear_modulus,
                                scene.material.poissons_ratio()};
     analysis.materials.friction_coefficient =
@@ -67,7 +69,7 @@ namespace FloorBlock::Corner
       scene.joints.law == Contact::JointLawKind::rigid;
     analysis.materials.compliant_length =
       scene.material.youngs_modulus() / scene.joints.normal_stiffness;
-    const double tolerance = scene.corner.converged_change;
+    const double tolerance   = scene.corner.converged_change;
     const double k_tolerance = scene.corner.intensity_change;
 
     CornerZoom zoom(scene, analysis.site);
@@ -85,8 +87,8 @@ namespace FloorBlock::Corner
             analysis.stop_reason = "time budget (Corner/Time budget) spent";
             break;
           }
-        const auto record = zoom.next(
-          Output::ResultFolder(folder.path_of("level_" + std::to_string(level))));
+        const auto record = zoom.next(Output::ResultFolder(
+          folder.path_of("level_" + std::to_string(level))));
         if (!record)
           {
             analysis.stop_reason = fmt::format(
@@ -100,7 +102,8 @@ namespace FloorBlock::Corner
           figures.peak_change = peak_change(analysis.levels, level);
         analysis.figures.push_back(figures);
 
-        analysis.theory = corner_theory(record->profile, analysis.materials,
+        analysis.theory         = corner_theory(record->profile,
+                                        analysis.materials,
                                         analysis.site.rounding_radius);
         double intensity_change = 1.;
         double fit_span         = 0.;
@@ -108,14 +111,16 @@ namespace FloorBlock::Corner
           {
             // K1 of this level and the one before over this level's range.
             const DistanceRange range =
-              fit_range(record->profile, analysis.levels[level - 1].profile,
+              fit_range(record->profile,
+                        analysis.levels[level - 1].profile,
                         tolerance);
             if (range.n_samples > 0)
               {
                 fit_span = range.to / range.from;
-                const auto now = theory_intensities(
-                  samples_within(record->profile.samples, range),
-                  analysis.theory);
+                const auto now =
+                  theory_intensities(samples_within(record->profile.samples,
+                                                    range),
+                                     analysis.theory);
                 const auto before = theory_intensities(
                   samples_within(analysis.levels[level - 1].profile.samples,
                                  range),
@@ -131,10 +136,15 @@ namespace FloorBlock::Corner
         progress(fmt::format(
           "level {:2d}: {:6d} DoFs, cells {:.2e} m, {}, peak {:.4e} Pa "
           "(change {:.2e}), K1 change {:.2e}, exponent {:.4f}, {:.1f} s",
-          level, record->n_dofs, record->requested_size,
-          to_string(record->profile.kind), record->profile.peak_traction,
-          figures.peak_change, level > 0 ? intensity_change : 0.,
-          analysis.figures.back().exponent, record->wall_time));
+          level,
+          record->n_dofs,
+          record->requested_size,
+          to_string(record->profile.kind),
+          record->profile.peak_traction,
+          figures.peak_change,
+          level > 0 ? intensity_change : 0.,
+          analysis.figures.back().exponent,
+          record->wall_time));
         // Without a theory there is no K1: the peak alone decides.
         const double exponent_change =
           level > 1 && analysis.figures[level - 1].exponent > 0. ?
@@ -143,16 +153,18 @@ namespace FloorBlock::Corner
             1.;
         if (peak_settled(analysis.levels, tolerance) &&
             (!analysis.theory.covered ||
-             (intensity_change <= k_tolerance && fit_span >= smallest_fit_span &&
+             (intensity_change <= k_tolerance &&
+              fit_span >= smallest_fit_span &&
               exponent_change <= converged_exponent_change)))
           {
-            analysis.converged   = true;
+            analysis.converged = true;
             analysis.stop_reason =
               analysis.theory.covered ?
                 fmt::format("the peak changed by at most {} twice in a row, "
                             "K1 by at most {} and the fitted exponent by at "
                             "most {}, over a fit range of a decade",
-                            tolerance, k_tolerance,
+                            tolerance,
+                            k_tolerance,
                             converged_exponent_change) :
                 fmt::format("the peak changed by at most {} twice in a row",
                             tolerance);
@@ -165,25 +177,30 @@ namespace FloorBlock::Corner
     const std::size_t n = analysis.levels.size();
     if (n >= 2 && analysis.theory.covered)
       {
-        const ZoomLevel &last = analysis.levels[n - 1];
+        const ZoomLevel &last   = analysis.levels[n - 1];
         const ZoomLevel &before = analysis.levels[n - 2];
-        analysis.fit = fit_corner(
-          last.profile.samples,
-          fit_range(last.profile, before.profile, tolerance), analysis.theory);
+        analysis.fit =
+          fit_corner(last.profile.samples,
+                     fit_range(last.profile, before.profile, tolerance),
+                     analysis.theory);
         // The invariant over its own converged range.
-        analysis.invariant_range = converged_range(
-          last.invariant_samples, before.invariant_samples, tolerance,
-          fit_from_spacings * last.profile.edge_spacing,
-          invariant_to_peak_fraction * last.profile.peak_distance);
-        analysis.invariant_fit =
-          fit_invariant(last.invariant_samples, analysis.invariant_range,
-                        analysis.theory);
+        analysis.invariant_range =
+          converged_range(last.invariant_samples,
+                          before.invariant_samples,
+                          tolerance,
+                          fit_from_spacings * last.profile.edge_spacing,
+                          invariant_to_peak_fraction *
+                            last.profile.peak_distance);
+        analysis.invariant_fit = fit_invariant(last.invariant_samples,
+                                               analysis.invariant_range,
+                                               analysis.theory);
       }
     if (n >= 1)
       {
         analysis.closed_form_peak = analysis.levels.back().closed_form_peak;
-        analysis.matching_averaging_length = averaging_length_for(
-          analysis.levels.back().profile.samples, analysis.closed_form_peak);
+        analysis.matching_averaging_length =
+          averaging_length_for(analysis.levels.back().profile.samples,
+                               analysis.closed_form_peak);
       }
     return analysis;
   }

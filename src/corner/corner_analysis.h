@@ -20,19 +20,20 @@ namespace FloorBlock::Corner
     /** Relative change of the peak and of K1 from the level before. */
     double peak_change      = 0.;
     double intensity_change = 0.;
-    /** The fitted exponent (fit_corner's expansion) on this level; 0 without a range. */
+    /** The fitted exponent (fit_corner's expansion) on this level; 0 without a
+     * range. */
     double exponent = 0.;
   };
 
   /** @brief Everything `floorblock corner` finds at one corner. */
   struct CornerAnalysis
   {
-    CornerSite             site;
-    CornerMaterials        materials;
-    std::vector<ZoomLevel> levels;
+    CornerSite                site;
+    CornerMaterials           materials;
+    std::vector<ZoomLevel>    levels;
     std::vector<LevelFigures> figures; ///< one per level
-    CornerTheory           theory;   ///< for the last level's state
-    CornerFit              fit;      ///< of the last level's traction
+    CornerTheory              theory;  ///< for the last level's state
+    CornerFit                 fit;     ///< of the last level's traction
     /** The mean pressure's fit range and fit (fit_invariant), last level. */
     DistanceRange           invariant_range;
     Analytic::AsymptoticFit invariant_fit;
@@ -72,7 +73,8 @@ namespace FloorBlock::Corner
 
   /** Smallest distance fitted, in node spacings at the contact's end. */
   constexpr double fit_from_spacings = 8.;
-  /** Largest distance fitted, as a fraction of the peak's distance from the end. */
+  /** Largest distance fitted, as a fraction of the peak's distance from the
+   * end. */
   constexpr double fit_to_peak_fraction = 0.5;
   /**
    * Largest distance of the mean pressure's fit, as a fraction of the

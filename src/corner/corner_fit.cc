@@ -10,7 +10,7 @@ namespace FloorBlock::Corner
     /** log t at log d, linear in log-log between @p samples (sorted by d); NaN outside. */
     double
     log_traction_at(const std::vector<Analytic::RadialSample> &samples,
-                    const double                                distance)
+                    const double                               distance)
     {
       for (std::size_t k = 1; k < samples.size(); ++k)
         if (samples[k - 1].distance <= distance &&
@@ -32,9 +32,9 @@ namespace FloorBlock::Corner
   DistanceRange
   converged_range(const std::vector<Analytic::RadialSample> &fine,
                   const std::vector<Analytic::RadialSample> &coarse,
-                  const double                                tolerance,
-                  const double                                from_at_least,
-                  const double                                up_to)
+                  const double                               tolerance,
+                  const double                               from_at_least,
+                  const double                               up_to)
   {
     DistanceRange best, current;
     for (const auto &sample : fine)
@@ -62,7 +62,7 @@ namespace FloorBlock::Corner
 
   std::vector<Analytic::RadialSample>
   samples_within(const std::vector<Analytic::RadialSample> &samples,
-                 const DistanceRange                        &range)
+                 const DistanceRange                       &range)
   {
     std::vector<Analytic::RadialSample> within;
     for (const auto &sample : samples)
@@ -86,7 +86,7 @@ namespace FloorBlock::Corner
 
   Intensities
   theory_intensities(const std::vector<Analytic::RadialSample> &samples,
-                     const CornerTheory                         &theory)
+                     const CornerTheory                        &theory)
   {
     std::vector<double> exponents{theory.exponent};
     for (const double further : further_exponents(theory))
@@ -100,8 +100,8 @@ namespace FloorBlock::Corner
 
   Analytic::AsymptoticFit
   fit_invariant(const std::vector<Analytic::RadialSample> &samples,
-                const DistanceRange                        &range,
-                const CornerTheory                         &theory)
+                const DistanceRange                       &range,
+                const CornerTheory                        &theory)
   {
     std::vector<double> further = further_exponents(theory);
     // Scan between the neighbouring known exponents, clear of both: next
@@ -114,24 +114,27 @@ namespace FloorBlock::Corner
         below = 1.;
       }
     const double gap = theory.next_exponent - below;
-    return Analytic::expansion_fit(samples_within(samples, range), further,
+    return Analytic::expansion_fit(samples_within(samples, range),
+                                   further,
                                    below + 0.02 * gap,
                                    theory.next_exponent - 0.02 * gap);
   }
 
   CornerFit
   fit_corner(const std::vector<Analytic::RadialSample> &samples,
-             const DistanceRange                        &range,
-             const CornerTheory                         &theory)
+             const DistanceRange                       &range,
+             const CornerTheory                        &theory)
   {
     CornerFit fit;
-    fit.range = range;
+    fit.range         = range;
     const auto within = samples_within(samples, range);
     fit.one_term      = Analytic::one_term_fit(within);
     fit.two_terms     = Analytic::two_term_fit(within, theory.next_exponent);
-    fit.expansion     = Analytic::expansion_fit(
-      within, further_exponents(theory), 0.01, theory.next_exponent - 0.01);
-    fit.intensity = theory_intensities(within, theory);
+    fit.expansion     = Analytic::expansion_fit(within,
+                                            further_exponents(theory),
+                                            0.01,
+                                            theory.next_exponent - 0.01);
+    fit.intensity     = theory_intensities(within, theory);
     fit.validity_distance =
       Analytic::one_term_validity_distance(fit.expansion, 0.1);
     return fit;

@@ -17,21 +17,21 @@ namespace FloorBlock::Corner
    */
   struct DistanceRange
   {
-    double       from = 0.; ///< m
-    double       to   = 0.; ///< m
+    double       from      = 0.; ///< m
+    double       to        = 0.; ///< m
     unsigned int n_samples = 0;
   };
   DistanceRange
   converged_range(const std::vector<Analytic::RadialSample> &fine,
                   const std::vector<Analytic::RadialSample> &coarse,
-                  double                                      tolerance,
-                  double                                      from_at_least,
-                  double                                      up_to);
+                  double                                     tolerance,
+                  double                                     from_at_least,
+                  double                                     up_to);
 
   /** @brief The samples with from <= d <= to. */
   std::vector<Analytic::RadialSample>
   samples_within(const std::vector<Analytic::RadialSample> &samples,
-                 const DistanceRange                        &range);
+                 const DistanceRange                       &range);
 
   /** @brief K1 and K2 of a fit with every exponent given. */
   struct Intensities
@@ -50,7 +50,7 @@ namespace FloorBlock::Corner
    */
   Intensities
   theory_intensities(const std::vector<Analytic::RadialSample> &samples,
-                     const CornerTheory                         &theory);
+                     const CornerTheory                        &theory);
 
   /** @brief Every fit of the traction near a corner's edge. */
   struct CornerFit
@@ -69,7 +69,8 @@ namespace FloorBlock::Corner
     Analytic::AsymptoticFit one_term;
     /** K1, K2 with both exponents the theory's. */
     Intensities intensity;
-    /** Distance within which the first term alone describes the two-term field within 10 % (m). */
+    /** Distance within which the first term alone describes the two-term field
+     * within 10 % (m). */
     double validity_distance = 0.;
   };
 
@@ -81,12 +82,12 @@ namespace FloorBlock::Corner
    */
   Analytic::AsymptoticFit
   fit_invariant(const std::vector<Analytic::RadialSample> &samples,
-                const DistanceRange                        &range,
-                const CornerTheory                         &theory);
+                const DistanceRange                       &range,
+                const CornerTheory                        &theory);
 
   /** @brief The fits of @p samples over @p range for @p theory. */
   CornerFit
   fit_corner(const std::vector<Analytic::RadialSample> &samples,
-             const DistanceRange                        &range,
-             const CornerTheory                         &theory);
+             const DistanceRange                       &range,
+             const CornerTheory                        &theory);
 } // namespace FloorBlock::Corner

@@ -1,5 +1,5 @@
-#include <corner/corner_profile.h>
 #include <contact/joint_report.h>
+#include <corner/corner_profile.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,13 +44,15 @@ namespace FloorBlock::Corner
 
     CornerProfile profile;
     // The corner: the node nearest the site's corner point.
-    const auto nearest = std::min_element(
-      nodes.begin(), nodes.end(), [&](const auto &a, const auto &b) {
-        return std::hypot(a.position[0] - site.corner.x,
-                          a.position[1] - site.corner.y) <
-               std::hypot(b.position[0] - site.corner.x,
-                          b.position[1] - site.corner.y);
-      });
+    const auto nearest =
+      std::min_element(nodes.begin(),
+                       nodes.end(),
+                       [&](const auto &a, const auto &b) {
+                         return std::hypot(a.position[0] - site.corner.x,
+                                           a.position[1] - site.corner.y) <
+                                std::hypot(b.position[0] - site.corner.x,
+                                           b.position[1] - site.corner.y);
+                       });
     profile.corner_arc = height(*nearest);
 
     int top_closed = -1;
@@ -71,10 +73,9 @@ namespace FloorBlock::Corner
         0.;
     if (top_closed + 1 == static_cast<int>(nodes.size()))
       {
-        profile.kind     = CornerContactKind::reaches_corner;
-        profile.edge_arc = height(closed);
-        profile.edge_spacing =
-          height(closed) - height(nodes[top_closed - 1]);
+        profile.kind         = CornerContactKind::reaches_corner;
+        profile.edge_arc     = height(closed);
+        profile.edge_spacing = height(closed) - height(nodes[top_closed - 1]);
       }
     else
       {
@@ -86,9 +87,10 @@ namespace FloorBlock::Corner
             const double p_c = std::max(0., closed.normal_traction);
             const double p_b = nodes[top_closed - 1].normal_traction;
             if (p_b > p_c)
-              beyond = std::min(segment,
-                                Contact::square_root_edge_extent(
-                                  p_c, p_b, s_c - height(nodes[top_closed - 1])));
+              beyond =
+                std::min(segment,
+                         Contact::square_root_edge_extent(
+                           p_c, p_b, s_c - height(nodes[top_closed - 1])));
           }
         profile.edge_arc     = s_c + beyond;
         profile.edge_spacing = segment;

@@ -17,9 +17,11 @@ namespace FloorBlock::Corner
      * away from each other).
      */
     edge_in_fillet,
-    /** The zone reaches the joint's end: a complete contact at a sharp corner. */
+    /** The zone reaches the joint's end: a complete contact at a sharp corner.
+     */
     reaches_corner,
-    /** The zone ends below the corner on the straight joint: the top is open. */
+    /** The zone ends below the corner on the straight joint: the top is open.
+     */
     open_at_corner
   };
 
@@ -51,7 +53,7 @@ namespace FloorBlock::Corner
     /** Shear over normal traction at that node (-). */
     double edge_traction_ratio = 0.;
     /** Node spacing at the end (m): the resolution of the zone's end. */
-    double edge_spacing = 0.;
+    double edge_spacing  = 0.;
     double peak_traction = 0.; ///< Pa, largest normal traction of the zone
     double peak_distance = 0.; ///< m, its distance from the end
     /** Normal traction (Pa) of every closed node of the zone against its

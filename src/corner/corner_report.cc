@@ -31,8 +31,8 @@ namespace FloorBlock::Corner
   {
     if (analysis.levels.empty())
       return 0.;
-    CornerProfile sharp = analysis.levels.back().profile;
-    sharp.kind          = CornerContactKind::reaches_corner;
+    CornerProfile sharp       = analysis.levels.back().profile;
+    sharp.kind                = CornerContactKind::reaches_corner;
     const CornerTheory theory = corner_theory(sharp, analysis.materials, 0.);
     return theory.covered ? theory.exponent : 0.;
   }
@@ -49,7 +49,7 @@ namespace FloorBlock::Corner
               const RoundingStudy                  &rounding)
   {
     const CornerTheory &theory = analysis.theory;
-    json modes = json::array();
+    json                modes  = json::array();
     for (const auto &mode : theory.modes)
       modes.push_back({{"exponent_real", mode.exponent.real()},
                        {"exponent_imag", mode.exponent.imag()},
@@ -91,16 +91,17 @@ namespace FloorBlock::Corner
                        {"n_dofs", point.n_dofs},
                        {"cell_size_m", point.smallest_size},
                        {"wall_time_s", point.wall_time}});
-    const CornerFit &fit = analysis.fit;
-    const double kn = scene.joints.normal_stiffness;
-    const double sharp_exponent = sharp_corner_exponent(analysis);
+    const CornerFit &fit            = analysis.fit;
+    const double     kn             = scene.joints.normal_stiffness;
+    const double     sharp_exponent = sharp_corner_exponent(analysis);
     const ZoomLevel *last =
       analysis.levels.empty() ? nullptr : &analysis.levels.back();
     return {
       {"scene", scene.scene_name},
       {"joint", analysis.site.joint_name},
-      {"joint_law", scene.joints.law == Contact::JointLawKind::rigid ?
-                      "rigid" : "compliant"},
+      {"joint_law",
+       scene.joints.law == Contact::JointLawKind::rigid ? "rigid" :
+                                                          "compliant"},
       {"site",
        {{"corner_x_m", analysis.site.corner.x},
         {"corner_y_m", analysis.site.corner.y},
@@ -108,14 +109,17 @@ namespace FloorBlock::Corner
       {"state",
        {{"contact_kind", last ? to_string(last->profile.kind) : ""},
         {"edge_beyond_corner_m", last ? last->profile.edge_beyond_corner : 0.},
-        {"edge_state", last ? Contact::state_name(last->profile.edge_state) : ""},
-        {"edge_shear_over_normal", last ? last->profile.edge_traction_ratio : 0.},
+        {"edge_state",
+         last ? Contact::state_name(last->profile.edge_state) : ""},
+        {"edge_shear_over_normal",
+         last ? last->profile.edge_traction_ratio : 0.},
         {"relative_rotation_rad", last ? last->relative_rotation : 0.}}},
       {"theory",
        {{"configuration", theory.configuration},
         {"covered", theory.covered},
         {"why_not", theory.why_not},
-        {"wedge_angles_rad", {theory.pair.first_angle, theory.pair.second_angle}},
+        {"wedge_angles_rad",
+         {theory.pair.first_angle, theory.pair.second_angle}},
         {"interface_state", to_string(theory.pair.state)},
         {"friction_coefficient", theory.pair.friction_coefficient},
         {"modes", modes},
@@ -129,14 +133,16 @@ namespace FloorBlock::Corner
          fmt::format("the traction of the last level within {} of the level "
                      "before, from {} node spacings at the contact's end to "
                      "{} of the peak's distance from it",
-                     scene.corner.converged_change, fit_from_spacings,
+                     scene.corner.converged_change,
+                     fit_from_spacings,
                      fit_to_peak_fraction)},
         {"n_samples", fit.expansion.n_samples},
         {"terms", theory.third_exponent > theory.next_exponent ? 3 : 2},
         {"exponent", fit.expansion.lambda1},
         {"exponent_difference", fit.expansion.lambda1 - theory.exponent},
         {"expansion_K1", fit.expansion.k1},
-        {"expansion_rms_relative_residual", fit.expansion.rms_relative_residual},
+        {"expansion_rms_relative_residual",
+         fit.expansion.rms_relative_residual},
         {"exponent_two_term", fit.two_terms.lambda1},
         {"exponent_one_term", fit.one_term.lambda1},
         {"two_term_K1", fit.two_terms.k1},
@@ -147,16 +153,19 @@ namespace FloorBlock::Corner
         {"K_units", fmt::format("Pa m^{:.4g}", 1. - theory.exponent)},
         {"one_term_validity_m", number(fit.validity_distance)}}},
       {"invariant_fit",
-       {{"invariant", "mean pressure -(sigma_xx + sigma_yy + sigma_zz) / 3 at "
-                      "the joint side's nodes"},
+       {{"invariant",
+         "mean pressure -(sigma_xx + sigma_yy + sigma_zz) / 3 at "
+         "the joint side's nodes"},
         {"range_from_m", analysis.invariant_range.from},
         {"range_to_m", analysis.invariant_range.to},
         {"n_samples", analysis.invariant_fit.n_samples},
         {"exponent", analysis.invariant_fit.lambda1},
         {"exponent_difference",
          analysis.invariant_fit.n_samples > 0 ?
-           analysis.invariant_fit.lambda1 - theory.exponent : 0.},
-        {"rms_relative_residual", number(analysis.invariant_fit.rms_relative_residual)}}},
+           analysis.invariant_fit.lambda1 - theory.exponent :
+           0.},
+        {"rms_relative_residual",
+         number(analysis.invariant_fit.rms_relative_residual)}}},
       {"converged", analysis.converged},
       {"stop_reason", analysis.stop_reason},
       {"levels", levels},
@@ -168,7 +177,8 @@ namespace FloorBlock::Corner
          analysis.matching_averaging_length > 0. ?
            json(analysis.matching_averaging_length) :
            json(nullptr)}}},
-      {"compliant_length_E_over_kn_m", kn > 0. ? scene.material.youngs_modulus() / kn : 0.},
+      {"compliant_length_E_over_kn_m",
+       kn > 0. ? scene.material.youngs_modulus() / kn : 0.},
       {"rounding_study", study},
       {"rounding_power_fitted", rounding.fitted_power},
       {"sharp_corner_exponent", sharp_exponent},
@@ -182,39 +192,44 @@ namespace FloorBlock::Corner
                                 const RoundingStudy        &rounding)
   {
     const CornerFit &fit = analysis.fit;
-    std::string traction =
+    std::string      traction =
       "distance_from_edge_m,normal_traction_Pa,fitted,two_term_fit_Pa,"
       "leading_term_Pa\n";
     const Analytic::AsymptoticFit &leading = fit.expansion;
-    std::string fitted_points, other_points, fit_line;
+    std::string                    fitted_points, other_points, fit_line;
     if (!analysis.levels.empty())
       for (const auto &sample : analysis.levels.back().profile.samples)
         {
-          const bool inside =
-            sample.distance >= fit.range.from && sample.distance <= fit.range.to;
+          const bool inside = sample.distance >= fit.range.from &&
+                              sample.distance <= fit.range.to;
           const double two = two_term_value(fit.two_terms, sample.distance);
           const double lead =
             leading.k1 * std::pow(sample.distance, leading.lambda1 - 1.);
           traction += fmt::format("{:.9e},{:.9e},{},{:.9e},{:.9e}\n",
-                                  sample.distance, sample.traction,
-                                  inside ? 1 : 0, two, lead);
+                                  sample.distance,
+                                  sample.traction,
+                                  inside ? 1 : 0,
+                                  two,
+                                  lead);
           (inside ? fitted_points : other_points) +=
             fmt::format("{:.6e} {:.6e}\n", sample.distance, sample.traction);
           if (inside)
-            fit_line += fmt::format("{:.6e} {:.6e} {:.6e}\n", sample.distance,
-                                    two, lead);
+            fit_line +=
+              fmt::format("{:.6e} {:.6e} {:.6e}\n", sample.distance, two, lead);
         }
     folder.write("corner_traction.csv", traction);
 
     std::string pressure = "distance_from_edge_m,mean_pressure_Pa,fitted\n";
     if (!analysis.levels.empty())
       for (const auto &sample : analysis.levels.back().invariant_samples)
-        pressure += fmt::format(
-          "{:.9e},{:.9e},{}\n", sample.distance, sample.traction,
-          sample.distance >= analysis.invariant_range.from &&
-              sample.distance <= analysis.invariant_range.to ?
-            1 :
-            0);
+        pressure +=
+          fmt::format("{:.9e},{:.9e},{}\n",
+                      sample.distance,
+                      sample.traction,
+                      sample.distance >= analysis.invariant_range.from &&
+                          sample.distance <= analysis.invariant_range.to ?
+                        1 :
+                        0);
     folder.write("corner_mean_pressure.csv", pressure);
 
     std::string level_table =
@@ -222,15 +237,21 @@ namespace FloorBlock::Corner
       "edge_beyond_corner_m,contact_length_m,Q_N_per_m,wall_time_s\n";
     for (std::size_t k = 0; k < analysis.levels.size(); ++k)
       {
-        const auto &level = analysis.levels[k];
+        const auto &level   = analysis.levels[k];
         const auto &figures = analysis.figures[k];
         level_table += fmt::format(
           "{},{},{:.6e},{:.9e},{:.3e},{:.9e},{:.3e},{:.9e},{:.9e},{:.9e},{:.2f}\n",
-          level.level, level.n_dofs, level.requested_size,
-          level.profile.peak_traction, figures.peak_change,
-          figures.intensity.first, figures.intensity_change,
-          level.profile.edge_beyond_corner, level.closed_length,
-          level.normal_force, level.wall_time);
+          level.level,
+          level.n_dofs,
+          level.requested_size,
+          level.profile.peak_traction,
+          figures.peak_change,
+          figures.intensity.first,
+          figures.intensity_change,
+          level.profile.edge_beyond_corner,
+          level.closed_length,
+          level.normal_force,
+          level.wall_time);
       }
     folder.write("corner_levels.csv", level_table);
 
@@ -241,14 +262,21 @@ namespace FloorBlock::Corner
     std::string study_points;
     for (const auto &point : rounding.points)
       {
-        study += fmt::format("{:.6e},{:.9e},{:.9e},{:.9e},{:.9e},{:.3e},{},{},{},{:.3e},{:.1f}\n",
-                             point.radius, point.peak, point.averaged_peak,
-                             point.contact_length, point.edge_beyond_corner,
-                             point.last_change, point.converged ? 1 : 0,
-                             point.n_levels, point.n_dofs, point.smallest_size,
-                             point.wall_time);
-        study_points += fmt::format("{:.6e} {:.6e}\n", point.radius * 1e3,
-                                    point.peak / 1e6);
+        study += fmt::format(
+          "{:.6e},{:.9e},{:.9e},{:.9e},{:.9e},{:.3e},{},{},{},{:.3e},{:.1f}\n",
+          point.radius,
+          point.peak,
+          point.averaged_peak,
+          point.contact_length,
+          point.edge_beyond_corner,
+          point.last_change,
+          point.converged ? 1 : 0,
+          point.n_levels,
+          point.n_dofs,
+          point.smallest_size,
+          point.wall_time);
+        study_points +=
+          fmt::format("{:.6e} {:.6e}\n", point.radius * 1e3, point.peak / 1e6);
       }
     folder.write("rounding_study.csv", study);
 
@@ -267,8 +295,11 @@ namespace FloorBlock::Corner
           "'-' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title "
           "'leading term of the expansion fit'\n"
           "{}e\n{}e\n{}e\n{}e\n",
-          to_string(analysis.levels.back().profile.kind), fit.range.from,
-          fit.range.to, fit.expansion.lambda1, analysis.theory.exponent,
+          to_string(analysis.levels.back().profile.kind),
+          fit.range.from,
+          fit.range.to,
+          fit.expansion.lambda1,
+          analysis.theory.exponent,
           other_points.empty() ? "NaN NaN\n" : other_points,
           fitted_points.empty() ? "NaN NaN\n" : fitted_points,
           fit_line.empty() ? "NaN NaN NaN\n" : fit_line,
@@ -298,15 +329,18 @@ namespace FloorBlock::Corner
       return "no level solved: " + analysis.stop_reason + "\n";
     const ZoomLevel &last = analysis.levels.back();
     text += fmt::format("corner of {}: {} ({} at the end), {}\n",
-                        analysis.site.joint_name, to_string(last.profile.kind),
+                        analysis.site.joint_name,
+                        to_string(last.profile.kind),
                         Contact::state_name(last.profile.edge_state),
                         analysis.theory.configuration);
-    text += fmt::format("zoom: {} levels, {} ({})\n", analysis.levels.size(),
+    text += fmt::format("zoom: {} levels, {} ({})\n",
+                        analysis.levels.size(),
                         analysis.converged ? "converged" : "NOT converged",
                         analysis.stop_reason);
     text += fmt::format("peak traction {:.4e} Pa, {:.3e} m from the contact "
                         "end; Eq. 6.53 sigma_max {:.4e} Pa; {}\n",
-                        last.profile.peak_traction, last.profile.peak_distance,
+                        last.profile.peak_traction,
+                        last.profile.peak_distance,
                         analysis.closed_form_peak,
                         analysis.matching_averaging_length > 0. ?
                           fmt::format("the field's mean over {:.3e} m from "
@@ -319,11 +353,15 @@ namespace FloorBlock::Corner
         "exponent: theory {:.4f} ({}), fitted {:.4f} (expansion), {:.4f} "
         "(two terms), {:.4f} (one term) over {:.3e}-{:.3e} m; K1 {:.4e} Pa "
         "m^{:.3g} (last change {:.2e})\n",
-        analysis.theory.exponent, to_string(analysis.theory.pair.state),
-        analysis.fit.expansion.lambda1, analysis.fit.two_terms.lambda1,
+        analysis.theory.exponent,
+        to_string(analysis.theory.pair.state),
+        analysis.fit.expansion.lambda1,
+        analysis.fit.two_terms.lambda1,
         analysis.fit.one_term.lambda1,
-        analysis.fit.range.from, analysis.fit.range.to,
-        analysis.fit.intensity.first, 1. - analysis.theory.exponent,
+        analysis.fit.range.from,
+        analysis.fit.range.to,
+        analysis.fit.intensity.first,
+        1. - analysis.theory.exponent,
         analysis.figures.back().intensity_change);
     if (analysis.theory.covered && analysis.invariant_fit.n_samples > 0)
       text += fmt::format("mean pressure: fitted exponent {:.4f} over "
@@ -336,15 +374,17 @@ namespace FloorBlock::Corner
     for (const auto &point : rounding.points)
       text += fmt::format("rounding {:.4g} m: sigma_max {:.4e} Pa ({}, last "
                           "change {:.2e}, {} levels)\n",
-                          point.radius, point.peak,
+                          point.radius,
+                          point.peak,
                           point.converged ? "converged" : "NOT converged",
-                          point.last_change, point.n_levels);
+                          point.last_change,
+                          point.n_levels);
     if (!rounding.points.empty())
-      text += fmt::format("rounding: fitted power {:.3f}; sigma_max {} with "
-                          "the radius\n",
-                          rounding.fitted_power,
-                          rounding.falls_with_radius ? "falls" :
-                                                       "does NOT fall");
+      text +=
+        fmt::format("rounding: fitted power {:.3f}; sigma_max {} with "
+                    "the radius\n",
+                    rounding.fitted_power,
+                    rounding.falls_with_radius ? "falls" : "does NOT fall");
     return text;
   }
 } // namespace FloorBlock::Corner

@@ -10,7 +10,8 @@ namespace FloorBlock::Corner
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /** Modes whose exponent differs from the last kept one by this much are new. */
+    /** Modes whose exponent differs from the last kept one by this much are
+     * new. */
     constexpr double distinct_exponents = 1e-6;
 
     /**
@@ -64,11 +65,13 @@ namespace FloorBlock::Corner
     set_interface(profile, materials, theory.pair);
     Analytic::RootSearch search;
     search.largest_real_part = 3.;
-    if (!materials.exact_contact && profile.kind != CornerContactKind::open_at_corner)
+    if (!materials.exact_contact &&
+        profile.kind != CornerContactKind::open_at_corner)
       {
         theory.configuration =
           "compliant joints: the springs kn spread the corner's contact "
-          "over about E/kn = " + fmt::format("{:.3g}", materials.compliant_length) + " m";
+          "over about E/kn = " +
+          fmt::format("{:.3g}", materials.compliant_length) + " m";
         theory.why_not =
           "the wedge eigenproblem assumes exact contact (Joints/Law = "
           "rigid); a spring layer has no corner singularity, its traction "
@@ -84,8 +87,7 @@ namespace FloorBlock::Corner
             "on the straight joint";
           theory.why_not = "no traction at the corner to characterise";
           return theory;
-        case CornerContactKind::edge_in_fillet:
-          {
+          case CornerContactKind::edge_in_fillet: {
             theory.configuration =
               "the contact ends inside the corner fillets: an incomplete "
               "contact whose edge is smooth (two half-planes locally)";
@@ -111,8 +113,7 @@ namespace FloorBlock::Corner
             theory.covered        = true;
             return theory;
           }
-        case CornerContactKind::reaches_corner:
-          {
+          case CornerContactKind::reaches_corner: {
             if (rounding_radius > 0.)
               {
                 theory.configuration =
@@ -141,10 +142,9 @@ namespace FloorBlock::Corner
               theory.modes.size() > 2 ? theory.modes[2].exponent.real() : 0.;
             theory.covered = true;
             if (theory.exponent >= 1.)
-              theory.configuration +=
-                "; no singular mode (lowest lambda " +
-                std::to_string(theory.exponent) +
-                "): the corner traction is bounded";
+              theory.configuration += "; no singular mode (lowest lambda " +
+                                      std::to_string(theory.exponent) +
+                                      "): the corner traction is bounded";
             return theory;
           }
       }

@@ -11,15 +11,16 @@ namespace FloorBlock::Corner
   /** @brief Material and friction of the two bodies at the corner. */
   struct CornerMaterials
   {
-    Analytic::WedgeMaterial rock;     ///< both blocks (elastically similar)
-    double friction_coefficient = 0.; ///< tan of the vertical joints' friction angle
+    Analytic::WedgeMaterial rock; ///< both blocks (elastically similar)
+    double                  friction_coefficient =
+      0.; ///< tan of the vertical joints' friction angle
     /**
      * Exact (unilateral) contact, Joints/Law = rigid. The compliant law's
      * springs (kn) put a layer of compliance into the interface, which the
      * wedge eigenproblem does not have: the field is smoothed over about
      * E/kn and not asymptotic at the resolved distances.
      */
-    bool   exact_contact = true;
+    bool   exact_contact    = true;
     double compliant_length = 0.; ///< E / kn (m), compliant law only
   };
 
@@ -47,16 +48,17 @@ namespace FloorBlock::Corner
    */
   struct CornerTheory
   {
-    std::string configuration; ///< one sentence for the report
-    bool        covered = false; ///< whether a fit is meaningful
-    std::string why_not;         ///< when not covered
-    Analytic::WedgePair              pair;
+    std::string         configuration;   ///< one sentence for the report
+    bool                covered = false; ///< whether a fit is meaningful
+    std::string         why_not;         ///< when not covered
+    Analytic::WedgePair pair;
     std::vector<Analytic::CornerMode> modes;
     /** lambda of the leading term of the traction, t ~ d^(lambda - 1). */
     double exponent = 0.;
     /** lambda of the next term (the fits' second term). */
     double next_exponent = 0.;
-    /** lambda of the term after it (the expansion fit's third term; 0 if none). */
+    /** lambda of the term after it (the expansion fit's third term; 0 if none).
+     */
     double third_exponent = 0.;
   };
 

@@ -1,5 +1,5 @@
-#include <corner/corner_zoom.h>
 #include <contact/contact_solver.h>
+#include <corner/corner_zoom.h>
 #include <corner/side_mean_pressure.h>
 #include <geometry/ids.h>
 #include <material/elastic_law.h>
@@ -60,8 +60,8 @@ namespace FloorBlock::Corner
     matched_values(const CornerProfile          &profile,
                    const std::vector<FaceValue> &values)
     {
-      constexpr double reach = 1e-12;
-      const auto distance_of = [&](const dealii::Point<2> &at) {
+      constexpr double reach       = 1e-12;
+      const auto       distance_of = [&](const dealii::Point<2> &at) {
         for (std::size_t k = 0; k < profile.samples.size(); ++k)
           if (profile.sample_positions[k].distance(at) <= reach)
             return profile.samples[k].distance;
@@ -77,8 +77,11 @@ namespace FloorBlock::Corner
           if (second >= 0.)
             matched.push_back({0.5 * (first + second), value.value});
         }
-      std::sort(matched.begin(), matched.end(),
-                [](const auto &a, const auto &b) { return a.distance < b.distance; });
+      std::sort(matched.begin(),
+                matched.end(),
+                [](const auto &a, const auto &b) {
+                  return a.distance < b.distance;
+                });
       return matched;
     }
   } // namespace
@@ -86,18 +89,17 @@ namespace FloorBlock::Corner
   bool
   CornerZoom::can_refine() const
   {
-    const double next_size =
-      corner_size * std::exp2(-double(done.size()));
-    return next_size >= smallest_zoom_cell *
-                          std::min(scene.geometry.block_width,
-                                   scene.geometry.block_height);
+    const double next_size = corner_size * std::exp2(-double(done.size()));
+    return next_size >=
+           smallest_zoom_cell *
+             std::min(scene.geometry.block_width, scene.geometry.block_height);
   }
 
   std::vector<Geometry::LocalSize>
   CornerZoom::window(const double size) const
   {
     const CornerProfile &last = done.back().profile;
-    const double zone_length =
+    const double         zone_length =
       last.samples.empty() ? size : last.samples.back().distance;
     double from = 0., to = 0.; // "height" (arc towards the top), m
     if (last.kind == CornerContactKind::edge_in_fillet)
@@ -136,9 +138,8 @@ namespace FloorBlock::Corner
             const double h = lo + (hi - lo) * i / n_points;
             const double w = (h - h0) / (h1 - h0);
             const auto  &a = nodes[k - 1].position, &b = nodes[k].position;
-            points.push_back({{a[0] + w * (b[0] - a[0]),
-                               a[1] + w * (b[1] - a[1])},
-                              size});
+            points.push_back(
+              {{a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1])}, size});
           }
       }
     return points;
@@ -147,22 +148,24 @@ namespace FloorBlock::Corner
   std::optional<ZoomLevel>
   CornerZoom::next(const Output::ResultFolder &folder)
   {
-    dealii::Timer        clock;
-    ZoomLevel            record;
+    dealii::Timer clock;
+    ZoomLevel     record;
     record.level = static_cast<unsigned int>(done.size());
     Pipeline::FemOutcome outcome;
     // The mean pressure on both joint sides while the solution exists.
-    std::vector<FaceValue>   side_pressures;
-    Pipeline::SolveExtras    extras;
+    std::vector<FaceValue> side_pressures;
+    Pipeline::SolveExtras  extras;
     extras.inspect = [&](const Contact::ContactSolver<2> &solver) {
       const auto law = Material::ElasticLaw<2>::from_youngs_poisson(
         scene.material.youngs_modulus(), scene.material.poissons_ratio());
-      for (const auto side : {Geometry::Ids::vertical_joint_free_side(site.joint),
-                              Geometry::Ids::vertical_joint_face_side(site.joint)})
+      for (const auto side :
+           {Geometry::Ids::vertical_joint_free_side(site.joint),
+            Geometry::Ids::vertical_joint_face_side(site.joint)})
         {
-          const auto values = mean_pressure_on_side(solver.space(),
-                                                    solver.solution(), side, law);
-          side_pressures.insert(side_pressures.end(), values.begin(),
+          const auto values =
+            mean_pressure_on_side(solver.space(), solver.solution(), side, law);
+          side_pressures.insert(side_pressures.end(),
+                                values.begin(),
                                 values.end());
         }
     };
@@ -175,8 +178,10 @@ namespace FloorBlock::Corner
       {
         record.requested_size = corner_size * std::exp2(-double(record.level));
         outcome = adaptive.solve_refined_toward(window(record.requested_size),
-                                                zoom_growth_rate, folder,
-                                                false, extras);
+                                                zoom_growth_rate,
+                                                folder,
+                                                false,
+                                                extras);
       }
     if (!outcome.converged || outcome.result.increments.empty())
       return std::nullopt;
@@ -186,14 +191,14 @@ namespace FloorBlock::Corner
     for (const auto &joint : outcome.result.increments.back().joints)
       if (joint.name == site.joint_name)
         {
-          record.profile                = corner_profile(joint, site);
-          record.normal_force           = joint.normal_force;
-          record.closed_length          = joint.closed_length;
-          record.peak_normal_stress     = joint.peak_normal_stress;
-          record.averaged_peak_stress   = joint.averaged_peak_normal_stress;
-          record.averaging_length       = joint.averaging_length;
-          last_joint_profile            = joint.profile;
-          found                         = true;
+          record.profile              = corner_profile(joint, site);
+          record.normal_force         = joint.normal_force;
+          record.closed_length        = joint.closed_length;
+          record.peak_normal_stress   = joint.peak_normal_stress;
+          record.averaged_peak_stress = joint.averaged_peak_normal_stress;
+          record.averaging_length     = joint.averaging_length;
+          last_joint_profile          = joint.profile;
+          found                       = true;
         }
     if (!found)
       throw std::logic_error("CornerZoom: no joint '" + site.joint_name +

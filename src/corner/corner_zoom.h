@@ -16,18 +16,19 @@ namespace FloorBlock::Corner
   /** @brief One level of a zoom on a corner. */
   struct ZoomLevel
   {
-    unsigned int level = 0;
+    unsigned int level  = 0;
     unsigned int n_dofs = 0;
-    /** Cell size asked for in the zoom window (m); level 0: the scene's corner size. */
-    double requested_size = 0.;
-    double wall_time      = 0.; ///< s, mesh and solve
+    /** Cell size asked for in the zoom window (m); level 0: the scene's corner
+     * size. */
+    double        requested_size = 0.;
+    double        wall_time      = 0.; ///< s, mesh and solve
     CornerProfile profile;
     /** The joint's figures (Contact::JointReport without its profile). */
-    double normal_force            = 0.; ///< N/m
-    double closed_length           = 0.; ///< m
-    double peak_normal_stress      = 0.; ///< Pa, pointwise
-    double averaged_peak_stress    = 0.; ///< Pa, over the scene's averaging length
-    double averaging_length        = 0.; ///< m
+    double normal_force         = 0.; ///< N/m
+    double closed_length        = 0.; ///< m
+    double peak_normal_stress   = 0.; ///< Pa, pointwise
+    double averaged_peak_stress = 0.; ///< Pa, over the scene's averaging length
+    double averaging_length     = 0.; ///< m
     /** The joint's relative rotation (rad) and Eq. 6.51/6.53's contact
      *  length (m) and sigma_max (Pa) with this level's Q and rotation
      *  (Compare::compare_vertical_joints). */
@@ -38,9 +39,9 @@ namespace FloorBlock::Corner
      * end, nearest first.
      */
     std::vector<Analytic::RadialSample> invariant_samples;
-    double relative_rotation          = 0.;
-    double closed_form_contact_length = 0.;
-    double closed_form_peak           = 0.;
+    double                              relative_rotation          = 0.;
+    double                              closed_form_contact_length = 0.;
+    double                              closed_form_peak           = 0.;
   };
 
   /**

@@ -1,5 +1,4 @@
 #include <corner/rounding_study.h>
-
 #include <scene/mesh_refinement.h>
 
 #include <fmt/format.h>
@@ -14,8 +13,8 @@ namespace FloorBlock::Corner
     double
     log_log_slope(const std::vector<double> &x, const std::vector<double> &y)
     {
-      const double n = static_cast<double>(x.size());
-      double sx = 0., sy = 0., sxx = 0., sxy = 0.;
+      const double n  = static_cast<double>(x.size());
+      double       sx = 0., sy = 0., sxx = 0., sxy = 0.;
       for (std::size_t k = 0; k < x.size(); ++k)
         {
           const double lx = std::log(x[k]), ly = std::log(y[k]);
@@ -52,8 +51,8 @@ namespace FloorBlock::Corner
     if (n >= 2)
       point.last_change = peak_change(levels, n - 1);
     point.converged = peak_settled(levels, tolerance) &&
-                      last.requested_size <=
-                        last.profile.edge_beyond_corner / smallest_cells_in_fillet_contact;
+                      last.requested_size <= last.profile.edge_beyond_corner /
+                                               smallest_cells_in_fillet_contact;
     return point;
   }
 
@@ -70,13 +69,14 @@ namespace FloorBlock::Corner
       {
         if (radius == scene.geometry.corner_rounding_radius)
           {
-            study.points.push_back(rounding_point(radius, own.levels, tolerance));
+            study.points.push_back(
+              rounding_point(radius, own.levels, tolerance));
             continue;
           }
         // The far field stays the scene's: its global refinements are
         // kept (auto would refine everything for a small radius: 371k DoFs
         // at 2 mm on the default scene), the zoom resolves the corner.
-        Parameters::ScenarioParameters rounded = scene;
+        Parameters::ScenarioParameters rounded  = scene;
         rounded.geometry.corner_rounding_radius = radius;
         rounded.mesh.global_refinements = Scene::global_refinements(scene);
         const CornerSite site = floor_corner_site(rounded, scene.corner.joint);
@@ -87,29 +87,32 @@ namespace FloorBlock::Corner
         for (unsigned int level = 0; level <= scene.corner.max_zoom_levels;
              ++level)
           {
-            const auto &done = zoom.levels();
+            const auto  &done = zoom.levels();
             const double needed =
-              done.empty() ? (own.levels.empty() ? 0. : own.levels[0].wall_time) :
-                             2. * done.back().wall_time;
+              done.empty() ?
+                (own.levels.empty() ? 0. : own.levels[0].wall_time) :
+                2. * done.back().wall_time;
             if (seconds_left() < needed)
               break;
             started = true;
-            if (!zoom.next(Output::ResultFolder(radius_folder.path_of(
-                  "level_" + std::to_string(level)))))
+            if (!zoom.next(Output::ResultFolder(
+                  radius_folder.path_of("level_" + std::to_string(level)))))
               break;
             const auto &levels = zoom.levels();
             progress(fmt::format("radius {:.4g} m, level {:2d}: peak {:.4e} Pa",
-                                 radius, level,
+                                 radius,
+                                 level,
                                  levels.back().profile.peak_traction));
             if (rounding_point(radius, levels, tolerance).converged)
               break;
           }
         if (started)
-          study.points.push_back(rounding_point(radius, zoom.levels(), tolerance));
+          study.points.push_back(
+            rounding_point(radius, zoom.levels(), tolerance));
       }
 
     std::vector<double> radii, peaks;
-    study.falls_with_radius = true;
+    study.falls_with_radius      = true;
     const RoundingPoint *smaller = nullptr;
     for (const auto &point : study.points)
       if (point.converged)

@@ -12,29 +12,34 @@ namespace FloorBlock::Corner
   /** @brief The corner's peak at one rounding radius. */
   struct RoundingPoint
   {
-    double radius = 0.;            ///< m
-    double peak   = 0.;            ///< Pa, pointwise peak of the last level
-    double averaged_peak = 0.;     ///< Pa, over the scene's averaging length
-    double contact_length = 0.;    ///< m, the joint's closed length
-    double edge_beyond_corner = 0.; ///< m, how far the contact reaches into the fillet
-    /** Relative peak change over the last two levels: the convergence reached. */
+    double radius         = 0.; ///< m
+    double peak           = 0.; ///< Pa, pointwise peak of the last level
+    double averaged_peak  = 0.; ///< Pa, over the scene's averaging length
+    double contact_length = 0.; ///< m, the joint's closed length
+    double edge_beyond_corner =
+      0.; ///< m, how far the contact reaches into the fillet
+    /** Relative peak change over the last two levels: the convergence reached.
+     */
     double last_change = 0.;
-    /** Last two changes within Corner/Converged change, the fillet's contact resolved. */
-    bool   converged   = false;
-    unsigned int n_levels = 0;
-    unsigned int n_dofs   = 0;
-    double smallest_size = 0.; ///< m, cells asked for on the last level
-    double wall_time     = 0.; ///< s, all levels
+    /** Last two changes within Corner/Converged change, the fillet's contact
+     * resolved. */
+    bool         converged     = false;
+    unsigned int n_levels      = 0;
+    unsigned int n_dofs        = 0;
+    double       smallest_size = 0.; ///< m, cells asked for on the last level
+    double       wall_time     = 0.; ///< s, all levels
   };
 
   /** @brief The rounding study and the power law fitted through it. */
   struct RoundingStudy
   {
     std::vector<RoundingPoint> points;
-    /** Slope of log peak against log radius (least squares), all converged points. */
-    double fitted_power   = 0.;
-    /** Whether every converged point's peak is below the one at the next smaller radius. */
-    bool   falls_with_radius = false;
+    /** Slope of log peak against log radius (least squares), all converged
+     * points. */
+    double fitted_power = 0.;
+    /** Whether every converged point's peak is below the one at the next
+     * smaller radius. */
+    bool falls_with_radius = false;
   };
 
   /**
@@ -66,6 +71,7 @@ namespace FloorBlock::Corner
    * level's cells are at most 1/100 of the contact's reach into the fillet.
    */
   RoundingPoint
-  rounding_point(double radius, const std::vector<ZoomLevel> &levels,
-                 double tolerance);
+  rounding_point(double                        radius,
+                 const std::vector<ZoomLevel> &levels,
+                 double                        tolerance);
 } // namespace FloorBlock::Corner

@@ -12,10 +12,12 @@ namespace FloorBlock::Corner
                         const dealii::types::boundary_id             side,
                         const Material::ElasticLaw<2>               &law)
   {
-    const dealii::Quadrature<2> centre(dealii::Point<2>(0.5, 0.5));
-    dealii::FEValues<2> values(space.mapping(), space.fe(), centre,
+    const dealii::Quadrature<2>              centre(dealii::Point<2>(0.5, 0.5));
+    dealii::FEValues<2>                      values(space.mapping(),
+                               space.fe(),
+                               centre,
                                dealii::update_gradients);
-    const dealii::FEValuesExtractors::Vector   displacement(0);
+    const dealii::FEValuesExtractors::Vector displacement(0);
     std::vector<dealii::SymmetricTensor<2, 2>> strain(1);
     std::vector<FaceValue>                     result;
     for (const auto &cell : space.dof_handler().active_cell_iterators())
@@ -29,7 +31,8 @@ namespace FloorBlock::Corner
             const double trace = dealii::trace(law.stress(strain[0])) +
                                  law.out_of_plane_stress(strain[0]);
             result.push_back({cell->face(f)->vertex(0),
-                              cell->face(f)->vertex(1), -trace / 3.});
+                              cell->face(f)->vertex(1),
+                              -trace / 3.});
           }
     return result;
   }

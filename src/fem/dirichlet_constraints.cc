@@ -16,7 +16,7 @@ namespace FloorBlock::Fem
     public:
       explicit DisplacementFunction(
         const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-                   &displacement,
+                  &displacement,
         const bool homogeneous)
         : dealii::Function<dim>(dim)
         , displacement(displacement)
@@ -32,7 +32,7 @@ namespace FloorBlock::Fem
 
     private:
       const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &)>
-                 &displacement;
+                &displacement;
       const bool homogeneous;
     };
   } // namespace
@@ -45,9 +45,8 @@ namespace FloorBlock::Fem
                    dealii::IndexSet                           &dirichlet_dofs,
                    const dealii::IndexSet                     &readable_dofs)
   {
-    const dealii::IndexSet &lines = readable_dofs.size() > 0 ?
-                                      readable_dofs :
-                                      space.locally_relevant_dofs();
+    const dealii::IndexSet &lines =
+      readable_dofs.size() > 0 ? readable_dofs : space.locally_relevant_dofs();
     using Merge = dealii::AffineConstraints<double>::MergeConflictBehavior;
     dealii::AffineConstraints<double> constraints;
     constraints.reinit(lines);
@@ -62,13 +61,13 @@ namespace FloorBlock::Fem
                                                  homogeneous);
         const std::vector<bool> mask(condition.constrained_components.begin(),
                                      condition.constrained_components.end());
-        dealii::VectorTools::interpolate_boundary_values(
-          space.mapping(),
-          space.dof_handler(),
-          condition.boundary_id,
-          function,
-          dirichlet,
-          dealii::ComponentMask(mask));
+        dealii::VectorTools::interpolate_boundary_values(space.mapping(),
+                                                         space.dof_handler(),
+                                                         condition.boundary_id,
+                                                         function,
+                                                         dirichlet,
+                                                         dealii::ComponentMask(
+                                                           mask));
       }
     dirichlet.close();
     dirichlet_dofs = dealii::IndexSet(space.dof_handler().n_dofs());

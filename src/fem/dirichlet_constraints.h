@@ -47,9 +47,9 @@ namespace FloorBlock::Fem
    */
   template <int dim>
   dealii::AffineConstraints<double>
-  make_constraints(const FeSpace<dim>                        &space,
+  make_constraints(const FeSpace<dim>                         &space,
                    const std::vector<DirichletCondition<dim>> &conditions,
-                   const bool                                 homogeneous,
-                   dealii::IndexSet                          &dirichlet_dofs,
+                   const bool                                  homogeneous,
+                   dealii::IndexSet                           &dirichlet_dofs,
                    const dealii::IndexSet &readable_dofs = dealii::IndexSet());
 } // namespace FloorBlock::Fem

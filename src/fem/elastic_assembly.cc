@@ -26,7 +26,7 @@ namespace FloorBlock::Fem
 
     template <int dim>
     double
-    density_of(const ElasticModel<dim> &model,
+    density_of(const ElasticModel<dim>         &model,
                const dealii::types::material_id id)
     {
       const auto found = model.densities.find(id);
@@ -43,22 +43,22 @@ namespace FloorBlock::Fem
                           const ElasticAssemblyTargets<dim>       &targets)
   {
     using namespace dealii;
-    const FiniteElement<dim> &fe = space.fe();
-    FEValues<dim>     fe_values(space.mapping(),
+    const FiniteElement<dim>            &fe = space.fe();
+    FEValues<dim>                        fe_values(space.mapping(),
                             fe,
                             space.cell_quadrature(),
                             update_gradients | update_values |
                               update_JxW_values);
-    FEFaceValues<dim> face_values(space.mapping(),
+    FEFaceValues<dim>                    face_values(space.mapping(),
                                   fe,
                                   space.face_quadrature(),
                                   update_values | update_normal_vectors |
                                     update_JxW_values);
-    const unsigned int n_cell_dofs = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n_cell_dofs, n_cell_dofs);
-    Vector<double>     cell_load(n_cell_dofs);
-    Vector<double>     cell_displacement(n_cell_dofs);
-    Vector<double>     cell_residual(n_cell_dofs);
+    const unsigned int                   n_cell_dofs = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n_cell_dofs, n_cell_dofs);
+    Vector<double>                       cell_load(n_cell_dofs);
+    Vector<double>                       cell_displacement(n_cell_dofs);
+    Vector<double>                       cell_residual(n_cell_dofs);
     std::vector<types::global_dof_index> dof_indices(n_cell_dofs);
     std::vector<SymmetricTensor<2, dim>> strain_basis(n_cell_dofs);
 
@@ -66,7 +66,7 @@ namespace FloorBlock::Fem
       *targets.applied_load_total = Tensor<1, dim>();
 
     CellMatrixCache *const cache = targets.cache;
-    const unsigned int n_cells =
+    const unsigned int     n_cells =
       space.dof_handler().get_triangulation().n_active_cells();
     const bool cache_ready =
       cache != nullptr && cache->matrices.size() == n_cells;
@@ -77,9 +77,10 @@ namespace FloorBlock::Fem
       {
         if (!cell->is_locally_owned())
           continue;
-        const Material::ElasticLaw<dim> &law = law_of(model, cell->material_id());
+        const Material::ElasticLaw<dim> &law =
+          law_of(model, cell->material_id());
         const SymmetricTensor<4, dim> &stiffness = law.stiffness_tensor();
-        const Tensor<1, dim> body_force =
+        const Tensor<1, dim>           body_force =
           density_of(model, cell->material_id()) * model.gravity;
         const bool need_matrix = !cache_ready;
         fe_values.reinit(cell);
@@ -127,9 +128,11 @@ namespace FloorBlock::Fem
             face_values.reinit(cell, face);
             for (const unsigned int q : face_values.quadrature_point_indices())
               {
-                const Tensor<1, dim> traction = surface_traction(
-                  model, face->boundary_id(), pressure->second,
-                  face_values.normal_vector(q));
+                const Tensor<1, dim> traction =
+                  surface_traction(model,
+                                   face->boundary_id(),
+                                   pressure->second,
+                                   face_values.normal_vector(q));
                 const double weight = face_values.JxW(q);
                 for (unsigned int i = 0; i < n_cell_dofs; ++i)
                   cell_load(i) +=

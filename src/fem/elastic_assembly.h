@@ -58,8 +58,8 @@ namespace FloorBlock::Fem
    */
   template <int dim>
   void
-  assemble_elastic_system(const FeSpace<dim>                      &space,
-                          const ElasticModel<dim>                 &model,
+  assemble_elastic_system(const FeSpace<dim>                          &space,
+                          const ElasticModel<dim>                     &model,
                           const dealii::TrilinosWrappers::MPI::Vector &solution,
                           const dealii::AffineConstraints<double> &constraints,
                           const ElasticAssemblyTargets<dim>       &targets);

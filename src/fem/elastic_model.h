@@ -39,7 +39,7 @@ namespace FloorBlock::Fem
      * Unit vector of the true vertical, downward, in the model's frame
      * (-e_{dim-1} unless the frame is turned, Bedding/Frame dip).
      */
-    dealii::Tensor<1, dim> down = -dealii::Tensor<1, dim>(
-      dealii::Point<dim>::unit_vector(dim - 1));
+    dealii::Tensor<1, dim> down =
+      -dealii::Tensor<1, dim>(dealii::Point<dim>::unit_vector(dim - 1));
   };
 } // namespace FloorBlock::Fem

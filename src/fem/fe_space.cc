@@ -1,8 +1,8 @@
 #include <fem/fe_space.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
-#include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <limits>

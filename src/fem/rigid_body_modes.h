@@ -1,7 +1,6 @@
 #pragma once
 
 #include <fem/fe_space.h>
-
 #include <solver/near_null_space.h>
 
 namespace FloorBlock::Fem

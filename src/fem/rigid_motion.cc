@@ -60,15 +60,15 @@ namespace FloorBlock::Fem
           packed.push_back(body.cross);
           packed.push_back(body.radius);
         }
-      const unsigned int record = 2 * dim + 4;
+      const unsigned int                                 record = 2 * dim + 4;
       std::map<dealii::types::material_id, Moments<dim>> total;
       for (const auto &part :
            dealii::Utilities::MPI::all_gather(communicator, packed))
         for (std::size_t r = 0; r + record <= part.size(); r += record)
           {
             const double *const values = part.data() + r;
-            Moments<dim>       &body   = total[static_cast<
-              dealii::types::material_id>(values[0])];
+            Moments<dim>       &body =
+              total[static_cast<dealii::types::material_id>(values[0])];
             body.area += values[1];
             for (unsigned int c = 0; c < dim; ++c)
               {
@@ -89,15 +89,14 @@ namespace FloorBlock::Fem
   {
     std::map<dealii::types::material_id, Moments<dim>> bodies;
 
-    dealii::FEValues<dim> fe_values(space.mapping(),
+    dealii::FEValues<dim>                    fe_values(space.mapping(),
                                     space.fe(),
                                     space.cell_quadrature(),
                                     dealii::update_values |
                                       dealii::update_quadrature_points |
                                       dealii::update_JxW_values);
     const dealii::FEValuesExtractors::Vector displacement(0);
-    std::vector<dealii::Tensor<1, dim>>      values(
-      space.cell_quadrature().size());
+    std::vector<dealii::Tensor<1, dim>> values(space.cell_quadrature().size());
     for (const auto &cell : space.dof_handler().active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -126,9 +125,8 @@ namespace FloorBlock::Fem
         motion.translation = body.displacement / body.area;
         // About the centroid: int r x u = int x x u - c x int u, and
         // int |r|^2 = int |x|^2 - A |c|^2.
-        const double moment =
-          body.cross - (centroid[0] * body.displacement[1] -
-                        centroid[1] * body.displacement[0]);
+        const double moment = body.cross - (centroid[0] * body.displacement[1] -
+                                            centroid[1] * body.displacement[0]);
         const double inertia =
           body.radius - body.area * in_plane_norm_square(centroid);
         motion.rotation   = inertia > 0. ? moment / inertia : 0.;

@@ -10,12 +10,11 @@ namespace FloorBlock::Fem
 {
   template <int dim>
   void
-  make_sparsity(
-    const FeSpace<dim>                      &space,
-    const dealii::AffineConstraints<double> &constraints,
-    const std::vector<std::vector<dealii::types::global_dof_index>>
-                                              &coupled_groups,
-    dealii::TrilinosWrappers::SparsityPattern &pattern)
+  make_sparsity(const FeSpace<dim>                      &space,
+                const dealii::AffineConstraints<double> &constraints,
+                const std::vector<std::vector<dealii::types::global_dof_index>>
+                                                          &coupled_groups,
+                dealii::TrilinosWrappers::SparsityPattern &pattern)
   {
     dealii::DynamicSparsityPattern dynamic(space.locally_relevant_dofs());
     dealii::DoFTools::make_sparsity_pattern(space.dof_handler(),
@@ -40,13 +39,15 @@ namespace FloorBlock::Fem
   }
 
   template void
-  make_sparsity(const FeSpace<2> &,
-                const dealii::AffineConstraints<double> &,
-                const std::vector<std::vector<dealii::types::global_dof_index>> &,
-                dealii::TrilinosWrappers::SparsityPattern &);
+  make_sparsity(
+    const FeSpace<2> &,
+    const dealii::AffineConstraints<double> &,
+    const std::vector<std::vector<dealii::types::global_dof_index>> &,
+    dealii::TrilinosWrappers::SparsityPattern &);
   template void
-  make_sparsity(const FeSpace<3> &,
-                const dealii::AffineConstraints<double> &,
-                const std::vector<std::vector<dealii::types::global_dof_index>> &,
-                dealii::TrilinosWrappers::SparsityPattern &);
+  make_sparsity(
+    const FeSpace<3> &,
+    const dealii::AffineConstraints<double> &,
+    const std::vector<std::vector<dealii::types::global_dof_index>> &,
+    dealii::TrilinosWrappers::SparsityPattern &);
 } // namespace FloorBlock::Fem

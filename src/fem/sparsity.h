@@ -20,9 +20,9 @@ namespace FloorBlock::Fem
    */
   template <int dim>
   void
-  make_sparsity(
-    const FeSpace<dim>                                        &space,
-    const dealii::AffineConstraints<double>                   &constraints,
-    const std::vector<std::vector<dealii::types::global_dof_index>> &coupled_groups,
-    dealii::TrilinosWrappers::SparsityPattern                 &pattern);
+  make_sparsity(const FeSpace<dim>                      &space,
+                const dealii::AffineConstraints<double> &constraints,
+                const std::vector<std::vector<dealii::types::global_dof_index>>
+                                                          &coupled_groups,
+                dealii::TrilinosWrappers::SparsityPattern &pattern);
 } // namespace FloorBlock::Fem

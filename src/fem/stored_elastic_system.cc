@@ -57,10 +57,10 @@ namespace FloorBlock::Fem
         for (const auto &[master, weight] : line.entries)
           {
             if (!owned.is_element(master))
-              throw std::logic_error(
-                "StoredElasticSystem: master DoF " + std::to_string(master) +
-                " of DoF " + std::to_string(line.index) +
-                " is not locally owned");
+              throw std::logic_error("StoredElasticSystem: master DoF " +
+                                     std::to_string(master) + " of DoF " +
+                                     std::to_string(line.index) +
+                                     " is not locally owned");
             masters.emplace_back(owned.index_within_set(master), weight);
           }
         constrained_rows.push_back(owned.index_within_set(line.index));
@@ -70,10 +70,10 @@ namespace FloorBlock::Fem
     CellMatrixCache cache;
     tangent_stiffness.reinit(tangent_pattern);
     ElasticAssemblyTargets<dim> condensed;
-    condensed.matrix = &tangent_stiffness;
-    condensed.cache  = &cache;
+    condensed.matrix            = &tangent_stiffness;
+    condensed.cache             = &cache;
     const MPI_Comm communicator = space.dof_handler().get_communicator();
-    Vector zero(owned, space.locally_relevant_dofs(), communicator);
+    Vector         zero(owned, space.locally_relevant_dofs(), communicator);
     assemble_elastic_system(
       space, model, zero, homogeneous_constraints, condensed);
 
@@ -105,7 +105,7 @@ namespace FloorBlock::Fem
     for (auto &entry : gravity_only.pressures)
       entry.second = 0.;
     ElasticModel<dim> pressure_only = model;
-    pressure_only.gravity = dealii::Tensor<1, dim>();
+    pressure_only.gravity           = dealii::Tensor<1, dim>();
     gravity_load.reinit(owned, communicator);
     pressure_load.reinit(owned, communicator);
     assemble_load(space, gravity_only, gravity_load);
@@ -127,7 +127,10 @@ namespace FloorBlock::Fem
                                      Vector       &residual) const
   {
     full_stiffness.vmult(residual, solution);
-    residual.add(-gravity_factor, gravity_load, -pressure_factor, pressure_load);
+    residual.add(-gravity_factor,
+                 gravity_load,
+                 -pressure_factor,
+                 pressure_load);
     // Through the locally owned storage: no compress() (and no
     // collective call) for entries that are all owned here.
     double *const values = residual.begin();
@@ -142,9 +145,10 @@ namespace FloorBlock::Fem
 
   template <int dim>
   double
-  StoredElasticSystem<dim>::residual_magnitude(const Vector &solution,
-                                               const double  gravity_factor,
-                                               const double  pressure_factor) const
+  StoredElasticSystem<dim>::residual_magnitude(
+    const Vector &solution,
+    const double  gravity_factor,
+    const double  pressure_factor) const
   {
     Vector magnitude(solution);
     for (auto &value : magnitude)

@@ -88,7 +88,7 @@ namespace FloorBlock::Fem
      */
     double
     round_off_floor(const dealii::TrilinosWrappers::MPI::Vector &solution,
-                    const double gravity_factor,
+                    const double                                 gravity_factor,
                     const double pressure_factor) const;
 
   private:
@@ -97,8 +97,8 @@ namespace FloorBlock::Fem
     std::size_t max_row_length = 0;
     /** |K| entry by entry, for residual_magnitude(). */
     dealii::TrilinosWrappers::SparseMatrix absolute_stiffness;
-    dealii::TrilinosWrappers::SparseMatrix    full_stiffness;
-    dealii::TrilinosWrappers::SparseMatrix    tangent_stiffness;
+    dealii::TrilinosWrappers::SparseMatrix full_stiffness;
+    dealii::TrilinosWrappers::SparseMatrix tangent_stiffness;
     /** Loads at factor one (N): gravity alone, pressures alone. */
     dealii::TrilinosWrappers::MPI::Vector gravity_load;
     dealii::TrilinosWrappers::MPI::Vector pressure_load;
@@ -107,8 +107,7 @@ namespace FloorBlock::Fem
      * residual moved to the masters (same indexing) with their weights,
      * then zeroed.
      */
-    std::vector<std::size_t> constrained_rows;
-    std::vector<std::vector<std::pair<std::size_t, double>>>
-      constraint_entries;
+    std::vector<std::size_t>                                 constrained_rows;
+    std::vector<std::vector<std::pair<std::size_t, double>>> constraint_entries;
   };
 } // namespace FloorBlock::Fem

@@ -28,14 +28,15 @@ namespace FloorBlock::Fem
                        const ElasticModel<dim>          &model)
   {
     // A scalar Q1 element only to reach the faces' normals and JxW.
-    const dealii::FE_Q<dim>       fe(1);
-    dealii::DoFHandler<dim>       dof_handler(triangulation);
+    const dealii::FE_Q<dim> fe(1);
+    dealii::DoFHandler<dim> dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
     const dealii::QGauss<dim - 1> quadrature(2);
-    dealii::FEFaceValues<dim>     face_values(fe, quadrature,
+    dealii::FEFaceValues<dim>     face_values(fe,
+                                          quadrature,
                                           dealii::update_normal_vectors |
                                             dealii::update_JxW_values);
-    SurfaceLoad<dim> load;
+    SurfaceLoad<dim>              load;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         {
@@ -48,7 +49,8 @@ namespace FloorBlock::Fem
           face_values.reinit(cell, face);
           for (const unsigned int q : face_values.quadrature_point_indices())
             {
-              load.force += surface_traction(model, face->boundary_id(),
+              load.force += surface_traction(model,
+                                             face->boundary_id(),
                                              pressure->second,
                                              face_values.normal_vector(q)) *
                             face_values.JxW(q);
@@ -56,8 +58,9 @@ namespace FloorBlock::Fem
             }
         }
     const MPI_Comm communicator = triangulation.get_communicator();
-    load.force       = dealii::Utilities::MPI::sum(load.force, communicator);
-    load.loaded_area = dealii::Utilities::MPI::sum(load.loaded_area, communicator);
+    load.force = dealii::Utilities::MPI::sum(load.force, communicator);
+    load.loaded_area =
+      dealii::Utilities::MPI::sum(load.loaded_area, communicator);
     return load;
   }
 

@@ -7,11 +7,11 @@
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cmath>
-#include <type_traits>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <type_traits>
 
 namespace FloorBlock::Fem
 {
@@ -37,9 +37,8 @@ namespace FloorBlock::Fem
         const dealii::DataPostprocessorInputs::Vector<2> &inputs,
         std::vector<dealii::Vector<double>> &computed) const override
       {
-        const auto cell = inputs.template get_cell<2>();
-        const Material::ElasticLaw<2> &law =
-          model.laws.at(cell->material_id());
+        const auto                     cell = inputs.template get_cell<2>();
+        const Material::ElasticLaw<2> &law = model.laws.at(cell->material_id());
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             dealii::Tensor<2, 2> gradient;
@@ -49,17 +48,17 @@ namespace FloorBlock::Fem
               dealii::symmetrize(gradient);
             const dealii::SymmetricTensor<2, 2> stress = law.stress(strain);
             const double out_of_plane = law.out_of_plane_stress(strain);
-            const double centre = (stress[0][0] + stress[1][1]) / 2.;
-            const double radius = std::sqrt(
-              std::pow((stress[0][0] - stress[1][1]) / 2., 2) +
-              stress[0][1] * stress[0][1]);
+            const double centre       = (stress[0][0] + stress[1][1]) / 2.;
+            const double radius =
+              std::sqrt(std::pow((stress[0][0] - stress[1][1]) / 2., 2) +
+                        stress[0][1] * stress[0][1]);
             const double principal_max = centre + radius;
             const double principal_min = centre - radius;
             // von Mises of the full 3D plane-strain stress state.
-            const double von_mises = std::sqrt(
-              0.5 * (std::pow(principal_max - principal_min, 2) +
-                     std::pow(principal_min - out_of_plane, 2) +
-                     std::pow(out_of_plane - principal_max, 2)));
+            const double von_mises =
+              std::sqrt(0.5 * (std::pow(principal_max - principal_min, 2) +
+                               std::pow(principal_min - out_of_plane, 2) +
+                               std::pow(out_of_plane - principal_max, 2)));
             computed[q](0) = stress[0][0];
             computed[q](1) = stress[1][1];
             computed[q](2) = stress[0][1];
@@ -108,9 +107,8 @@ namespace FloorBlock::Fem
         const dealii::DataPostprocessorInputs::Vector<3> &inputs,
         std::vector<dealii::Vector<double>> &computed) const override
       {
-        const auto cell = inputs.template get_cell<3>();
-        const Material::ElasticLaw<3> &law =
-          model.laws.at(cell->material_id());
+        const auto                     cell = inputs.template get_cell<3>();
+        const Material::ElasticLaw<3> &law = model.laws.at(cell->material_id());
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             dealii::Tensor<2, 3> gradient;
@@ -155,17 +153,19 @@ namespace FloorBlock::Fem
 
   template <int dim>
   void
-  write_vtu_increment(const FeSpace<dim>                          &space,
-                      const ElasticModel<dim>                     &model,
-                      const dealii::TrilinosWrappers::MPI::Vector &solution,
-                      const std::vector<dealii::types::global_dof_index> &state_dofs,
-                      const std::vector<double>                   &states,
-                      const std::string                           &directory,
-                      std::vector<std::pair<double, std::string>> &records)
+  write_vtu_increment(
+    const FeSpace<dim>                                 &space,
+    const ElasticModel<dim>                            &model,
+    const dealii::TrilinosWrappers::MPI::Vector        &solution,
+    const std::vector<dealii::types::global_dof_index> &state_dofs,
+    const std::vector<double>                          &states,
+    const std::string                                  &directory,
+    std::vector<std::pair<double, std::string>>        &records)
   {
-    const auto    &dof_handler  = space.dof_handler();
-    const MPI_Comm communicator = dof_handler.get_communicator();
-    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(communicator);
+    const auto        &dof_handler  = space.dof_handler();
+    const MPI_Comm     communicator = dof_handler.get_communicator();
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_processes =
       dealii::Utilities::MPI::n_mpi_processes(communicator);
     if (rank == 0)
@@ -186,9 +186,10 @@ namespace FloorBlock::Fem
 
     dealii::DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
-    const std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
-      vector_kind(dim,
-                  dealii::DataComponentInterpretation::component_is_part_of_vector);
+    const std::vector<
+      dealii::DataComponentInterpretation::DataComponentInterpretation>
+      vector_kind(
+        dim, dealii::DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(displacement,
                              std::vector<std::string>(dim, "displacement"),
                              dealii::DataOut<dim>::type_dof_data,
@@ -197,12 +198,12 @@ namespace FloorBlock::Fem
     // are placeholders, named apart in 3D.
     std::vector<std::string> state_names{"contact_state"};
     for (unsigned int c = 1; c < dim; ++c)
-      state_names.push_back(dim == 2 ? std::string("contact_state_unused") :
-                                       "contact_state_unused_" +
-                                         std::to_string(c));
+      state_names.push_back(dim == 2 ?
+                              std::string("contact_state_unused") :
+                              "contact_state_unused_" + std::to_string(c));
     data_out.add_data_vector(contact_state, state_names);
-    using Postprocessor =
-      std::conditional_t<dim == 2, StressPostprocessor, SolidStressPostprocessor>;
+    using Postprocessor = std::
+      conditional_t<dim == 2, StressPostprocessor, SolidStressPostprocessor>;
     const Postprocessor stress(model);
     data_out.add_data_vector(displacement, stress);
     data_out.add_data_vector(material, "material_id");

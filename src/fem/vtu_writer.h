@@ -31,11 +31,12 @@ namespace FloorBlock::Fem
    */
   template <int dim>
   void
-  write_vtu_increment(const FeSpace<dim>                          &space,
-                      const ElasticModel<dim>                     &model,
-                      const dealii::TrilinosWrappers::MPI::Vector &solution,
-                      const std::vector<dealii::types::global_dof_index> &state_dofs,
-                      const std::vector<double>                   &states,
-                      const std::string                           &directory,
-                      std::vector<std::pair<double, std::string>> &records);
+  write_vtu_increment(
+    const FeSpace<dim>                                 &space,
+    const ElasticModel<dim>                            &model,
+    const dealii::TrilinosWrappers::MPI::Vector        &solution,
+    const std::vector<dealii::types::global_dof_index> &state_dofs,
+    const std::vector<double>                          &states,
+    const std::string                                  &directory,
+    std::vector<std::pair<double, std::string>>        &records);
 } // namespace FloorBlock::Fem

@@ -1,5 +1,4 @@
 #include <common/input_error.h>
-
 #include <geometry/assembly_description.h>
 #include <geometry/bedding_profile.h>
 #include <geometry/body_outline.h>
@@ -31,15 +30,16 @@ namespace FloorBlock::Geometry
                          "a finite length > 0 (units: m)");
     }
 
-    /** Steepest inclination of the geometry's bedding under the blocks. Units: rad. */
+    /** Steepest inclination of the geometry's bedding under the blocks. Units:
+     * rad. */
     double
     steepest_inclination(const AssemblyDescription &description)
     {
       const BeddingProfile profile =
         BeddingProfile::geometry_profile(description);
       const double x_free = description.n_blocks * description.block_width;
-      return std::atan(
-        std::max(std::abs(profile.slope(x_free)), std::abs(profile.slope(0.0))));
+      return std::atan(std::max(std::abs(profile.slope(x_free)),
+                                std::abs(profile.slope(0.0))));
     }
   } // namespace
 
@@ -78,8 +78,8 @@ namespace FloorBlock::Geometry
         if (steepest_inclination(description) > max_bedding_inclination)
           {
             // Slope 2x/k at the free end x = nL must stay below tan(limit).
-            const double max_free_end = std::tan(max_bedding_inclination) *
-                                        description.curvature / 2.0;
+            const double max_free_end =
+              std::tan(max_bedding_inclination) * description.curvature / 2.0;
             const unsigned int fitting = static_cast<unsigned int>(
               std::floor(max_free_end / description.block_width));
             throw InputError(
@@ -93,11 +93,10 @@ namespace FloorBlock::Geometry
           }
       }
 
-    const double radius = description.corner_rounding_radius;
-    const double smallest_side =
-      std::min({description.block_width,
-                description.block_height,
-                description.face_block_width});
+    const double radius        = description.corner_rounding_radius;
+    const double smallest_side = std::min({description.block_width,
+                                           description.block_height,
+                                           description.face_block_width});
     if (!(std::isfinite(radius) && radius >= 0.0 &&
           radius < smallest_side / 2.0))
       throw InputError("Geometry/Corner rounding radius",
@@ -121,14 +120,13 @@ namespace FloorBlock::Geometry
           corner_size <= smallest_block_side))
       throw InputError("Mesh/Corner size",
                        text(corner_size) + " m",
-                       text(min_corner_size) + " m <= size <= " +
-                         text(smallest_block_side) +
+                       text(min_corner_size) +
+                         " m <= size <= " + text(smallest_block_side) +
                          " m (between 1e-3 and 1 times the smaller block "
                          "side)");
-    const double far_size = description.mesh_far_size;
-    const double scene_extent =
-      description.n_blocks * description.block_width +
-      description.face_block_width;
+    const double far_size     = description.mesh_far_size;
+    const double scene_extent = description.n_blocks * description.block_width +
+                                description.face_block_width;
     if (!(std::isfinite(far_size) && far_size >= corner_size &&
           far_size <= scene_extent))
       throw InputError("Mesh/Far size",

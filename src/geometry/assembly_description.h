@@ -21,9 +21,11 @@ namespace FloorBlock::Geometry
     double block_width = 1.0;
     /** Block height H, measured vertically. Units: m. */
     double block_height = 2.0;
-    /** Width of the fixed face block; the parser sets it to L when absent. Units: m. */
+    /** Width of the fixed face block; the parser sets it to L when absent.
+     * Units: m. */
     double face_block_width = 1.0;
-    /** Vertical thickness of the base (bedding layer) below the joint. Units: m. */
+    /** Vertical thickness of the base (bedding layer) below the joint. Units:
+     * m. */
     double base_thickness = 0.5;
     /**
      * No base body: the blocks stand on a rigid half-plane below the
@@ -32,10 +34,11 @@ namespace FloorBlock::Geometry
     bool rigid_base = false;
 
     BeddingShape bedding_shape = BeddingShape::parabolic;
-    /** Inclination alpha of a planar bedding, rising away from the face. Units: rad. */
+    /** Inclination alpha of a planar bedding, rising away from the face. Units:
+     * rad. */
     double inclination = 0.0;
     /** Curvature parameter k of the parabolic bedding y = x^2/k. Units: m. */
-    double curvature = 400.0;
+    double      curvature    = 400.0;
     FloorUplift floor_uplift = FloorUplift::inclined_bedding;
 
     /**

@@ -1,5 +1,4 @@
 #include <common/atomic_file.h>
-
 #include <geometry/assembly_mesher.h>
 #include <geometry/body_outline.h>
 #include <geometry/gmsh_geometry.h>
@@ -9,9 +8,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <set>
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -31,13 +30,14 @@ namespace FloorBlock::Geometry
     /** Gmsh element type number of a 4-node quadrilateral. */
     constexpr int gmsh_quadrangle = 3;
 
-    /** Gmsh 2D algorithm 6: Frontal-Delaunay (8 crashes in 4.8 with a background field). */
+    /** Gmsh 2D algorithm 6: Frontal-Delaunay (8 crashes in 4.8 with a
+     * background field). */
     constexpr int frontal_delaunay = 6;
     /** Blossom recombination followed by subdivision: quads only. */
     constexpr int blossom_full_quad = 3;
 
-    const std::vector<double> identity_transform = {
-      1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    const std::vector<double> identity_transform =
+      {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
     void
     set_size_field(const AssemblyOutline        &outline,
@@ -48,13 +48,12 @@ namespace FloorBlock::Geometry
       // not part of any surface and carry no physical group.
       std::vector<double> point_tags;
       for (const Point2 &point : outline.refinement_points)
-        point_tags.push_back(
-          gmsh::model::occ::addPoint(point.x, point.y, 0.0));
+        point_tags.push_back(gmsh::model::occ::addPoint(point.x, point.y, 0.0));
       gmsh::model::occ::synchronize();
 
       const int distance = mesh::field::add("Distance");
       mesh::field::setNumbers(distance, "NodesList", point_tags);
-      const int size = mesh::field::add("MathEval");
+      const int          size = mesh::field::add("MathEval");
       std::ostringstream formula;
       formula.precision(17);
       formula << "min(" << description.mesh_far_size << ", "
@@ -62,14 +61,15 @@ namespace FloorBlock::Geometry
               << description.mesh_growth_rate - 1.0 << " * F" << distance
               << ")";
       mesh::field::setString(size, "F", formula.str());
-      const int local = add_local_size_field(local_sizes,
+      const int local      = add_local_size_field(local_sizes,
                                              description.mesh_growth_rate,
                                              description.mesh_far_size);
-      int background = size;
+      int       background = size;
       if (local >= 0)
         {
           background = mesh::field::add("Min");
-          mesh::field::setNumbers(background, "FieldsList",
+          mesh::field::setNumbers(background,
+                                  "FieldsList",
                                   {double(size), double(local)});
         }
       mesh::field::setAsBackgroundMesh(background);
@@ -78,8 +78,7 @@ namespace FloorBlock::Geometry
       gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
       gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
       gmsh::option::setNumber("Mesh.Algorithm", frontal_delaunay);
-      gmsh::option::setNumber("Mesh.RecombinationAlgorithm",
-                              blossom_full_quad);
+      gmsh::option::setNumber("Mesh.RecombinationAlgorithm", blossom_full_quad);
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
     }
 
@@ -108,11 +107,11 @@ namespace FloorBlock::Geometry
                                               segment.end.y - segment.start.y);
               // Blossom full-quad recombination halves every 1D mesh, so
               // the number of intervals must be even.
-              const int half_intervals = std::max(
-                1,
-                static_cast<int>(std::ceil(
-                  chord / (2.0 * non_matching_spacing_ratio *
-                           description.mesh_corner_size))));
+              const int half_intervals =
+                std::max(1,
+                         static_cast<int>(
+                           std::ceil(chord / (2.0 * non_matching_spacing_ratio *
+                                              description.mesh_corner_size))));
               const int n_intervals = 2 * half_intervals;
               mesh::setTransfiniteCurve(slave, n_intervals + 1);
             }
@@ -142,7 +141,7 @@ namespace FloorBlock::Geometry
                  const std::vector<LocalSize> &local_sizes)
     {
       const auto n_nodes = [&](const SegmentRef &ref) {
-        const Segment &arc = outline.bodies[ref.body].segments[ref.segment];
+        const Segment &arc    = outline.bodies[ref.body].segments[ref.segment];
         const double   growth = description.mesh_growth_rate;
         const double   spacing =
           std::min({description.mesh_corner_size,
@@ -150,10 +149,10 @@ namespace FloorBlock::Geometry
                     local_size_at(local_sizes, growth, arc.end)});
         // Blossom full-quad recombination meshes half the intervals and
         // halves them, so the number of intervals must be even.
-        const int half_intervals = std::max(
-          min_fillet_intervals / 2,
-          static_cast<int>(std::ceil(
-            arc_length(arc) / (2.0 * spacing))));
+        const int half_intervals =
+          std::max(min_fillet_intervals / 2,
+                   static_cast<int>(
+                     std::ceil(arc_length(arc) / (2.0 * spacing))));
         return 2 * half_intervals + 1;
       };
       for (unsigned int body = 0; body < outline.bodies.size(); ++body)
@@ -182,10 +181,10 @@ namespace FloorBlock::Geometry
       for (unsigned int kind = 0; kind < types.size(); ++kind)
         {
           if (types[kind] != gmsh_quadrangle && !element_tags[kind].empty())
-            throw std::runtime_error(
-              "Gmsh left " + std::to_string(element_tags[kind].size()) +
-              " non-quadrilateral cells (element type " +
-              std::to_string(types[kind]) + ")");
+            throw std::runtime_error("Gmsh left " +
+                                     std::to_string(element_tags[kind].size()) +
+                                     " non-quadrilateral cells (element type " +
+                                     std::to_string(types[kind]) + ")");
           statistics.n_cells += element_tags[kind].size();
           nodes.insert(node_tags[kind].begin(), node_tags[kind].end());
         }
@@ -219,7 +218,8 @@ namespace FloorBlock::Geometry
         statistics.n_bodies = outline.bodies.size();
         gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
         // Gmsh picks the format from the extension, so the temporary name
-        // keeps ".msh"; the rename makes the file appear complete or not at all.
+        // keeps ".msh"; the rename makes the file appear complete or not at
+        // all.
         const std::string temporary = temporary_name_for(msh_path) + ".msh";
         gmsh::write(temporary);
         if (!std::filesystem::exists(temporary))
@@ -228,7 +228,8 @@ namespace FloorBlock::Geometry
       }
     catch (const std::string &message)
       {
-        throw std::runtime_error("Gmsh failed to mesh the assembly: " + message);
+        throw std::runtime_error("Gmsh failed to mesh the assembly: " +
+                                 message);
       }
     statistics.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

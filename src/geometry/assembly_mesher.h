@@ -47,8 +47,8 @@ namespace FloorBlock::Geometry
    * @throws std::runtime_error if Gmsh fails or leaves non-quad cells.
    */
   MeshStatistics
-  write_gmsh_mesh(const AssemblyDescription   &description,
-                  const std::string           &msh_path,
+  write_gmsh_mesh(const AssemblyDescription    &description,
+                  const std::string            &msh_path,
                   const std::vector<LocalSize> &local_sizes = {});
 
   /**

@@ -42,8 +42,8 @@ namespace FloorBlock::Geometry
                           dealii::Triangulation<2>  &triangulation)
   {
     triangulation.set_all_manifold_ids(Ids::bedding_manifold);
-    triangulation.set_manifold(
-      Ids::bedding_manifold,
-      BeddingManifold(BeddingProfile::geometry_profile(description)));
+    triangulation.set_manifold(Ids::bedding_manifold,
+                               BeddingManifold(BeddingProfile::geometry_profile(
+                                 description)));
   }
 } // namespace FloorBlock::Geometry

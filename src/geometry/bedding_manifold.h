@@ -1,10 +1,10 @@
 #pragma once
 
-#include <deal.II/grid/manifold.h>
-#include <deal.II/grid/tria.h>
-
 #include <geometry/assembly_description.h>
 #include <geometry/bedding_profile.h>
+
+#include <deal.II/grid/manifold.h>
+#include <deal.II/grid/tria.h>
 
 #include <memory>
 

@@ -1,5 +1,4 @@
 #include <common/input_error.h>
-
 #include <geometry/bedding_profile.h>
 #include <geometry/body_outline.h>
 #include <geometry/ids.h>
@@ -14,7 +13,8 @@ namespace FloorBlock::Geometry
 {
   namespace
   {
-    /** Two fillets are mirror images if they agree to this fraction of the block width. */
+    /** Two fillets are mirror images if they agree to this fraction of the
+     * block width. */
     constexpr double mirror_tolerance_factor = 1e-12;
 
     /**
@@ -94,7 +94,7 @@ namespace FloorBlock::Geometry
       if (rounding_length == 0.0)
         return {sharp, sharp, sharp, false};
 
-      const double side_y = sharp.y + inward_y * rounding_length;
+      const double side_y    = sharp.y + inward_y * rounding_length;
       const auto   radius_at = [&](const double x_tangent) {
         const double slope = profile.slope(x_tangent);
         const double sine  = slope / std::sqrt(1.0 + slope * slope);
@@ -103,7 +103,8 @@ namespace FloorBlock::Geometry
       const auto mismatch = [&](const double x_tangent) {
         const double slope = profile.slope(x_tangent);
         return profile.height(x_tangent) + shift +
-               inward_y * radius_at(x_tangent) / std::sqrt(1.0 + slope * slope) -
+               inward_y * radius_at(x_tangent) /
+                 std::sqrt(1.0 + slope * slope) -
                side_y;
       };
       double toward_side = x_side;
@@ -141,17 +142,39 @@ namespace FloorBlock::Geometry
     {
       const double reach = frame.x_right - frame.x_left;
       return {
-        corner(profile, frame.x_left, +1.0, +1.0, 0.0, rounding_length, reach, fits),
-        corner(profile, frame.x_right, -1.0, +1.0, 0.0, rounding_length, reach, fits),
-        corner(profile, frame.x_right, -1.0, -1.0, height, rounding_length, reach, fits),
-        corner(profile, frame.x_left, +1.0, -1.0, height, rounding_length, reach, fits)};
+        corner(
+          profile, frame.x_left, +1.0, +1.0, 0.0, rounding_length, reach, fits),
+        corner(profile,
+               frame.x_right,
+               -1.0,
+               +1.0,
+               0.0,
+               rounding_length,
+               reach,
+               fits),
+        corner(profile,
+               frame.x_right,
+               -1.0,
+               -1.0,
+               height,
+               rounding_length,
+               reach,
+               fits),
+        corner(profile,
+               frame.x_left,
+               +1.0,
+               -1.0,
+               height,
+               rounding_length,
+               reach,
+               fits)};
     }
 
     Segment
     curve_piece(const BeddingProfile            &profile,
-                const double                      x_start,
-                const double                      x_end,
-                const double                      shift,
+                const double                     x_start,
+                const double                     x_end,
+                const double                     shift,
                 const dealii::types::boundary_id id)
     {
       const bool straight = profile.is_straight(x_start, x_end);
@@ -163,12 +186,13 @@ namespace FloorBlock::Geometry
               id};
     }
 
-    /** Appends the fillet arc of a rounded corner; returns its index (none if sharp). */
+    /** Appends the fillet arc of a rounded corner; returns its index (none if
+     * sharp). */
     std::optional<unsigned int>
     add_fillet(const Corner                    &corner,
-               const bool                        from_side,
+               const bool                       from_side,
                const dealii::types::boundary_id id,
-               std::vector<Segment>             &segments)
+               std::vector<Segment>            &segments)
     {
       if (!corner.rounded)
         return std::nullopt;
@@ -186,12 +210,12 @@ namespace FloorBlock::Geometry
      * straight side, so that the common part is one segment on both sides.
      */
     void
-    add_vertical_side(const double                      x,
-                      const double                      y_start,
-                      const double                      y_end,
-                      std::vector<double>               breaks,
+    add_vertical_side(const double                     x,
+                      const double                     y_start,
+                      const double                     y_end,
+                      std::vector<double>              breaks,
                       const dealii::types::boundary_id id,
-                      std::vector<Segment>             &segments)
+                      std::vector<Segment>            &segments)
     {
       const double y_low  = std::min(y_start, y_end);
       const double y_high = std::max(y_start, y_end);
@@ -207,11 +231,8 @@ namespace FloorBlock::Geometry
       double y_previous = y_start;
       for (const double y : breaks)
         {
-          segments.push_back({SegmentKind::line,
-                              {x, y_previous},
-                              {x, y},
-                              {x, y},
-                              id});
+          segments.push_back(
+            {SegmentKind::line, {x, y_previous}, {x, y}, {x, y}, id});
           y_previous = y;
         }
       segments.push_back(
@@ -234,21 +255,21 @@ namespace FloorBlock::Geometry
     std::vector<BlockFrame>
     block_frames(const AssemblyDescription &description)
     {
-      const unsigned int n_blocks = description.n_blocks;
-      const double       width    = description.block_width;
+      const unsigned int      n_blocks = description.n_blocks;
+      const double            width    = description.block_width;
       std::vector<BlockFrame> frames;
       for (unsigned int block = 1; block <= n_blocks; ++block)
         {
           const double x_left = (n_blocks - block) * width;
-          frames.push_back(
-            {x_left,
-             (n_blocks - block + 1) * width,
-             Ids::block_material(block),
-             Ids::bedding_block_side(block),
-             Ids::floor_surface(block),
-             Ids::vertical_joint_free_side(block),
-             block == 1 ? Ids::free_side_of_block_1 :
-                          Ids::vertical_joint_face_side(block - 1)});
+          frames.push_back({x_left,
+                            (n_blocks - block + 1) * width,
+                            Ids::block_material(block),
+                            Ids::bedding_block_side(block),
+                            Ids::floor_surface(block),
+                            Ids::vertical_joint_free_side(block),
+                            block == 1 ?
+                              Ids::free_side_of_block_1 :
+                              Ids::vertical_joint_face_side(block - 1)});
         }
       frames.push_back({-description.face_block_width,
                         0.0,
@@ -266,10 +287,10 @@ namespace FloorBlock::Geometry
     {
       if (!corner.rounded)
         return corner.side_point;
-      const double radius = std::hypot(corner.side_point.x - corner.centre.x,
+      const double radius    = std::hypot(corner.side_point.x - corner.centre.x,
                                        corner.side_point.y - corner.centre.y);
-      const double to_side_x  = corner.side_point.x - corner.centre.x;
-      const double to_side_y  = corner.side_point.y - corner.centre.y;
+      const double to_side_x = corner.side_point.x - corner.centre.x;
+      const double to_side_y = corner.side_point.y - corner.centre.y;
       const double to_curve_x = corner.curve_point.x - corner.centre.x;
       const double to_curve_y = corner.curve_point.y - corner.centre.y;
       const double sum_x      = to_side_x + to_curve_x;
@@ -283,9 +304,10 @@ namespace FloorBlock::Geometry
   AssemblyOutline
   build_outline(const AssemblyDescription &description)
   {
-    const BeddingProfile profile = BeddingProfile::geometry_profile(description);
-    const double         height  = description.block_height;
-    const double         radius  = description.corner_rounding_radius;
+    const BeddingProfile profile =
+      BeddingProfile::geometry_profile(description);
+    const double                  height = description.block_height;
+    const double                  radius = description.corner_rounding_radius;
     const std::vector<BlockFrame> frames = block_frames(description);
     // frames[0..n-1] = blocks 1..n, frames[n] = face block; the left
     // neighbour of frame f (towards the face) is frame f+1.
@@ -308,7 +330,7 @@ namespace FloorBlock::Geometry
       {
         const BlockFrame  &frame = frames[index];
         const BodyCorners &own   = corners[index];
-        const std::string  where = "on " + Ids::material_name(frame.material_id);
+        const std::string where = "on " + Ids::material_name(frame.material_id);
         if (!(own.bottom_left.curve_point.x < own.bottom_right.curve_point.x &&
               own.top_left.curve_point.x < own.top_right.curve_point.x &&
               own.bottom_left.side_point.y < own.top_left.side_point.y &&
@@ -324,7 +346,7 @@ namespace FloorBlock::Geometry
           left_breaks = {corners[index + 1].bottom_right.side_point.y,
                          corners[index + 1].top_right.side_point.y};
 
-        BodyOutline body{frame.material_id, {}};
+        BodyOutline           body{frame.material_id, {}};
         std::vector<Segment> &segments = body.segments;
         segments.push_back(curve_piece(profile,
                                        own.bottom_left.curve_point.x,
@@ -380,14 +402,15 @@ namespace FloorBlock::Geometry
                                  Ids::base_end_free_side});
         for (unsigned int index = 0; index < frames.size(); ++index)
           {
-            const BlockFrame  &frame = frames[index];
-            const BodyCorners &own   = corners[index];
-            const dealii::types::boundary_id id =
-              Ids::bedding_base_side(frame.bottom_id - Ids::bedding_block_side(0));
-            const std::array<double, 4> stations = {frame.x_right,
-                                                    own.bottom_right.curve_point.x,
-                                                    own.bottom_left.curve_point.x,
-                                                    frame.x_left};
+            const BlockFrame                &frame = frames[index];
+            const BodyCorners               &own   = corners[index];
+            const dealii::types::boundary_id id    = Ids::bedding_base_side(
+              frame.bottom_id - Ids::bedding_block_side(0));
+            const std::array<double, 4> stations = {
+              frame.x_right,
+              own.bottom_right.curve_point.x,
+              own.bottom_left.curve_point.x,
+              frame.x_left};
             for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
               if (stations[piece] != stations[piece + 1])
                 base.segments.push_back(curve_piece(
@@ -440,7 +463,7 @@ namespace FloorBlock::Geometry
     const bool         rounded    = radius > 0.0;
     for (unsigned int index = 0; index < frames.size(); ++index)
       {
-        const BodyCorners &own = corners[index];
+        const BodyCorners          &own     = corners[index];
         std::vector<const Corner *> contact = {&own.bottom_right};
         if (index != 0 || rounded)
           contact.push_back(&own.top_right);
@@ -469,8 +492,7 @@ namespace FloorBlock::Geometry
           case SegmentKind::line:
             twice_area += cross(segment.start, segment.end);
             break;
-          case SegmentKind::quadratic:
-            {
+            case SegmentKind::quadratic: {
               // B x B' is a cubic in t: 2-point Gauss-Legendre is exact.
               const double offset = 0.5 / std::sqrt(3.0);
               for (const double t : {0.5 - offset, 0.5 + offset})
@@ -483,7 +505,7 @@ namespace FloorBlock::Geometry
                                           t * t * p2.x,
                                         s * s * p0.y + 2 * s * t * p1.y +
                                           t * t * p2.y};
-                  const Point2 tangent{2 * s * (p1.x - p0.x) +
+                  const Point2  tangent{2 * s * (p1.x - p0.x) +
                                          2 * t * (p2.x - p1.x),
                                        2 * s * (p1.y - p0.y) +
                                          2 * t * (p2.y - p1.y)};
@@ -491,13 +513,14 @@ namespace FloorBlock::Geometry
                 }
               break;
             }
-          case SegmentKind::arc:
-            {
-              // x = c + r (cos th, sin th): x y' - y x' = r^2 + r (cx cos th + cy sin th).
+            case SegmentKind::arc: {
+              // x = c + r (cos th, sin th): x y' - y x' = r^2 + r (cx cos th +
+              // cy sin th).
               const Point2 &centre = segment.control;
               const Point2  from{segment.start.x - centre.x,
                                 segment.start.y - centre.y};
-              const Point2  to{segment.end.x - centre.x, segment.end.y - centre.y};
+              const Point2  to{segment.end.x - centre.x,
+                              segment.end.y - centre.y};
               const double  radius_squared = from.x * from.x + from.y * from.y;
               const double  sweep =
                 std::atan2(cross(from, to), from.x * to.x + from.y * to.y);
@@ -530,7 +553,8 @@ namespace FloorBlock::Geometry
       return Point2{2.0 * mirror_x - point.x, point.y};
     };
     const auto close = [&](const Point2 &a, const Point2 &b) {
-      return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance;
+      return std::abs(a.x - b.x) <= tolerance &&
+             std::abs(a.y - b.y) <= tolerance;
     };
     if (first.kind != second.kind)
       return false;
@@ -553,8 +577,7 @@ namespace FloorBlock::Geometry
     const bool same_ends =
       (equal(first.start, second.start) && equal(first.end, second.end)) ||
       (equal(first.start, second.end) && equal(first.end, second.start));
-    return same_ends &&
-           (first.kind == SegmentKind::line ||
-            equal(first.control, second.control));
+    return same_ends && (first.kind == SegmentKind::line ||
+                         equal(first.control, second.control));
   }
 } // namespace FloorBlock::Geometry

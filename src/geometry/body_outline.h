@@ -1,8 +1,8 @@
 #pragma once
 
-#include <deal.II/base/types.h>
-
 #include <geometry/assembly_description.h>
+
+#include <deal.II/base/types.h>
 
 #include <vector>
 
@@ -33,8 +33,9 @@ namespace FloorBlock::Geometry
     SegmentKind kind;
     Point2      start;
     Point2      end;
-    /** Middle Bezier control point (quadratic) or centre (arc); unused for lines. */
-    Point2 control;
+    /** Middle Bezier control point (quadratic) or centre (arc); unused for
+     * lines. */
+    Point2                     control;
     dealii::types::boundary_id boundary_id;
   };
 
@@ -93,7 +94,8 @@ namespace FloorBlock::Geometry
     std::vector<JointPair>   joint_pairs;
     /** Top fillets across every vertical joint (empty without rounding). */
     std::vector<FilletPair> fillet_pairs;
-    /** Contact corners where the mesh is refined (floor-level joint corners, block corners on the bedding). */
+    /** Contact corners where the mesh is refined (floor-level joint corners,
+     * block corners on the bedding). */
     std::vector<Point2> refinement_points;
   };
 

@@ -25,8 +25,7 @@ namespace FloorBlock::Geometry
                    const double footprint_start,
                    const double footprint_end)
   {
-    const double        ends[] = {0., footprint_start, footprint_end,
-                                  face_length};
+    const double ends[] = {0., footprint_start, footprint_end, face_length};
     std::vector<double> slices{0.};
     for (unsigned int part = 0; part < 3; ++part)
       {
@@ -50,7 +49,8 @@ namespace FloorBlock::Geometry
                    dealii::Triangulation<3>       &result)
   {
     result.clear();
-    dealii::GridGenerator::extrude_triangulation(assembly, slice_coordinates,
+    dealii::GridGenerator::extrude_triangulation(assembly,
+                                                 slice_coordinates,
                                                  result);
     // deal.II gives the end faces the next two free ids; ids.h names them.
     std::set<dealii::types::boundary_id> ids_2d;

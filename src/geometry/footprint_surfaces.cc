@@ -20,10 +20,9 @@ namespace FloorBlock::Geometry
         {
           if (!face->at_boundary())
             continue;
-          const auto found = retag.find(face->boundary_id());
-          const double z = face->center()[2];
-          if (found != retag.end() && z > footprint_start &&
-              z < footprint_end)
+          const auto   found = retag.find(face->boundary_id());
+          const double z     = face->center()[2];
+          if (found != retag.end() && z > footprint_start && z < footprint_end)
             {
               face->set_boundary_id(found->second);
               ++n_tagged;

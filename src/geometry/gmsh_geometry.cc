@@ -41,9 +41,9 @@ namespace FloorBlock::Geometry
     int
     add_curve(const Segment &segment, BodyPoints &points)
     {
-      const bool   reversed = lexicographically_less(segment.end, segment.start);
-      const Point2 &from    = reversed ? segment.end : segment.start;
-      const Point2 &to      = reversed ? segment.start : segment.end;
+      const bool reversed = lexicographically_less(segment.end, segment.start);
+      const Point2 &from  = reversed ? segment.end : segment.start;
+      const Point2 &to    = reversed ? segment.start : segment.end;
       const int     from_tag = points.tag(from);
       const int     to_tag   = points.tag(to);
       switch (segment.kind)
@@ -51,16 +51,13 @@ namespace FloorBlock::Geometry
           case SegmentKind::line:
             return occ::addLine(from_tag, to_tag);
           case SegmentKind::quadratic:
-          case SegmentKind::arc:
-            {
+            case SegmentKind::arc: {
               // The control point / centre is only a construction point.
-              const int helper = occ::addPoint(segment.control.x,
-                                               segment.control.y,
-                                               0.0);
-              const int curve =
-                segment.kind == SegmentKind::quadratic ?
-                  occ::addBezier({from_tag, helper, to_tag}) :
-                  occ::addCircleArc(from_tag, helper, to_tag);
+              const int helper =
+                occ::addPoint(segment.control.x, segment.control.y, 0.0);
+              const int curve = segment.kind == SegmentKind::quadratic ?
+                                  occ::addBezier({from_tag, helper, to_tag}) :
+                                  occ::addCircleArc(from_tag, helper, to_tag);
               occ::remove({{0, helper}});
               return curve;
             }

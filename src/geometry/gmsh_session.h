@@ -14,7 +14,8 @@ namespace FloorBlock::Geometry
   class GmshSession
   {
   public:
-    /** @param[in] verbose Let Gmsh print to the terminal (General.Terminal = 1). */
+    /** @param[in] verbose Let Gmsh print to the terminal (General.Terminal =
+     * 1). */
     explicit GmshSession(const bool verbose = false);
     ~GmshSession();
 

@@ -77,7 +77,7 @@ namespace FloorBlock::Geometry::Ids
   std::string
   id_table(const unsigned int n_blocks)
   {
-    constexpr int id_width = 6;
+    constexpr int      id_width = 6;
     std::ostringstream table;
     const auto row = [&](const unsigned int id, const std::string &name) {
       table << "  " << std::setw(id_width) << id << "  " << name << '\n';

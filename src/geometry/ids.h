@@ -46,7 +46,8 @@ namespace FloorBlock::Geometry::Ids
   constexpr dealii::types::material_id base_material       = 101;
   ///@}
 
-  /** Manifold id of the chart that keeps the bedding exact under refinement (bedding_manifold.h). */
+  /** Manifold id of the chart that keeps the bedding exact under refinement
+   * (bedding_manifold.h). */
   constexpr dealii::types::manifold_id bedding_manifold = 1;
 
   /** @name Boundary ids (equal to the Gmsh physical tags of the curves) */
@@ -78,7 +79,8 @@ namespace FloorBlock::Geometry::Ids
     return 4000 + block;
   }
 
-  /** Bedding joint under block i: the base top (i = 0: under the face block). */
+  /** Bedding joint under block i: the base top (i = 0: under the face block).
+   */
   constexpr dealii::types::boundary_id
   bedding_base_side(const unsigned int block)
   {

@@ -1,5 +1,4 @@
 #include <common/input_error.h>
-
 #include <geometry/local_size_field.h>
 
 #include <gmsh.h>
@@ -58,7 +57,8 @@ namespace FloorBlock::Geometry
     double size = std::numeric_limits<double>::max();
     for (const LocalSize &local : local_sizes)
       size = std::min(size,
-                      graded_size(local, growth_rate,
+                      graded_size(local,
+                                  growth_rate,
                                   std::hypot(point.x - local.position.x,
                                              point.y - local.position.y)));
     return size;
@@ -108,7 +108,8 @@ namespace FloorBlock::Geometry
         field::setNumber(graded, "LcMin", size);
         field::setNumber(graded, "LcMax", std::max(largest_size, size));
         field::setNumber(graded, "DistMin", 0.0);
-        field::setNumber(graded, "DistMax",
+        field::setNumber(graded,
+                         "DistMax",
                          std::max(largest_size - size, 0.0) /
                              (growth_rate - 1.0) +
                            std::numeric_limits<double>::min());

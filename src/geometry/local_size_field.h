@@ -32,8 +32,8 @@ namespace FloorBlock::Geometry
    * @throws FloorBlock::InputError naming the point and the size.
    */
   void
-  validate_local_sizes(const std::vector<LocalSize>  &local_sizes,
-                       const AssemblyDescription     &description);
+  validate_local_sizes(const std::vector<LocalSize> &local_sizes,
+                       const AssemblyDescription    &description);
 
   /**
    * @brief The size request @p local asks for at @p distance (m) from its

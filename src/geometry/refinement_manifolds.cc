@@ -33,9 +33,11 @@ namespace FloorBlock::Geometry
       for (const auto &body : build_outline(description).bodies)
         for (const auto &segment : body.segments)
           if (segment.kind == SegmentKind::arc)
-            arcs.push_back({point(segment.control), point(segment.start),
-                            point(segment.end),
-                            point(segment.start).distance(point(segment.control))});
+            arcs.push_back(
+              {point(segment.control),
+               point(segment.start),
+               point(segment.end),
+               point(segment.start).distance(point(segment.control))});
       return arcs;
     }
 
@@ -86,9 +88,9 @@ namespace FloorBlock::Geometry
                 id = first_fillet_manifold + k;
             face->set_manifold_id(id);
           }
-    triangulation.set_manifold(
-      Ids::bedding_manifold,
-      BeddingManifold(BeddingProfile::geometry_profile(description)));
+    triangulation.set_manifold(Ids::bedding_manifold,
+                               BeddingManifold(BeddingProfile::geometry_profile(
+                                 description)));
     for (std::size_t k = 0; k < arcs.size(); ++k)
       triangulation.set_manifold(first_fillet_manifold + k,
                                  dealii::SphericalManifold<2>(arcs[k].centre));

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <deal.II/grid/tria.h>
-
 #include <geometry/assembly_description.h>
+
+#include <deal.II/grid/tria.h>
 
 namespace FloorBlock::Geometry
 {

@@ -1,6 +1,6 @@
-#include <deal.II/grid/grid_in.h>
-
 #include <geometry/triangulation_reader.h>
+
+#include <deal.II/grid/grid_in.h>
 
 #include <fstream>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 namespace FloorBlock::Geometry
 {
   void
-  read_triangulation(const std::string &msh_path,
+  read_triangulation(const std::string        &msh_path,
                      dealii::Triangulation<2> &triangulation)
   {
     std::ifstream input(msh_path);

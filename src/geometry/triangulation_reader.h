@@ -21,6 +21,6 @@ namespace FloorBlock::Geometry
    * @throws std::runtime_error if the file cannot be read.
    */
   void
-  read_triangulation(const std::string &msh_path,
+  read_triangulation(const std::string        &msh_path,
                      dealii::Triangulation<2> &triangulation);
 } // namespace FloorBlock::Geometry

@@ -104,13 +104,12 @@ namespace FloorBlock::Loading
       {LoadStage::uplift, steps.n_uplift}};
     LoadPathOutcome outcome;
     for (const auto &[stage, n_increments] : stages)
-      if (n_increments > 0 &&
-          !follow_stage(stage,
-                        n_increments,
-                        steps.gravity_with_pressure,
-                        max_cutbacks,
-                        callbacks,
-                        outcome))
+      if (n_increments > 0 && !follow_stage(stage,
+                                            n_increments,
+                                            steps.gravity_with_pressure,
+                                            max_cutbacks,
+                                            callbacks,
+                                            outcome))
         break;
     return outcome;
   }

@@ -17,7 +17,7 @@ namespace FloorBlock::Loading
     /** Fraction of the stage's load at this state (-). */
     double stage_factor = 0.;
     /** Stage-factor step from the last converged state (-). */
-    double step = 0.;
+    double      step = 0.;
     LoadFactors factors;
     /**
      * step over the step of the last converged increment of the same

@@ -12,7 +12,7 @@ namespace FloorBlock::Output
   {
     json
     contact_json(const Scene::MechanismResult &entry,
-                 const Scene::ClosedForms &    closed_forms)
+                 const Scene::ClosedForms     &closed_forms)
     {
       const auto &contact = entry.contact;
       return {{"status", Analytic::to_string(contact.status)},
@@ -39,7 +39,7 @@ namespace FloorBlock::Output
 
     json
     mechanism_json(const Scene::MechanismResult &entry,
-                   const Scene::ClosedForms &    closed_forms)
+                   const Scene::ClosedForms     &closed_forms)
     {
       const auto &forces = entry.forces;
       return {{"status", Analytic::to_string(forces.status)},
@@ -65,15 +65,17 @@ namespace FloorBlock::Output
         mechanism_json(entry, closed_forms);
 
     const auto &heights = closed_forms.no_rotation_heights;
-    cases["no_rotation"]["centroid_height_m"] = heights.centroid_height;
-    cases["no_rotation"]["rotation_margin_m"] = heights.rotation_margin;
+    cases["no_rotation"]["centroid_height_m"]    = heights.centroid_height;
+    cases["no_rotation"]["rotation_margin_m"]    = heights.rotation_margin;
     cases["no_rotation"]["first_rotating_block"] = heights.first_rotating_block;
-    cases["no_rotation"]["centroid_status"] = Analytic::to_string(heights.status);
+    cases["no_rotation"]["centroid_status"] =
+      Analytic::to_string(heights.status);
 
     return {{"numbering", numbering_note},
-            {"forces_per", "Q_N_per_m, N_N_per_m, V_N_per_m are per metre of "
-                           "face; Q_N_over_b and contact.Q_N are over the "
-                           "support width b"},
+            {"forces_per",
+             "Q_N_per_m, N_N_per_m, V_N_per_m are per metre of "
+             "face; Q_N_over_b and contact.Q_N are over the "
+             "support width b"},
             {"blocks",
              {{"W_N_per_m", chain.weight},
               {"P_N_per_m", chain.support_load},
@@ -106,7 +108,9 @@ namespace FloorBlock::Output
     };
     for (std::size_t i = 0; i < chain.n_blocks(); ++i)
       {
-        csv += fmt::format("{},{:.9e},{:.9e},{:.6f}", i + 1, chain.weight[i],
+        csv += fmt::format("{},{:.9e},{:.9e},{:.6f}",
+                           i + 1,
+                           chain.weight[i],
                            chain.support_load[i],
                            Units::radians_to_degrees(chain.inclination[i]));
         for (const auto &entry : closed_forms.mechanisms)
@@ -114,8 +118,8 @@ namespace FloorBlock::Output
                              Analytic::to_string(entry.forces.status),
                              cell(entry.forces.lateral_force, i),
                              cell(entry.forces.normal_force, i));
-        csv += "," +
-               cell(closed_forms.no_rotation_heights.centroid_height, i) + "\n";
+        csv += "," + cell(closed_forms.no_rotation_heights.centroid_height, i) +
+               "\n";
       }
     return csv;
   }
@@ -130,14 +134,19 @@ namespace FloorBlock::Output
     for (const auto &entry : closed_forms.mechanisms)
       {
         const auto &forces = entry.forces;
-        text += fmt::format("\n{}: {}\n", Scene::to_string(entry.mechanism),
+        text += fmt::format("\n{}: {}\n",
+                            Scene::to_string(entry.mechanism),
                             Analytic::describe(forces.status));
         if (forces.lateral_force.empty())
           continue;
-        text += fmt::format("  {:>5} {:>14} {:>16} {:>12}\n", "block",
-                            "Q_i (kN/m)", "Q_i over b (kN)", "N_i (kN/m)");
+        text += fmt::format("  {:>5} {:>14} {:>16} {:>12}\n",
+                            "block",
+                            "Q_i (kN/m)",
+                            "Q_i over b (kN)",
+                            "N_i (kN/m)");
         for (std::size_t i = 0; i < forces.lateral_force.size(); ++i)
-          text += fmt::format("  {:>5} {:>14.1f} {:>16.1f} {:>12.1f}\n", i + 1,
+          text += fmt::format("  {:>5} {:>14.1f} {:>16.1f} {:>12.1f}\n",
+                              i + 1,
                               forces.lateral_force[i] / kN,
                               forces.lateral_force[i] * b / kN,
                               forces.normal_force[i] / kN);
@@ -146,18 +155,24 @@ namespace FloorBlock::Output
           "  face joint: Q = {:.1f} kN over b = {:.2f} m, y = {:.4f} m -> "
           "A = {:.4f} m^2, sigma_avg = {:.2f} MPa, sigma_max = {:.2f} MPa "
           "[{}]\n",
-          entry.face_force_over_width / kN, b, closed_forms.floor_lift,
-          contact.contact_area, contact.average_stress / MPa,
-          contact.max_stress / MPa, Analytic::to_string(contact.status));
+          entry.face_force_over_width / kN,
+          b,
+          closed_forms.floor_lift,
+          contact.contact_area,
+          contact.average_stress / MPa,
+          contact.max_stress / MPa,
+          Analytic::to_string(contact.status));
       }
     const auto &heights = closed_forms.no_rotation_heights;
     if (!heights.centroid_height.empty())
       {
-        text += "\nno_rotation lateral-force heights h_i (m) and margin H - h_i "
-                "(negative: the block rotates):\n";
+        text +=
+          "\nno_rotation lateral-force heights h_i (m) and margin H - h_i "
+          "(negative: the block rotates):\n";
         for (std::size_t i = 0; i < heights.centroid_height.size(); ++i)
           text += fmt::format("  block {:>2}: h = {:.3f}, margin = {:+.3f}\n",
-                              i + 1, heights.centroid_height[i],
+                              i + 1,
+                              heights.centroid_height[i],
                               heights.rotation_margin[i]);
       }
     return text;

@@ -24,7 +24,7 @@ namespace FloorBlock::Output
   }
 
   void
-  CaseStore::store(const std::string &   case_id,
+  CaseStore::store(const std::string    &case_id,
                    const nlohmann::json &result) const
   {
     write_file_atomically(path_of(case_id), result.dump(2) + "\n");

@@ -66,7 +66,7 @@ namespace FloorBlock::Output
     }
 
     json
-    contact_json(const Compare::JointComparison & joint,
+    contact_json(const Compare::JointComparison  &joint,
                  const Compare::ContactConstants &constants)
     {
       const auto &contact = joint.contact;
@@ -81,30 +81,30 @@ namespace FloorBlock::Output
         return comparable ? relative_difference(fem, reference) : json(nullptr);
       };
       const auto [status, status_text] = contact_status(joint);
-      return {
-        {"status", status},
-        {"status_text", status_text},
-        {"closed_form_status", Analytic::to_string(formula.status)},
-        {"Q_contact_N", contact.force_over_width},
-        {"relative_rotation_rad", contact.relative_rotation},
-        {"y_m", contact.floor_lift},
-        {"E_Pa", constants.youngs_modulus},
-        {"b_m", constants.support_width},
-        {"L_m", constants.block_width},
-        {"H_m", constants.block_height},
-        {"A_6_51_m2", value(formula.contact_area)},
-        {"A_fem_m2", contact.fem_area},
-        {"A_relative_difference",
-         difference(contact.fem_area, formula.contact_area)},
-        {"sigma_avg_6_52_Pa", value(formula.average_stress)},
-        {"sigma_mean_fem_Pa", contact.fem_mean_stress},
-        {"sigma_avg_relative_difference",
-         difference(contact.fem_mean_stress, formula.average_stress)},
-        {"sigma_max_6_53_Pa", value(formula.max_stress)},
-        {"sigma_max_fem_Pa", contact.fem_peak_stress},
-        {"sigma_max_averaged_fem_Pa", contact.fem_averaged_peak_stress},
-        {"sigma_max_averaged_relative_difference",
-         difference(contact.fem_averaged_peak_stress, formula.max_stress)}};
+      return {{"status", status},
+              {"status_text", status_text},
+              {"closed_form_status", Analytic::to_string(formula.status)},
+              {"Q_contact_N", contact.force_over_width},
+              {"relative_rotation_rad", contact.relative_rotation},
+              {"y_m", contact.floor_lift},
+              {"E_Pa", constants.youngs_modulus},
+              {"b_m", constants.support_width},
+              {"L_m", constants.block_width},
+              {"H_m", constants.block_height},
+              {"A_6_51_m2", value(formula.contact_area)},
+              {"A_fem_m2", contact.fem_area},
+              {"A_relative_difference",
+               difference(contact.fem_area, formula.contact_area)},
+              {"sigma_avg_6_52_Pa", value(formula.average_stress)},
+              {"sigma_mean_fem_Pa", contact.fem_mean_stress},
+              {"sigma_avg_relative_difference",
+               difference(contact.fem_mean_stress, formula.average_stress)},
+              {"sigma_max_6_53_Pa", value(formula.max_stress)},
+              {"sigma_max_fem_Pa", contact.fem_peak_stress},
+              {"sigma_max_averaged_fem_Pa", contact.fem_averaged_peak_stress},
+              {"sigma_max_averaged_relative_difference",
+               difference(contact.fem_averaged_peak_stress,
+                          formula.max_stress)}};
     }
 
     /**
@@ -132,8 +132,7 @@ namespace FloorBlock::Output
                         "difference is undefined; difference_N_per_m is the "
                         "FEM's Q minus the closed form's.";
         }
-      const bool defined =
-        force.difference_status == DifferenceStatus::defined;
+      const bool defined = force.difference_status == DifferenceStatus::defined;
       return {{"status", status},
               {"status_text", status_text},
               {"closed_form_status", force.status},
@@ -147,25 +146,28 @@ namespace FloorBlock::Output
     }
 
     std::string
-    over_or_under(const double relative, const std::string &what,
+    over_or_under(const double       relative,
+                  const std::string &what,
                   const std::string &equation)
     {
       const double percent = 100. * std::abs(relative);
       if (percent < 0.5)
         return fmt::format("{} matches the FEM {} at the face joint "
                            "(within 0.5 %)",
-                           equation, what);
+                           equation,
+                           what);
       // relative = (FEM - formula)/formula: FEM above means the formula is low.
       return fmt::format("{} {} the {} by {:.0f} % at the face joint",
                          equation,
                          relative > 0 ? "underestimates" : "overestimates",
-                         what, percent);
+                         what,
+                         percent);
     }
   } // namespace
 
   json
   comparison_json(const std::vector<Compare::JointComparison> &joints,
-                  const Compare::ContactConstants &            constants,
+                  const Compare::ContactConstants             &constants,
                   const unsigned int                           n_blocks)
   {
     json records = json::array();
@@ -185,7 +187,7 @@ namespace FloorBlock::Output
   }
 
   json
-  lift_history_entry(const Compare::JointComparison & face_joint,
+  lift_history_entry(const Compare::JointComparison  &face_joint,
                      const Compare::ContactConstants &constants,
                      const double                     base_lift)
   {
@@ -196,7 +198,7 @@ namespace FloorBlock::Output
 
   std::string
   force_table_markdown(const std::vector<Compare::JointComparison> &joints,
-                       const unsigned int n_blocks)
+                       const unsigned int                           n_blocks)
   {
     // Mechanisms in name order, as in summary.json's Q_closed_form.
     const auto by_name = [](const Compare::JointComparison &joint) {
@@ -215,10 +217,11 @@ namespace FloorBlock::Output
     text += "\n" + rule + "\n";
     for (const auto &joint : joints)
       {
-        text += fmt::format(
-          "| {} | {} | {:.1f} |", joint.joint,
-          joint_bodies("vertical", joint.joint, n_blocks).dump(),
-          joint.fem_force / kN);
+        text +=
+          fmt::format("| {} | {} | {:.1f} |",
+                      joint.joint,
+                      joint_bodies("vertical", joint.joint, n_blocks).dump(),
+                      joint.fem_force / kN);
         for (const auto &[mechanism, force] : by_name(joint))
           text += fmt::format(
             " {} ({}) |",
@@ -246,9 +249,9 @@ namespace FloorBlock::Output
         const auto &contact = joint.contact;
         const auto &formula = contact.closed_form;
         const bool  defined = has_closed_form(formula);
-        const auto  closed  = [defined](const double value, const double scale) {
+        const auto  closed = [defined](const double value, const double scale) {
           return defined ? fmt::format("{:.4f}", value * scale) :
-                           std::string("-");
+                            std::string("-");
         };
         const auto closed_stress = [defined](const double value) {
           return defined ? fmt::format("{:.2f}", value * (1 / MPa)) :
@@ -257,13 +260,16 @@ namespace FloorBlock::Output
         text += fmt::format(
           "| {} | {:.3f} | {:.4f} | {} | {:.2f} | {} | {:.2f} / {:.2f} | {} "
           "| {} |\n",
-          joint.joint, contact.floor_lift * 1e3, contact.fem_area * 1.,
+          joint.joint,
+          contact.floor_lift * 1e3,
+          contact.fem_area * 1.,
           closed(formula.contact_area, 1.),
           contact.fem_mean_stress * (1 / MPa),
           closed_stress(formula.average_stress),
           contact.fem_averaged_peak_stress * (1 / MPa),
           contact.fem_peak_stress * (1 / MPa),
-          closed_stress(formula.max_stress), contact_status(joint).first);
+          closed_stress(formula.max_stress),
+          contact_status(joint).first);
       }
     return text;
   }
@@ -279,20 +285,21 @@ namespace FloorBlock::Output
         if (!force.has_value)
           lines.push_back(force.mechanism + " has no finite Q (" +
                           force.status + ")");
-        else if (force.difference_status !=
-                 Compare::DifferenceStatus::defined)
+        else if (force.difference_status != Compare::DifferenceStatus::defined)
           lines.push_back(fmt::format(
             "{} gives Q = 0 at the face joint, the FEM {:.4g} kN/m: no "
             "relative difference ({})",
-            force.mechanism, face_joint.fem_force / kN,
+            force.mechanism,
+            face_joint.fem_force / kN,
             Compare::to_string(force.difference_status)));
         else
           lines.push_back(
-            over_or_under(force.relative_difference, "lateral force Q",
+            over_or_under(force.relative_difference,
+                          "lateral force Q",
                           force.mechanism) +
-            (force.status == "ok" ? "" :
-                                    " (the mechanism itself is flagged " +
-                                      force.status + ")"));
+            (force.status == "ok" ?
+               "" :
+               " (the mechanism itself is flagged " + force.status + ")"));
       }
 
     const auto &contact = face_joint.contact;
@@ -309,17 +316,20 @@ namespace FloorBlock::Output
                         "its Q is zero");
         return lines;
       }
-    lines.push_back(over_or_under(
-      (contact.fem_area - formula.contact_area) / formula.contact_area,
-      "contact area", "Eq. 6.51"));
-    lines.push_back(over_or_under((contact.fem_mean_stress -
-                                   formula.average_stress) /
-                                    formula.average_stress,
-                                  "mean contact stress", "Eq. 6.52"));
-    lines.push_back(over_or_under((contact.fem_averaged_peak_stress -
-                                   formula.max_stress) /
-                                    formula.max_stress,
-                                  "averaged peak stress", "Eq. 6.53"));
+    lines.push_back(over_or_under((contact.fem_area - formula.contact_area) /
+                                    formula.contact_area,
+                                  "contact area",
+                                  "Eq. 6.51"));
+    lines.push_back(
+      over_or_under((contact.fem_mean_stress - formula.average_stress) /
+                      formula.average_stress,
+                    "mean contact stress",
+                    "Eq. 6.52"));
+    lines.push_back(
+      over_or_under((contact.fem_averaged_peak_stress - formula.max_stress) /
+                      formula.max_stress,
+                    "averaged peak stress",
+                    "Eq. 6.53"));
     return lines;
   }
 
@@ -337,12 +347,14 @@ namespace FloorBlock::Output
         std::string rows;
         for (const auto &joint : joints)
           if (joint.forces[m].has_value)
-            rows += fmt::format("{} {}\n", joint.joint,
+            rows += fmt::format("{} {}\n",
+                                joint.joint,
                                 joint.forces[m].closed_form / kN);
         if (rows.empty())
           continue;
         data += fmt::format("$m{} << EOD\n{}EOD\n", m, rows);
-        plot += fmt::format(", $m{} with linespoints title '{}'", m,
+        plot += fmt::format(", $m{} with linespoints title '{}'",
+                            m,
                             joints.front().forces[m].mechanism);
       }
     return data +
@@ -359,10 +371,13 @@ namespace FloorBlock::Output
   {
     json history = json::array();
     for (const auto &point : comparison.lift_history)
-      history.push_back(lift_history_entry(
-        point.face_joint, comparison.constants, point.base_lift));
-    return {{"final", comparison_json(comparison.final_joints,
-                                      comparison.constants, n_blocks)},
+      history.push_back(lift_history_entry(point.face_joint,
+                                           comparison.constants,
+                                           point.base_lift));
+    return {{"final",
+             comparison_json(comparison.final_joints,
+                             comparison.constants,
+                             n_blocks)},
             {"lift_history", history}};
   }
 
@@ -375,12 +390,14 @@ namespace FloorBlock::Output
         const auto &contact = point.face_joint.contact;
         const auto &formula = contact.closed_form;
         const bool  defined = has_closed_form(formula);
-        const auto  cell    = [defined](const double value, const double scale) {
+        const auto  cell = [defined](const double value, const double scale) {
           return defined ? fmt::format("{}", value * scale) :
-                           std::string("NaN");
+                            std::string("NaN");
         };
-        data += fmt::format("{} {} {} {} {}\n", point.base_lift * 1e3,
-                            contact.fem_area, cell(formula.contact_area, 1.),
+        data += fmt::format("{} {} {} {} {}\n",
+                            point.base_lift * 1e3,
+                            contact.fem_area,
+                            cell(formula.contact_area, 1.),
                             contact.fem_averaged_peak_stress * (1. / MPa),
                             cell(formula.max_stress, 1. / MPa));
       }
@@ -402,13 +419,13 @@ namespace FloorBlock::Output
   {
     std::string data = "$p << EOD\n";
     for (const auto &sample : face_joint.profile)
-      data += fmt::format("{} {}\n", sample.position[1],
+      data += fmt::format("{} {}\n",
+                          sample.position[1],
                           sample.normal_traction / MPa);
     data += "EOD\n";
-    return data +
-           "set grid\nunset key\nset xlabel 'normal traction (MPa)'\n"
-           "set ylabel 'height y (m)'\nset title 'Normal traction along "
-           "the face joint at the final lift'\n"
-           "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
+    return data + "set grid\nunset key\nset xlabel 'normal traction (MPa)'\n"
+                  "set ylabel 'height y (m)'\nset title 'Normal traction along "
+                  "the face joint at the final lift'\n"
+                  "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
   }
 } // namespace FloorBlock::Output

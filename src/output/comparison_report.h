@@ -34,12 +34,12 @@ namespace FloorBlock::Output
   /** One record per vertical joint (the "comparison.final" list). */
   nlohmann::json
   comparison_json(const std::vector<Compare::JointComparison> &joints,
-                  const Compare::ContactConstants &            constants,
+                  const Compare::ContactConstants             &constants,
                   const unsigned int                           n_blocks);
 
   /** The face-joint record of one uplift increment (for "lift_history"). */
   nlohmann::json
-  lift_history_entry(const Compare::JointComparison &face_joint,
+  lift_history_entry(const Compare::JointComparison  &face_joint,
                      const Compare::ContactConstants &constants,
                      const double                     base_lift);
 
@@ -50,7 +50,7 @@ namespace FloorBlock::Output
    */
   std::string
   force_table_markdown(const std::vector<Compare::JointComparison> &joints,
-                       const unsigned int n_blocks);
+                       const unsigned int                           n_blocks);
 
   /**
    * @brief report.md's corner-contact table per vertical joint: y, the

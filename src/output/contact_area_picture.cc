@@ -27,7 +27,7 @@ namespace FloorBlock::Output
      * end at their own position), along the face the section's share.
      */
     void
-    for_each_patch(const Contact::JointReport                 &joint,
+    for_each_patch(const Contact::JointReport               &joint,
                    const std::function<void(const Patch &)> &visit)
     {
       for (const Contact::JointSection &section : joint.along_face)
@@ -41,7 +41,11 @@ namespace FloorBlock::Output
               const double to = k + 1 == profile.size() ?
                                   here :
                                   (here + profile[k + 1].arc_position) / 2.;
-              visit({section.z, section.z_from, section.z_to, from, to,
+              visit({section.z,
+                     section.z_from,
+                     section.z_to,
+                     from,
+                     to,
                      &profile[k]});
             }
         }
@@ -63,10 +67,16 @@ namespace FloorBlock::Output
       const auto &sample = *patch.sample;
       csv += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
                          "{:.9e},{:.9e},{:.9e},{}\n",
-                         patch.z, patch.z_from, patch.z_to,
-                         sample.arc_position, patch.arc_from,
-                         patch.arc_to, sample.position[0], sample.position[1],
-                         sample.gap, sample.normal_traction,
+                         patch.z,
+                         patch.z_from,
+                         patch.z_to,
+                         sample.arc_position,
+                         patch.arc_from,
+                         patch.arc_to,
+                         sample.position[0],
+                         sample.position[1],
+                         sample.gap,
+                         sample.normal_traction,
                          Contact::state_name(sample.state));
     });
     return csv;
@@ -80,8 +90,8 @@ namespace FloorBlock::Output
       return;
     // gnuplot boxxyerror rows: centre, half extents' ends, colour (MPa).
     std::string closed_patches;
-    double      lowest  = std::numeric_limits<double>::infinity();
-    double      highest = -std::numeric_limits<double>::infinity();
+    double      lowest    = std::numeric_limits<double>::infinity();
+    double      highest   = -std::numeric_limits<double>::infinity();
     double      joint_end = 0.;
     for_each_patch(joint, [&](const Patch &patch) {
       joint_end = std::max(joint_end, patch.arc_to);
@@ -89,20 +99,26 @@ namespace FloorBlock::Output
         return;
       lowest  = std::min(lowest, patch.arc_from);
       highest = std::max(highest, patch.arc_to);
-      closed_patches += fmt::format(
-        "{:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e}\n",
-        (patch.z_from + patch.z_to) / 2., patch.sample->arc_position,
-        patch.z_from, patch.z_to, patch.arc_from, patch.arc_to,
-        patch.sample->normal_traction / 1e6);
+      closed_patches +=
+        fmt::format("{:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e} {:.6e}\n",
+                    (patch.z_from + patch.z_to) / 2.,
+                    patch.sample->arc_position,
+                    patch.z_from,
+                    patch.z_to,
+                    patch.arc_from,
+                    patch.arc_to,
+                    patch.sample->normal_traction / 1e6);
     });
     const double face_length = joint.along_face.back().z_to;
     // The closed zone with a quarter of its extent on either side; the
     // whole joint when nothing is closed.
     const double margin =
       closed_patches.empty() ? 0. : 0.25 * (highest - lowest);
-    const double from = closed_patches.empty() ? 0. : std::max(0., lowest - margin);
-    const double to =
-      closed_patches.empty() ? joint_end : std::min(joint_end, highest + margin);
+    const double from =
+      closed_patches.empty() ? 0. : std::max(0., lowest - margin);
+    const double to = closed_patches.empty() ?
+                        joint_end :
+                        std::min(joint_end, highest + margin);
     render_png(
       fmt::format(
         "set title \"Joint {}: contact area {:.4g} m^2 over {:.4g} m of face "
@@ -115,11 +131,18 @@ namespace FloorBlock::Output
         "set grid front\n"
         "plot '-' using 1:2:3:4:5:6:7 with boxxyerror fc palette "
         "title 'closed node pairs (blank: open)'\n{}e\n",
-        joint.name, joint.closed_length * face_length, face_length,
-        1e3 * joint.closed_length, joint.peak_normal_stress / 1e6,
-        face_length, from, to,
+        joint.name,
+        joint.closed_length * face_length,
+        face_length,
+        1e3 * joint.closed_length,
+        joint.peak_normal_stress / 1e6,
+        face_length,
+        from,
+        to,
         closed_patches.empty() ? "NaN NaN NaN NaN NaN NaN NaN\n" :
                                  closed_patches),
-      png_path, 1000, 600);
+      png_path,
+      1000,
+      600);
   }
 } // namespace FloorBlock::Output

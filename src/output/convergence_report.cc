@@ -9,24 +9,33 @@
 
 namespace FloorBlock::Output
 {
-  using nlohmann::json;
   using Convergence::Ladder;
   using Convergence::LevelRecord;
   using Convergence::Quantity;
+  using nlohmann::json;
 
   namespace
   {
     /** One colour per quantity (both modes), distinct for up to 12. */
-    const std::vector<std::string> curve_colours = {
-      "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02",
-      "#a6761d", "#666666", "#1f78b4", "#e31a1c", "#000000", "#b15928"};
+    const std::vector<std::string> curve_colours = {"#1b9e77",
+                                                    "#d95f02",
+                                                    "#7570b3",
+                                                    "#e7298a",
+                                                    "#66a61e",
+                                                    "#e6ab02",
+                                                    "#a6761d",
+                                                    "#666666",
+                                                    "#1f78b4",
+                                                    "#e31a1c",
+                                                    "#000000",
+                                                    "#b15928"};
 
     /** "Contact: linear solve" -> "wall_time_linear_solve_s". */
     std::string
     stage_column(const std::string &stage)
     {
       const std::string prefix = "Contact: ";
-      std::string name =
+      std::string       name =
         stage.rfind(prefix, 0) == 0 ? stage.substr(prefix.size()) : stage;
       for (char &character : name)
         if (!std::isalnum(static_cast<unsigned char>(character)))
@@ -57,8 +66,8 @@ namespace FloorBlock::Output
     {
       std::string field = "\"";
       for (const char character : text)
-        field += character == '"' ? std::string("\"\"") :
-                                    std::string(1, character);
+        field +=
+          character == '"' ? std::string("\"\"") : std::string(1, character);
       return field + "\"";
     }
 
@@ -78,7 +87,8 @@ namespace FloorBlock::Output
     }
 
     json
-    level_json(const LevelRecord &record, const std::vector<Quantity> &quantities)
+    level_json(const LevelRecord           &record,
+               const std::vector<Quantity> &quantities)
     {
       json values = json::object();
       if (record.converged())
@@ -114,24 +124,26 @@ namespace FloorBlock::Output
                   const std::vector<Quantity> &quantities)
   {
     const std::set<std::string> stages = all_stages(ladders);
-    std::string csv = fmt::format(
+    std::string                 csv    = fmt::format(
       "# {}\n# Q_face = Q_n (vertical joint n, next to the face block); "
-      "forces per metre of face.\n# cost_wall_time_s: wall time to obtain "
-      "the level from nothing (adaptive: all levels so far).\n# *_error_*: "
-      "estimated discretisation error; *_error_method: richardson or "
-      "finest_difference (see convergence.json for the reason).\n",
+                         "forces per metre of face.\n# cost_wall_time_s: wall time to obtain "
+                         "the level from nothing (adaptive: all levels so far).\n# *_error_*: "
+                         "estimated discretisation error; *_error_method: richardson or "
+                         "finest_difference (see convergence.json for the reason).\n",
       numbering_note);
-    csv += "mode,level,status,converged,corner_size_m,far_size_m,growth_rate,"
-           "global_refinements,n_local_sizes,n_refinement_sweeps,n_cells_coarsened,n_cells,n_dofs,"
-           "n_contact_pairs,n_increments,"
-           "newton_iterations,cutbacks,force_balance_relative_error";
+    csv +=
+      "mode,level,status,converged,corner_size_m,far_size_m,growth_rate,"
+      "global_refinements,n_local_sizes,n_refinement_sweeps,n_cells_coarsened,n_cells,n_dofs,"
+      "n_contact_pairs,n_increments,"
+      "newton_iterations,cutbacks,force_balance_relative_error";
     for (const std::string &stage : stages)
       csv += "," + stage_column(stage);
     csv += ",wall_time_s,cost_wall_time_s";
     for (const Quantity &quantity : quantities)
       csv += fmt::format(",{0}_{1},{0}_error_{1},{0}_relative_error,"
                          "{0}_error_method",
-                         quantity.name, quantity.unit);
+                         quantity.name,
+                         quantity.unit);
     csv += ",status_text\n";
 
     for (const Ladder &ladder : ladders)
@@ -140,13 +152,23 @@ namespace FloorBlock::Output
           const LevelRecord &record = ladder.levels[level];
           csv += fmt::format(
             "{},{},{},{},{:.9e},{:.9e},{:.9e},{},{},{},{},{},{},{},{},{},{},{:.3e}",
-            record.mode, record.level, record.status,
-            record.converged() ? "true" : "false", record.corner_size,
-            record.far_size, record.growth_rate, record.global_refinements,
+            record.mode,
+            record.level,
+            record.status,
+            record.converged() ? "true" : "false",
+            record.corner_size,
+            record.far_size,
+            record.growth_rate,
+            record.global_refinements,
             record.n_local_sizes,
-            record.n_refinement_sweeps, record.n_cells_coarsened,
-            record.n_cells, record.n_dofs, record.n_contact_pairs,
-            record.n_increments, record.newton_iterations, record.cutbacks,
+            record.n_refinement_sweeps,
+            record.n_cells_coarsened,
+            record.n_cells,
+            record.n_dofs,
+            record.n_contact_pairs,
+            record.n_increments,
+            record.newton_iterations,
+            record.cutbacks,
             record.force_balance_error);
           for (const std::string &stage : stages)
             {
@@ -155,15 +177,17 @@ namespace FloorBlock::Output
                               std::string() :
                               fmt::format("{:.4f}", found->second));
             }
-          csv += fmt::format(",{:.4f},{:.4f}", record.wall_time,
+          csv += fmt::format(",{:.4f},{:.4f}",
+                             record.wall_time,
                              record.cost_wall_time);
           for (std::size_t q = 0; q < quantities.size(); ++q)
             {
               const auto &errors = ladder.errors.at(q);
-              csv += "," + number(record.converged() ?
-                                    std::optional<double>(
-                                      quantities[q].value(record)) :
-                                    std::nullopt);
+              csv +=
+                "," +
+                number(record.converged() ?
+                         std::optional<double>(quantities[q].value(record)) :
+                         std::nullopt);
               csv += "," + number(errors.errors.at(level));
               csv += "," + number(errors.relative_errors.at(level));
               csv += "," + Convergence::method_name(errors.method);
@@ -175,8 +199,8 @@ namespace FloorBlock::Output
 
   json
   convergence_json(
-    const std::vector<Ladder>                             &ladders,
-    const std::vector<Quantity>                           &quantities,
+    const std::vector<Ladder>                            &ladders,
+    const std::vector<Quantity>                          &quantities,
     const std::vector<Convergence::EqualErrorComparison> &comparisons)
   {
     json modes = json::object();
@@ -188,7 +212,7 @@ namespace FloorBlock::Output
         json estimates = json::object();
         for (std::size_t q = 0; q < quantities.size(); ++q)
           {
-            const auto &errors = ladder.errors.at(q);
+            const auto &errors            = ladder.errors.at(q);
             estimates[quantities[q].name] = {
               {"unit", quantities[q].unit},
               {"method", Convergence::method_name(errors.method)},
@@ -243,13 +267,13 @@ namespace FloorBlock::Output
                      const std::vector<Quantity> &quantities,
                      const std::string           &title)
   {
-    std::string script = fmt::format(
-      "set title '{}'\nset logscale xy\nset format y '%.0e'\n"
-      "set xlabel 'wall time to obtain the level (s)'\n"
-      "set ylabel 'estimated relative error'\nset grid\n"
-      "set key outside right top\n",
-      title);
-    std::string plot  = "plot ";
+    std::string script =
+      fmt::format("set title '{}'\nset logscale xy\nset format y '%.0e'\n"
+                  "set xlabel 'wall time to obtain the level (s)'\n"
+                  "set ylabel 'estimated relative error'\nset grid\n"
+                  "set key outside right top\n",
+                  title);
+    std::string  plot  = "plot ";
     unsigned int block = 0;
     for (const Ladder &ladder : ladders)
       for (std::size_t q = 0; q < quantities.size(); ++q)
@@ -257,7 +281,8 @@ namespace FloorBlock::Output
           std::string rows;
           for (std::size_t level = 0; level < ladder.levels.size(); ++level)
             {
-              const auto &relative = ladder.errors.at(q).relative_errors.at(level);
+              const auto &relative =
+                ladder.errors.at(q).relative_errors.at(level);
               // Round-off differences are no discretisation error.
               if (relative && *relative > Convergence::round_off_level &&
                   ladder.levels[level].cost_wall_time > 0.)
@@ -270,7 +295,8 @@ namespace FloorBlock::Output
           script += fmt::format("$d{} << EOD\n{}EOD\n", block, rows);
           plot += fmt::format(
             "{}$d{} with linespoints lc rgb '{}' dt {} pt {} title '{} {}'",
-            plot == "plot " ? "" : ", ", block,
+            plot == "plot " ? "" : ", ",
+            block,
             curve_colours[q % curve_colours.size()],
             ladder.mode == "uniform" ? 1 : (ladder.mode == "adaptive" ? 2 : 3),
             ladder.mode == "uniform" ? 7 : (ladder.mode == "adaptive" ? 6 : 4),
@@ -347,13 +373,14 @@ namespace FloorBlock::Output
           for (const auto &observed : errors.observed_orders)
             if (observed)
               order = fmt::format("{:.2f}", *observed);
-        text += fmt::format(
-          "  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
-          quantities[q].name, Convergence::method_name(errors.method),
-          order,
-          errors.reference ? fmt::format("{:.6e}", *errors.reference) :
-                             std::string("-"),
-          errors.reason);
+        text += fmt::format("  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
+                            quantities[q].name,
+                            Convergence::method_name(errors.method),
+                            order,
+                            errors.reference ?
+                              fmt::format("{:.6e}", *errors.reference) :
+                              std::string("-"),
+                            errors.reason);
       }
     return text;
   }

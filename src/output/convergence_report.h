@@ -29,10 +29,10 @@ namespace FloorBlock::Output
    * and the errors; then the equal-error comparisons.
    */
   nlohmann::json
-  convergence_json(const std::vector<Convergence::Ladder>   &ladders,
-                   const std::vector<Convergence::Quantity> &quantities,
-                   const std::vector<Convergence::EqualErrorComparison>
-                     &comparisons);
+  convergence_json(
+    const std::vector<Convergence::Ladder>               &ladders,
+    const std::vector<Convergence::Quantity>             &quantities,
+    const std::vector<Convergence::EqualErrorComparison> &comparisons);
 
   /** Whether a refinement mode meets the target against uniform. */
   struct TargetVerdict
@@ -42,9 +42,9 @@ namespace FloorBlock::Output
     bool        met       = false;
     std::string text; ///< per quantity: levels, DoF and time ratios
     /** Target: at most this fraction of the uniform DoFs ... */
-    double      dofs_ratio_limit = 0.;
+    double dofs_ratio_limit = 0.;
     /** ... and at most this fraction of its wall time (exclusive). */
-    double      cost_ratio_limit = 0.;
+    double cost_ratio_limit = 0.;
 
     /** @brief "met", "not met" or "not evaluated". */
     std::string

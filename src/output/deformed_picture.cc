@@ -14,8 +14,9 @@ namespace FloorBlock::Output
   {
     /** Displacement of every vertex of the mesh (m), by vertex index. */
     std::vector<dealii::Tensor<1, 2>>
-    vertex_displacements(const dealii::DoFHandler<2>                 &dof_handler,
-                         const dealii::TrilinosWrappers::MPI::Vector &displacement)
+    vertex_displacements(
+      const dealii::DoFHandler<2>                 &dof_handler,
+      const dealii::TrilinosWrappers::MPI::Vector &displacement)
     {
       std::vector<dealii::Tensor<1, 2>> result(
         dof_handler.get_triangulation().n_vertices());
@@ -29,18 +30,19 @@ namespace FloorBlock::Output
   } // namespace
 
   double
-  write_deformed_picture(const dealii::DoFHandler<2>                 &dof_handler,
-                         const dealii::TrilinosWrappers::MPI::Vector &displacement,
-                         const std::vector<PictureMarker>            &markers,
-                         const std::string                           &png_path,
-                         const double                                 magnification,
-                         const std::string                           &title)
+  write_deformed_picture(
+    const dealii::DoFHandler<2>                 &dof_handler,
+    const dealii::TrilinosWrappers::MPI::Vector &displacement,
+    const std::vector<PictureMarker>            &markers,
+    const std::string                           &png_path,
+    const double                                 magnification,
+    const std::string                           &title)
   {
     const dealii::Triangulation<2> &reference = dof_handler.get_triangulation();
     const std::vector<dealii::Tensor<1, 2>> motion =
       vertex_displacements(dof_handler, displacement);
     const std::vector<dealii::Point<2>> &vertices = reference.get_vertices();
-    const std::vector<bool> &used = reference.get_used_vertices();
+    const std::vector<bool>             &used = reference.get_used_vertices();
 
     double largest = 0., x_min = 1e300, x_max = -1e300;
     for (unsigned int i = 0; i < vertices.size(); ++i)
@@ -53,8 +55,8 @@ namespace FloorBlock::Output
     constexpr double drawn_fraction_of_width = 0.1;
     const double     factor =
       magnification > 0. ? magnification :
-      largest > 0.       ? drawn_fraction_of_width * (x_max - x_min) / largest :
-                           1.;
+          largest > 0. ? drawn_fraction_of_width * (x_max - x_min) / largest :
+                         1.;
 
     dealii::Triangulation<2> deformed;
     deformed.copy_triangulation(reference);
@@ -70,15 +72,16 @@ namespace FloorBlock::Output
     for (PictureMarker &marker : moved)
       {
         const unsigned int vertex =
-          dealii::GridTools::find_closest_vertex(reference, marker.position,
+          dealii::GridTools::find_closest_vertex(reference,
+                                                 marker.position,
                                                  used);
         marker.position += factor * motion[vertex];
       }
 
     MeshPictureOptions options;
-    options.title =
-      title + fmt::format("{}displacements x {:.3g}", title.empty() ? "" : ", ",
-                          factor);
+    options.title   = title + fmt::format("{}displacements x {:.3g}",
+                                        title.empty() ? "" : ", ",
+                                        factor);
     options.markers = std::move(moved);
     write_mesh_picture(deformed, png_path, options);
     return factor;

@@ -24,10 +24,11 @@ namespace FloorBlock::Output
    * @return The magnification used.
    */
   double
-  write_deformed_picture(const dealii::DoFHandler<2>                 &dof_handler,
-                         const dealii::TrilinosWrappers::MPI::Vector &displacement,
-                         const std::vector<PictureMarker>            &markers,
-                         const std::string                           &png_path,
-                         const double        magnification = 0.,
-                         const std::string  &title         = "");
+  write_deformed_picture(
+    const dealii::DoFHandler<2>                 &dof_handler,
+    const dealii::TrilinosWrappers::MPI::Vector &displacement,
+    const std::vector<PictureMarker>            &markers,
+    const std::string                           &png_path,
+    const double                                 magnification = 0.,
+    const std::string                           &title         = "");
 } // namespace FloorBlock::Output

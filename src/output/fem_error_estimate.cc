@@ -35,8 +35,7 @@ namespace FloorBlock::Output
            {"wall_time_s", level.wall_time},
            {"status", level.status},
            {"face", level.face_figures},
-           {"difference_indicator",
-            optional_json(level.difference_indicator)},
+           {"difference_indicator", optional_json(level.difference_indicator)},
            {"halved_n_dofs", level.halved_n_dofs},
            {"halved_wall_time_s", level.halved_wall_time},
            {"worst_target_relative_error",
@@ -84,14 +83,14 @@ namespace FloorBlock::Output
         for (const auto &[key, member] : figures)
           {
             const FigureError &error = errors.*member;
-            quantities[key] = {
-              {"value", error.value},
-              {"coarse_value", error.coarse_value},
-              {"refined_value", error.refined_value},
-              {"absolute_error", error.absolute_error},
-              {"relative_error", optional_json(error.relative_error)},
-              {"oscillating", error.oscillating},
-              {"next_level_value", optional_json(error.next_level_value)}};
+            quantities[key]          = {
+                       {"value", error.value},
+                       {"coarse_value", error.coarse_value},
+                       {"refined_value", error.refined_value},
+                       {"absolute_error", error.absolute_error},
+                       {"relative_error", optional_json(error.relative_error)},
+                       {"oscillating", error.oscillating},
+                       {"next_level_value", optional_json(error.next_level_value)}};
           }
         joints[name] = quantities;
       }

@@ -16,8 +16,8 @@ namespace FloorBlock::Output
    */
   struct FigureError
   {
-    double value          = 0.; ///< the reported solve's figure (SI unit)
-    double refined_value  = 0.; ///< the refined solve's figure
+    double value         = 0.; ///< the reported solve's figure (SI unit)
+    double refined_value = 0.; ///< the refined solve's figure
     /**
      * Estimated error of value: Pipeline::error_per_difference() times
      * |coarse_value - refined_value|, plus for a contact length the
@@ -26,7 +26,7 @@ namespace FloorBlock::Output
     double absolute_error = 0.;
     /** absolute_error / |refined_value|; none when refined_value is 0. */
     std::optional<double> relative_error;
-    double coarse_value = 0.; ///< the coarse solve's figure
+    double                coarse_value = 0.; ///< the coarse solve's figure
     /**
      * The check moved the figure opposite to the previous level's change
      * (Pipeline::widen_where_oscillating()): absolute_error is then at
@@ -65,9 +65,9 @@ namespace FloorBlock::Output
   /** One mesh of `run`'s accuracy loop (Pipeline::solve_to_target()). */
   struct RefinementLevelRecord
   {
-    unsigned int level   = 0;
-    unsigned int n_cells = 0;
-    unsigned int n_dofs  = 0;
+    unsigned int level     = 0;
+    unsigned int n_cells   = 0;
+    unsigned int n_dofs    = 0;
     double       wall_time = 0.; ///< s: meshing or refinement, and the solve
     std::string  status;         ///< fem.json's status of the level's solve
     /** The face joint's figures on this level, by fem.json key (SI). */
@@ -80,7 +80,7 @@ namespace FloorBlock::Output
      */
     std::optional<double> difference_indicator;
     /** DoFs of the check (the level's mesh, every cell halved); 0: none. */
-    unsigned int halved_n_dofs = 0;
+    unsigned int halved_n_dofs    = 0;
     double       halved_wall_time = 0.; ///< s, the check's mesh and solve
     /**
      * Largest estimated relative error of the level's target figures from
@@ -97,14 +97,14 @@ namespace FloorBlock::Output
   /** What `run` was asked to reach, and how far it got. */
   struct AccuracyTarget
   {
-    double relative_error = 0.;      ///< Mesh/Target relative error
+    double relative_error = 0.;       ///< Mesh/Target relative error
     std::vector<std::string> figures; ///< fem.json keys of the target figures
-    bool         met            = false;
-    unsigned int reported_level = 0; ///< the level the figures come from
+    bool                     met = false;
+    unsigned int reported_level  = 0; ///< the level the figures come from
     /** The level itself or its check (the level's mesh, every cell halved). */
     ReportedSolve reported_solve = ReportedSolve::coarse;
-    std::string  stop_reason;        ///< why the loop stopped, in words
-    unsigned int fe_degree = 1;      ///< FE degree of the loop's solves
+    std::string   stop_reason;   ///< why the loop stopped, in words
+    unsigned int  fe_degree = 1; ///< FE degree of the loop's solves
     /**
      * The adaptive level solved after a checked pair met the target, to
      * confirm it (Pipeline::widen_to_contain()); none if no pair met.
@@ -116,8 +116,8 @@ namespace FloorBlock::Output
      * The other FE degree's loop when Solver/FE degree = auto raced both
      * (Pipeline::next_race_turn()): its levels and why it stopped.
      */
-    std::vector<AccuracyTarget> other_degrees;
-    double       wall_time = 0.;     ///< s, all levels
+    std::vector<AccuracyTarget>        other_degrees;
+    double                             wall_time = 0.; ///< s, all levels
     std::vector<RefinementLevelRecord> levels;
   };
 
@@ -127,13 +127,13 @@ namespace FloorBlock::Output
    */
   struct FemErrorEstimate
   {
-    std::string  method;            ///< how the refined solve was refined
-    bool         available = false; ///< false: the refined solve failed
+    std::string method;            ///< how the refined solve was refined
+    bool        available = false; ///< false: the refined solve failed
     /** Which of the two solves FigureError::value is from. */
     ReportedSolve reported_solve = ReportedSolve::coarse;
-    std::string  status_text;       ///< why not available (else empty)
-    unsigned int refined_n_dofs = 0;
-    std::string  refined_status;
+    std::string   status_text; ///< why not available (else empty)
+    unsigned int  refined_n_dofs = 0;
+    std::string   refined_status;
     /** By joint name ("vertical 6"), as in fem.json. */
     std::map<std::string, JointErrors> joints;
     /** The accuracy loop that chose the levels compared; none without one. */

@@ -64,11 +64,11 @@ namespace FloorBlock::Output
         "load and the largest joint resultant";
       fem["n_contact_pairs"] = nullptr;
       fem["mesh"]            = nullptr;
-      fem["absent"] = {
-        {"mesh", "rigid blocks need no mesh"},
-        {"vtu", "no field to write: the blocks move rigidly"},
-        {"n_contact_pairs", "joints are integrated at points, not paired "
-                            "nodes"}};
+      fem["absent"]          = {{"mesh", "rigid blocks need no mesh"},
+                                {"vtu", "no field to write: the blocks move rigidly"},
+                                {"n_contact_pairs",
+                                 "joints are integrated at points, not paired "
+                                          "nodes"}};
       if (rigid.corner_rounding_radius > 0.)
         fem["geometry_note"] =
           "Geometry/Corner rounding radius = " +
@@ -115,22 +115,21 @@ namespace FloorBlock::Output
                      const std::string          &kind,
                      const json                 &bodies)
     {
-      json result = common_joint_json(joint, kind, bodies);
-      result["normal_force_N"] = joint.normal_force * joint.face_length;
-      result["contact_area_m2"] = joint.closed_length * joint.face_length;
-      result["face_length_m"]   = joint.face_length;
+      json result                    = common_joint_json(joint, kind, bodies);
+      result["normal_force_N"]       = joint.normal_force * joint.face_length;
+      result["contact_area_m2"]      = joint.closed_length * joint.face_length;
+      result["face_length_m"]        = joint.face_length;
       result["sigma_max_position_m"] = {joint.peak_position[0],
                                         joint.peak_position[1],
                                         joint.peak_position_z};
-      json along_face = json::array();
+      json along_face                = json::array();
       for (const Contact::JointSection &section : joint.along_face)
-        along_face.push_back(
-          {{"z_m", section.z},
-           {"z_range_m", {section.z_from, section.z_to}},
-           {"normal_force_N_per_m", section.normal_force},
-           {"shear_force_N_per_m", section.shear_force},
-           {"contact_length_m", section.closed_length},
-           {"sigma_max_Pa", section.peak_normal_stress}});
+        along_face.push_back({{"z_m", section.z},
+                              {"z_range_m", {section.z_from, section.z_to}},
+                              {"normal_force_N_per_m", section.normal_force},
+                              {"shear_force_N_per_m", section.shear_force},
+                              {"contact_length_m", section.closed_length},
+                              {"sigma_max_Pa", section.peak_normal_stress}});
       result["along_face"] = along_face;
       return result;
     }
@@ -193,7 +192,8 @@ namespace FloorBlock::Output
       "every joint force are at most {:.1e} N/m, below the round-off of the "
       "elastic forces its displacements cause ({:.0e} E |u|max = {:.1e} N/m), "
       "so there is nothing to compare",
-      check.largest_force, Compare::round_off_force_fraction,
+      check.largest_force,
+      Compare::round_off_force_fraction,
       check.round_off_force);
   }
 
@@ -240,7 +240,7 @@ namespace FloorBlock::Output
              const unsigned int          n_blocks,
              const double                support_width)
   {
-    const auto name = Compare::parse_joint_name(joint.name);
+    const auto name   = Compare::parse_joint_name(joint.name);
     const json bodies = joint_bodies(name.kind, name.number, n_blocks);
     if (joint.swept())
       return swept_joint_json(joint, name.kind, bodies);
@@ -305,27 +305,28 @@ namespace FloorBlock::Output
         "*_N_per_m per metre of face; *_N_over_b and contact_area_m2 over "
         "the support width b";
     json fem = {{"status", report.status},
-            {"status_text", report.status_text},
-            {"numbering", numbering_note},
-            {"forces_per", forces_per},
-            {"b_m", report.support_width},
-            {"n_dofs", result.n_dofs},
-            {"n_contact_pairs", result.n_contact_pairs},
-            {"n_increments", result.increments.size()},
-            {"newton_iterations", report.n_newton_iterations},
-            {"cutbacks", report.n_cutbacks},
-            {"linear_solves", result.n_linear_solves},
-            {"lu_factorizations", result.n_factorizations},
-            {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
-            {"amg_setups", result.n_amg_setups},
-            {"krylov_iterations_with_amg", result.n_amg_krylov_iterations},
-            {"linear_solves_above_tolerance", result.n_solves_above_tolerance},
-            {"wall_time_s", result.wall_times},
-            {"joints", joints},
-            {"body_motions_by_material_id", blocks},
-            {"increments", increments},
-            {"model", report.model},
-            {"model_choice", report.model_choice}};
+                {"status_text", report.status_text},
+                {"numbering", numbering_note},
+                {"forces_per", forces_per},
+                {"b_m", report.support_width},
+                {"n_dofs", result.n_dofs},
+                {"n_contact_pairs", result.n_contact_pairs},
+                {"n_increments", result.increments.size()},
+                {"newton_iterations", report.n_newton_iterations},
+                {"cutbacks", report.n_cutbacks},
+                {"linear_solves", result.n_linear_solves},
+                {"lu_factorizations", result.n_factorizations},
+                {"krylov_iterations_on_lu_factors", result.n_krylov_iterations},
+                {"amg_setups", result.n_amg_setups},
+                {"krylov_iterations_with_amg", result.n_amg_krylov_iterations},
+                {"linear_solves_above_tolerance",
+                 result.n_solves_above_tolerance},
+                {"wall_time_s", result.wall_times},
+                {"joints", joints},
+                {"body_motions_by_material_id", blocks},
+                {"increments", increments},
+                {"model", report.model},
+                {"model_choice", report.model_choice}};
     fem.update(balance_json(report.force_balance));
     if (report.failure)
       fem["failure"] = failure_json(*report.failure);
@@ -361,7 +362,8 @@ namespace FloorBlock::Output
       "increment,stage,stage_factor,joint,kind,normal_force_N_per_m,"
       "shear_force_N_per_m,contact_length_m,contact_area_m2,sigma_max_Pa,"
       "sigma_max_averaged_Pa,sigma_mean_Pa,n_stick,n_slip,n_open\n",
-      numbering_note, units);
+      numbering_note,
+      units);
     for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
         const auto &increment = result.increments[k];
@@ -369,13 +371,21 @@ namespace FloorBlock::Output
           csv += fmt::format(
             "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
             "{:.9e},{},{},{}\n",
-            k + 1, Output::stage_name(increment.stage), increment.stage_factor,
-            joint.name, Compare::parse_joint_name(joint.name).kind,
-            joint.normal_force, joint.shear_force, joint.closed_length,
+            k + 1,
+            Output::stage_name(increment.stage),
+            increment.stage_factor,
+            joint.name,
+            Compare::parse_joint_name(joint.name).kind,
+            joint.normal_force,
+            joint.shear_force,
+            joint.closed_length,
             joint.closed_length * area_width,
-            joint.peak_normal_stress, joint.averaged_peak_normal_stress,
-            joint.mean_normal_stress, joint.counts.n_stick,
-            joint.counts.n_slip, joint.counts.n_open);
+            joint.peak_normal_stress,
+            joint.averaged_peak_normal_stress,
+            joint.mean_normal_stress,
+            joint.counts.n_stick,
+            joint.counts.n_slip,
+            joint.counts.n_open);
       }
     return csv;
   }
@@ -396,8 +406,9 @@ namespace FloorBlock::Output
     for (std::size_t k = 0; k < result.increments.size(); ++k)
       {
         const auto &increment = result.increments[k];
-        const bool  stage_end = k + 1 == result.increments.size() ||
-                               result.increments[k + 1].stage != increment.stage;
+        const bool  stage_end =
+          k + 1 == result.increments.size() ||
+          result.increments[k + 1].stage != increment.stage;
         if (!stage_end)
           continue;
         for (const auto &joint : increment.joints)
@@ -407,9 +418,16 @@ namespace FloorBlock::Output
               csv += fmt::format(
                 "{},{},{:.6f},{},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},"
                 "{:.9e},{}\n",
-                k + 1, Output::stage_name(increment.stage), increment.stage_factor,
-                joint.name, i, sample.position[0], sample.position[1],
-                sample.arc_position, sample.gap, sample.normal_traction,
+                k + 1,
+                Output::stage_name(increment.stage),
+                increment.stage_factor,
+                joint.name,
+                i,
+                sample.position[0],
+                sample.position[1],
+                sample.arc_position,
+                sample.gap,
+                sample.normal_traction,
                 sample.tangential_traction,
                 Contact::state_name(sample.state));
             }

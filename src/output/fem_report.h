@@ -30,7 +30,7 @@ namespace FloorBlock::Output
   struct ForceBalanceSummary
   {
     /** Worst relative error over the increments that carry load. */
-    double      worst_relative_error = 0.;
+    double worst_relative_error = 0.;
     /** Worst absolute error over every increment (N/m). */
     double      worst_absolute_error = 0.;
     std::string status;      ///< "ok", "no load" or "no increment"
@@ -44,7 +44,7 @@ namespace FloorBlock::Output
     unsigned int             cutbacks_before_failure = 0;
     std::vector<std::string> failed_attempts;
     /** Newton iterations of the failed attempts. */
-    unsigned int             n_failed_newton_iterations = 0;
+    unsigned int n_failed_newton_iterations = 0;
   };
 
   /** Whether the joint sides overlap more than small strains allow. */
@@ -53,7 +53,7 @@ namespace FloorBlock::Output
     double      largest_overlap = 0.; ///< m, over the last increment's joints
     double      limit           = 0.; ///< m, 5 % of the smaller block side
     bool        large           = false;
-    std::string text;                 ///< the finding in words
+    std::string text; ///< the finding in words
   };
 
   /** What the rigid-block model is (Model/Blocks = rigid). */
@@ -62,7 +62,7 @@ namespace FloorBlock::Output
     std::string  rigid_status; ///< RigidBlocks::to_string(status)
     unsigned int points_per_joint = 0;
     /** Geometry/Corner rounding radius (m), ignored by rigid blocks. */
-    double       corner_rounding_radius = 0.;
+    double corner_rounding_radius = 0.;
   };
 
   /**
@@ -102,13 +102,13 @@ namespace FloorBlock::Output
     /** Cutbacks, including those of an increment that failed for good. */
     unsigned int n_cutbacks = 0;
     /** One per converged increment of the result. */
-    std::vector<IncrementBalance>     increment_balances;
-    ForceBalanceSummary               force_balance;
-    std::optional<SolveFailureRecord> failure;       ///< failed solves only
-    std::optional<OverlapCheck>       joint_overlap; ///< elastic FEM only
-    std::optional<Geometry::MeshStatistics> mesh;    ///< elastic FEM only
-    std::optional<RigidModelNote>     rigid;         ///< rigid blocks only
-    std::optional<SweptSupportLoad>   support_load;  ///< 3D scenes only
+    std::vector<IncrementBalance>           increment_balances;
+    ForceBalanceSummary                     force_balance;
+    std::optional<SolveFailureRecord>       failure; ///< failed solves only
+    std::optional<OverlapCheck>             joint_overlap; ///< elastic FEM only
+    std::optional<Geometry::MeshStatistics> mesh;          ///< elastic FEM only
+    std::optional<RigidModelNote>           rigid;        ///< rigid blocks only
+    std::optional<SweptSupportLoad>         support_load; ///< 3D scenes only
 
     bool
     converged() const

@@ -125,25 +125,24 @@ namespace FloorBlock::Output
                            {"sigma_max_6_53_Pa",
                             optional_json(entry.max_stress)},
                            {"contact_status", entry.contact_status}};
-    return {
-      {"id", record.id},
-      {"figure", record.figure},
-      {"k_m", record.curvature},
-      {"phi_h_deg", record.bedding_friction_deg},
-      {"phi_v_deg", record.vertical_friction_deg},
-      {"support_load_t", record.support_load_t},
-      {"fem",
-       {{"status", record.status},
-        {"status_text", record.status_text},
-        {"model", record.model},
-        {"Q_face_N_per_m", optional_json(record.face_force)},
-        {"contact_length_m", optional_json(record.face_contact_length)},
-        {"sigma_max_Pa", optional_json(record.face_sigma_max)},
-        {"sigma_max_averaged_Pa",
-         optional_json(record.face_sigma_max_averaged)},
-        {"n_dofs", record.n_dofs},
-        {"wall_time_s", record.wall_times}}},
-      {"closed_forms", closed}};
+    return {{"id", record.id},
+            {"figure", record.figure},
+            {"k_m", record.curvature},
+            {"phi_h_deg", record.bedding_friction_deg},
+            {"phi_v_deg", record.vertical_friction_deg},
+            {"support_load_t", record.support_load_t},
+            {"fem",
+             {{"status", record.status},
+              {"status_text", record.status_text},
+              {"model", record.model},
+              {"Q_face_N_per_m", optional_json(record.face_force)},
+              {"contact_length_m", optional_json(record.face_contact_length)},
+              {"sigma_max_Pa", optional_json(record.face_sigma_max)},
+              {"sigma_max_averaged_Pa",
+               optional_json(record.face_sigma_max_averaged)},
+              {"n_dofs", record.n_dofs},
+              {"wall_time_s", record.wall_times}}},
+            {"closed_forms", closed}};
   }
 
   FemCaseRecord
@@ -161,8 +160,8 @@ namespace FloorBlock::Output
     record.status_text           = fem.at("status_text").get<std::string>();
     record.model                 = fem.value("model", "elastic FEM");
     record.face_force            = optional_value(fem.at("Q_face_N_per_m"));
-    record.face_contact_length = optional_value(fem.at("contact_length_m"));
-    record.face_sigma_max      = optional_value(fem.at("sigma_max_Pa"));
+    record.face_contact_length   = optional_value(fem.at("contact_length_m"));
+    record.face_sigma_max        = optional_value(fem.at("sigma_max_Pa"));
     record.face_sigma_max_averaged =
       optional_value(fem.at("sigma_max_averaged_Pa"));
     record.n_dofs = fem.at("n_dofs").get<unsigned int>();
@@ -195,8 +194,9 @@ namespace FloorBlock::Output
     csv.insert(csv.find("\nk_m,") + 1,
                fmt::format("# fem_* columns computed by: {}.\n",
                            fmt::join(models, ", ")));
-    const std::vector<std::string> mechanisms = {
-      "no_rotation", "rotation_no_vertical_slip", "rotation_vertical_slip"};
+    const std::vector<std::string> mechanisms = {"no_rotation",
+                                                 "rotation_no_vertical_slip",
+                                                 "rotation_vertical_slip"};
     for (const auto &mechanism : mechanisms)
       csv += fmt::format(",{0}_status,{0}_Q_face_N_per_m,{0}_sigma_max_6_53_Pa",
                          mechanism);
@@ -206,19 +206,21 @@ namespace FloorBlock::Output
         if (record.figure != figure)
           continue;
         const bool ok = record.status == "converged";
-        csv += fmt::format(
-          "{},{},{},{},{},{},{},{},{}", as_json(record.curvature),
-          as_json(record.bedding_friction_deg),
-          as_json(record.vertical_friction_deg),
-          as_json(record.support_load_t), record.status,
-          ok ? cell(record.face_force) : "",
-          ok ? cell(record.face_contact_length) : "",
-          ok ? cell(record.face_sigma_max) : "",
-          ok ? cell(record.face_sigma_max_averaged) : "");
+        csv += fmt::format("{},{},{},{},{},{},{},{},{}",
+                           as_json(record.curvature),
+                           as_json(record.bedding_friction_deg),
+                           as_json(record.vertical_friction_deg),
+                           as_json(record.support_load_t),
+                           record.status,
+                           ok ? cell(record.face_force) : "",
+                           ok ? cell(record.face_contact_length) : "",
+                           ok ? cell(record.face_sigma_max) : "",
+                           ok ? cell(record.face_sigma_max_averaged) : "");
         for (const auto &mechanism : mechanisms)
           {
             const auto &closed = record.closed_forms.at(mechanism);
-            csv += fmt::format(",{},{},{}", closed.status,
+            csv += fmt::format(",{},{},{}",
+                               closed.status,
                                cell(closed.face_force),
                                cell(closed.max_stress));
           }
@@ -231,10 +233,10 @@ namespace FloorBlock::Output
   fem_sweep_plot(const std::vector<FemCaseRecord> &records,
                  const std::string                &figure)
   {
-    const bool  stress   = is_stress_figure(figure);
-    const char *panel_by = stress ? "k_m" : "phi_v_deg";
-    const char *curve_by = stress ? "support_load_t" : "phi_v_deg";
-    const double scale   = stress ? 1. / MPa : 1. / kN;
+    const bool   stress   = is_stress_figure(figure);
+    const char  *panel_by = stress ? "k_m" : "phi_v_deg";
+    const char  *curve_by = stress ? "support_load_t" : "phi_v_deg";
+    const double scale    = stress ? 1. / MPa : 1. / kN;
 
     // panel -> curve -> rows "phi_h fem closed"
     std::map<double, std::map<double, std::string>> panels;
@@ -249,20 +251,22 @@ namespace FloorBlock::Output
             stress ? record.curvature : record.vertical_friction_deg;
           const double curve =
             stress ? record.support_load_t : record.vertical_friction_deg;
-          panels[panel][curve] += fmt::format(
-            "{} {} {}\n", record.bedding_friction_deg,
-            record.status == "converged" ?
-              value(stress ? record.face_sigma_max_averaged :
-                             record.face_force) :
-              "NaN",
-            value(stress ? closed.max_stress : closed.face_force));
+          panels[panel][curve] +=
+            fmt::format("{} {} {}\n",
+                        record.bedding_friction_deg,
+                        record.status == "converged" ?
+                          value(stress ? record.face_sigma_max_averaged :
+                                         record.face_force) :
+                          "NaN",
+                        value(stress ? closed.max_stress : closed.face_force));
         }
 
     std::string script = fmt::format(
       "set multiplot layout 1,{} title '{}: FEM (points) against the "
       "no-rotation closed form (lines)'\nset grid\nset key top left\n"
       "set xlabel 'bedding friction angle (deg)'\nset ylabel '{}'\n",
-      std::max<std::size_t>(panels.size(), 1), figure,
+      std::max<std::size_t>(panels.size(), 1),
+      figure,
       stress ? "sigma_max at the face (MPa)" : "Q at the face (kN/m)");
     unsigned int block = 0;
     for (const auto &[panel, curves] : panels)
@@ -275,8 +279,13 @@ namespace FloorBlock::Output
             plot += fmt::format(
               "{}$d{} using 1:2 with points pt 7 lc {} title 'FEM {} {}', "
               "$d{} using 1:3 with lines lc {} notitle",
-              block == 0 || plot == "plot " ? "" : ", ", block, block % 8 + 1,
-              curve_by, curve, block, block % 8 + 1);
+              block == 0 || plot == "plot " ? "" : ", ",
+              block,
+              block % 8 + 1,
+              curve_by,
+              curve,
+              block,
+              block % 8 + 1);
             ++block;
           }
         script += plot + "\n";
@@ -301,7 +310,9 @@ namespace FloorBlock::Output
         folder.write("sweep_fem_" + figure + ".csv",
                      fem_sweep_csv(records, figure));
         render_png(fem_sweep_plot(records, figure),
-                   folder.path_of("sweep_fem_" + figure + ".png"), 1600, 500);
+                   folder.path_of("sweep_fem_" + figure + ".png"),
+                   1600,
+                   500);
       }
     return records.size();
   }

@@ -40,10 +40,10 @@ namespace FloorBlock::Output
     std::string status_text; ///< why, in words
     std::string model;       ///< "elastic FEM" or "rigid blocks"
     /** The face joint's figures; none without a converged increment. */
-    std::optional<double> face_force;              ///< Q_n (N/m)
-    std::optional<double> face_contact_length;     ///< m
-    std::optional<double> face_sigma_max;          ///< Pa, pointwise
-    std::optional<double> face_sigma_max_averaged; ///< Pa
+    std::optional<double>         face_force;              ///< Q_n (N/m)
+    std::optional<double>         face_contact_length;     ///< m
+    std::optional<double>         face_sigma_max;          ///< Pa, pointwise
+    std::optional<double>         face_sigma_max_averaged; ///< Pa
     unsigned int                  n_dofs = 0;
     std::map<std::string, double> wall_times; ///< s, per solver section
     /** By mechanism name (Scene::to_string). */

@@ -26,13 +26,13 @@ namespace FloorBlock::Output
    *   same for every figure of one solve (they come out together).
    */
   nlohmann::json
-  face_joint_figures(const Contact::SolveResult              &solve,
+  face_joint_figures(const Contact::SolveResult            &solve,
                      const std::optional<FemErrorEstimate> &error_estimate,
                      const unsigned int                     n_blocks);
 
   /** @brief One terminal line per figure of face_joint_figures(). */
   std::string
-  figure_lines(const Contact::SolveResult              &solve,
+  figure_lines(const Contact::SolveResult            &solve,
                const std::optional<FemErrorEstimate> &error_estimate,
                const unsigned int                     n_blocks);
 } // namespace FloorBlock::Output

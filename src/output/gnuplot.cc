@@ -15,9 +15,9 @@ namespace FloorBlock::Output
              const unsigned int width_pixels,
              const unsigned int height_pixels)
   {
-    const std::string temporary_png    = temporary_name_for(png_path);
-    const std::string script_path      = temporary_png + ".gp";
-    const std::string error_log_path   = temporary_png + ".log";
+    const std::string temporary_png  = temporary_name_for(png_path);
+    const std::string script_path    = temporary_png + ".gp";
+    const std::string error_log_path = temporary_png + ".log";
     {
       std::ofstream out(script_path);
       out << "set terminal pngcairo noenhanced size " << width_pixels << ","

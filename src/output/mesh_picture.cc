@@ -1,10 +1,8 @@
-#include <deal.II/grid/tria.h>
-
-#include <output/gnuplot.h>
-
 #include <geometry/ids.h>
+#include <output/gnuplot.h>
 #include <output/mesh_picture.h>
 
+#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <array>
@@ -20,7 +18,8 @@ namespace FloorBlock::Output
   {
     namespace Ids = Geometry::Ids;
 
-    /** Fill colour of a body: neighbouring blocks alternate, face block grey, base sand. */
+    /** Fill colour of a body: neighbouring blocks alternate, face block grey,
+     * base sand. */
     std::string
     body_colour(const dealii::types::material_id material)
     {
@@ -38,7 +37,8 @@ namespace FloorBlock::Output
     std::map<dealii::types::material_id, std::string>
     cell_polygons(const dealii::Triangulation<2> &triangulation)
     {
-      // deal.II vertex order is lexicographic; this visits them around the cell.
+      // deal.II vertex order is lexicographic; this visits them around the
+      // cell.
       constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
       std::map<dealii::types::material_id, std::ostringstream> streams;
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -66,9 +66,9 @@ namespace FloorBlock::Output
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && wanted(face->boundary_id()))
             stream << face->vertex(0)[0] << ' ' << face->vertex(0)[1] << '\n'
-                   << face->vertex(1)[0] << ' ' << face->vertex(1)[1]
-                   << "\n\n";
-      // gnuplot refuses an empty data file: a lone point far off-screen is not drawn.
+                   << face->vertex(1)[0] << ' ' << face->vertex(1)[1] << "\n\n";
+      // gnuplot refuses an empty data file: a lone point far off-screen is not
+      // drawn.
       const std::string text = stream.str();
       return text.empty() ? std::string("NaN NaN\n") : text;
     }
@@ -79,9 +79,10 @@ namespace FloorBlock::Output
     {
       static const std::map<std::string, std::string> known = {
         {"stick", "#1a9850"}, {"slip", "#f46d43"}, {"open", "#7b3294"}};
-      constexpr std::array<const char *, 3> others = {"#000000", "#2166ac",
+      constexpr std::array<const char *, 3> others = {"#000000",
+                                                      "#2166ac",
                                                       "#b2182b"};
-      const auto found = known.find(category);
+      const auto                            found  = known.find(category);
       return found != known.end() ? found->second :
                                     others[index % others.size()];
     }
@@ -91,7 +92,8 @@ namespace FloorBlock::Output
     {
       std::string result = "'";
       for (const char character : text)
-        result += character == '\'' ? std::string("''") : std::string(1, character);
+        result +=
+          character == '\'' ? std::string("''") : std::string(1, character);
       return result + "'";
     }
   } // namespace
@@ -103,36 +105,37 @@ namespace FloorBlock::Output
   {
     if (triangulation.n_active_cells() == 0)
       throw std::runtime_error("cannot draw an empty mesh");
-    const auto polygons = cell_polygons(triangulation);
+    const auto         polygons = cell_polygons(triangulation);
     std::ostringstream plot;
     unsigned int       block_index = 0;
     std::string        cells_text;
     for (const auto &[material, text] : polygons)
       {
         cells_text += text + "\n\n";
-        plot << (block_index == 0 ? "plot " : ", \\\n     ")
-             << "$cells index " << block_index
-             << " with filledcurves closed fc rgb '" << body_colour(material)
+        plot << (block_index == 0 ? "plot " : ", \\\n     ") << "$cells index "
+             << block_index << " with filledcurves closed fc rgb '"
+             << body_colour(material)
              << "' fs solid 1.0 noborder notitle, \\\n     $cells index "
              << block_index << " with lines lc rgb '#505050' lw 0.4 notitle";
         ++block_index;
       }
     // Inline data blocks: no scratch files to clean up.
-    std::string data = "$cells << EOD\n" + cells_text + "EOD\n$joints << EOD\n" +
-                       boundary_segments(triangulation, Ids::is_joint_side) +
-                       "EOD\n$floor << EOD\n" +
-                       boundary_segments(triangulation,
-                                 [](const dealii::types::boundary_id id) {
-                                   return Ids::boundary_kind(id) ==
-                                          Ids::BoundaryKind::floor_surface;
-                                 }) +
-                       "EOD\n";
+    std::string data =
+      "$cells << EOD\n" + cells_text + "EOD\n$joints << EOD\n" +
+      boundary_segments(triangulation, Ids::is_joint_side) +
+      "EOD\n$floor << EOD\n" +
+      boundary_segments(triangulation,
+                        [](const dealii::types::boundary_id id) {
+                          return Ids::boundary_kind(id) ==
+                                 Ids::BoundaryKind::floor_surface;
+                        }) +
+      "EOD\n";
     plot << ", \\\n     $joints with lines lc rgb '#d01010' lw 2.5 notitle"
          << ", \\\n     $floor with lines lc rgb '#1030d0' lw 2.5 notitle";
     std::map<std::string, std::ostringstream> marker_points;
     for (const PictureMarker &marker : options.markers)
-      marker_points[marker.category]
-        << marker.position[0] << ' ' << marker.position[1] << '\n';
+      marker_points[marker.category] << marker.position[0] << ' '
+                                     << marker.position[1] << '\n';
     unsigned int marker_index = 0;
     for (const auto &[category, points] : marker_points)
       {
@@ -161,8 +164,8 @@ namespace FloorBlock::Output
     constexpr unsigned int title_pixels = 60; // room for the caption
     const unsigned int     height =
       options.height_pixels > 0 ?
-        options.height_pixels :
-        static_cast<unsigned int>(options.width_pixels *
+            options.height_pixels :
+            static_cast<unsigned int>(options.width_pixels *
                                   (y_max - y_min + 2 * margin) /
                                   (x_max - x_min + 2 * margin)) +
           (options.title.empty() ? 0 : title_pixels);

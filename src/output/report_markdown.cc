@@ -30,9 +30,11 @@ namespace FloorBlock::Output
         "Method: {} ({} DoFs).\n\n| joint | Q rel. error | contact length "
         "rel. error | sigma_max averaged rel. error | sigma_max pointwise "
         "rel. error |\n|---|---|---|---|---|\n",
-        estimate->method, estimate->refined_n_dofs);
+        estimate->method,
+        estimate->refined_n_dofs);
       for (const auto &[name, errors] : estimate->joints)
-        text += fmt::format("| {} | {} | {} | {} | {} |\n", name,
+        text += fmt::format("| {} | {} | {} | {} | {} |\n",
+                            name,
                             relative_error(errors.normal_force),
                             relative_error(errors.contact_length),
                             relative_error(errors.sigma_max_averaged),
@@ -42,22 +44,25 @@ namespace FloorBlock::Output
   } // namespace
 
   std::string
-  report_markdown(const Parameters::ScenarioParameters &scene,
-                  const Contact::SolveResult           &result,
-                  const FemReport                      &report,
+  report_markdown(const Parameters::ScenarioParameters  &scene,
+                  const Contact::SolveResult            &result,
+                  const FemReport                       &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
-                  const RunComparison                  &comparison,
-                  const std::vector<std::string>       &verdicts)
+                  const RunComparison                   &comparison,
+                  const std::vector<std::string>        &verdicts)
   {
-    std::string text  = fmt::format(
+    std::string text = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
       "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "
       "{:.1f} deg, support load {:.0f} t on blocks {} from the face, b = {} "
       "m, floor lift {} m ({}), joints {}.\n\n"
       "Model: {} ({}): {} ({}); {} DoFs, {} increments, {} Newton "
       "iterations, {} cutbacks, {}.\n\n",
-      scene.scene_name, numbering_note, scene.geometry.n_blocks,
-      scene.geometry.block_width, scene.geometry.block_height,
+      scene.scene_name,
+      numbering_note,
+      scene.geometry.n_blocks,
+      scene.geometry.block_width,
+      scene.geometry.block_height,
       scene.bedding.shape == Geometry::BeddingShape::planar ?
         fmt::format("planar {:.1f} deg",
                     Units::radians_to_degrees(scene.bedding.inclination)) :
@@ -66,12 +71,19 @@ namespace FloorBlock::Output
       Units::radians_to_degrees(scene.joints.vertical_friction_angle),
       scene.loading.support_load / Units::tonnes_force_to_newtons(1.),
       fmt::join(scene.loading.loaded_blocks_from_face, ","),
-      scene.geometry.support_width, scene.loading.floor_lift,
+      scene.geometry.support_width,
+      scene.loading.floor_lift,
       report.converged() ? "reached" : "not reached",
       scene.joints.law == Contact::JointLawKind::rigid ? "rigid" : "compliant",
-      report.model, report.model_choice, report.status, report.status_text,
-      result.n_dofs, result.increments.size(), report.n_newton_iterations,
-      report.n_cutbacks, force_balance_text(report.force_balance));
+      report.model,
+      report.model_choice,
+      report.status,
+      report.status_text,
+      result.n_dofs,
+      result.increments.size(),
+      report.n_newton_iterations,
+      report.n_cutbacks,
+      force_balance_text(report.force_balance));
 
     if (report.model != "elastic FEM")
       text += "Columns and verdicts marked FEM hold the numbers of the " +
@@ -79,15 +91,17 @@ namespace FloorBlock::Output
     text += "## Verdicts (face joint, final lift)\n\n";
     for (const auto &line : verdicts)
       text += "- " + line + "\n";
-    text += "\n## Lateral force per vertical joint\n\n" + force_table_markdown(comparison.final_joints, scene.geometry.n_blocks) +
-            "\n![Q per joint](q_per_joint.png)\n\n"
-            "## Corner contact: FEM against Eqs. 6.51-6.53 (FEM's own Q and "
-            "y)\n\n" +
-            contact_table_markdown(comparison.final_joints) +
-            "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
-            "![Traction along the face joint](face_joint_traction.png)\n\n"
-            "## Discretisation error\n\n" +
-            error_section(error_estimate);
+    text +=
+      "\n## Lateral force per vertical joint\n\n" +
+      force_table_markdown(comparison.final_joints, scene.geometry.n_blocks) +
+      "\n![Q per joint](q_per_joint.png)\n\n"
+      "## Corner contact: FEM against Eqs. 6.51-6.53 (FEM's own Q and "
+      "y)\n\n" +
+      contact_table_markdown(comparison.final_joints) +
+      "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
+      "![Traction along the face joint](face_joint_traction.png)\n\n"
+      "## Discretisation error\n\n" +
+      error_section(error_estimate);
     text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
     if (report.mesh)
       text += fmt::format("| mesh | {:.3f} |\n", report.mesh->wall_time);

@@ -21,10 +21,10 @@ namespace FloorBlock::Output
    * @param[in] comparison The FEM against the closed forms.
    */
   std::string
-  report_markdown(const Parameters::ScenarioParameters &scene,
-                  const Contact::SolveResult           &result,
-                  const FemReport                      &report,
+  report_markdown(const Parameters::ScenarioParameters  &scene,
+                  const Contact::SolveResult            &result,
+                  const FemReport                       &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
-                  const RunComparison                  &comparison,
-                  const std::vector<std::string>       &verdicts);
+                  const RunComparison                   &comparison,
+                  const std::vector<std::string>        &verdicts);
 } // namespace FloorBlock::Output

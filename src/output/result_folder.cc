@@ -31,7 +31,7 @@ namespace FloorBlock::Output
   }
 
   void
-  ResultFolder::write_json(const std::string &   file_name,
+  ResultFolder::write_json(const std::string    &file_name,
                            const nlohmann::json &value) const
   {
     // Two-space indent keeps the files readable and diffable.

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include <functional>
-#include <optional>
 #include <map>
+#include <optional>
 
 namespace FloorBlock::Output
 {
@@ -33,26 +33,28 @@ namespace FloorBlock::Output
      */
     std::string
     panels_by_mechanism(const std::vector<const Scene::FigurePoint *> &points,
-                        const std::string &                            title,
-                        const std::string &                            y_label,
-                        const PointKey &                               curve_key,
+                        const std::string                             &title,
+                        const std::string                             &y_label,
+                        const PointKey    &curve_key,
                         const std::string &curve_label_format,
-                        const PointValue & value)
+                        const PointValue  &value)
     {
       std::string script = fmt::format(
         "set multiplot layout 1,3 title '{}'\nset grid\nset key top left\n"
         "set xlabel 'bedding friction angle (deg)'\nset ylabel '{}'\n"
         "set xrange [10:35]\n",
-        title, y_label);
+        title,
+        y_label);
       const auto &mechanisms = points.front()->closed_forms.mechanisms;
       for (std::size_t m = 0; m < mechanisms.size(); ++m)
         {
           std::map<double, std::string> curves;
           for (const Scene::FigurePoint *point : points)
             if (const auto y = value(*point, point->closed_forms.mechanisms[m]))
-              curves[curve_key(*point)] += fmt::format(
-                "{} {}\n", Units::radians_to_degrees(point->bedding_friction),
-                *y);
+              curves[curve_key(*point)] +=
+                fmt::format("{} {}\n",
+                            Units::radians_to_degrees(point->bedding_friction),
+                            *y);
           script += fmt::format("set title '{}'\n",
                                 Scene::to_string(mechanisms[m].mechanism));
           if (curves.empty())
@@ -61,14 +63,16 @@ namespace FloorBlock::Output
                         "plot [10:35] NaN notitle\nunset label 1\n";
               continue;
             }
-          std::string plot = "plot ";
-          std::string data;
+          std::string  plot = "plot ";
+          std::string  data;
           unsigned int index = 0;
           for (const auto &[key, rows] : curves)
             {
               data += fmt::format("$c{}_{} << EOD\n{}EOD\n", m, index, rows);
               plot += fmt::format("{}$c{}_{} with linespoints title '{}'",
-                                  index == 0 ? "" : ", ", m, index,
+                                  index == 0 ? "" : ", ",
+                                  m,
+                                  index,
                                   fmt::format(curve_label_format, key));
               ++index;
             }
@@ -78,7 +82,7 @@ namespace FloorBlock::Output
     }
 
     std::vector<const Scene::FigurePoint *>
-    select(const std::vector<Scene::FigurePoint> &                  points,
+    select(const std::vector<Scene::FigurePoint>                 &points,
            const std::function<bool(const Scene::FigurePoint &)> &keep)
     {
       std::vector<const Scene::FigurePoint *> selected;
@@ -106,12 +110,14 @@ namespace FloorBlock::Output
 
     for (const auto &point : points)
       {
-        csv += fmt::format(
-          "{},{},{:.3f},{:.3f},{:.3f},{:.9e}", point.figure, point.curvature,
-          Units::radians_to_degrees(point.bedding_friction),
-          Units::radians_to_degrees(point.vertical_friction),
-          point.support_load / Units::tonnes_force_to_newtons(1.0),
-          point.closed_forms.floor_lift);
+        csv +=
+          fmt::format("{},{},{:.3f},{:.3f},{:.3f},{:.9e}",
+                      point.figure,
+                      point.curvature,
+                      Units::radians_to_degrees(point.bedding_friction),
+                      Units::radians_to_degrees(point.vertical_friction),
+                      point.support_load / Units::tonnes_force_to_newtons(1.0),
+                      point.closed_forms.floor_lift);
         for (const auto &entry : point.closed_forms.mechanisms)
           {
             csv += "," + Analytic::to_string(entry.forces.status);
@@ -132,19 +138,20 @@ namespace FloorBlock::Output
 
   std::string
   lateral_force_plot(const std::vector<Scene::FigurePoint> &points,
-                     const std::string &                    figure,
-                     const std::string &                    title)
+                     const std::string                     &figure,
+                     const std::string                     &title)
   {
     return panels_by_mechanism(
       select(points,
              [&](const Scene::FigurePoint &p) { return p.figure == figure; }),
-      title, "Q at the face over b (kN)",
+      title,
+      "Q at the face over b (kN)",
       [](const Scene::FigurePoint &p) {
         return Units::radians_to_degrees(p.vertical_friction);
       },
       "phi_v = {:.0f} deg",
-      [](const Scene::FigurePoint &, const Scene::MechanismResult &entry)
-        -> std::optional<double> {
+      [](const Scene::FigurePoint &,
+         const Scene::MechanismResult &entry) -> std::optional<double> {
         if (!has_face_force(entry))
           return std::nullopt;
         return entry.face_force_over_width / kN;
@@ -167,8 +174,8 @@ namespace FloorBlock::Output
         return p.support_load / Units::tonnes_force_to_newtons(1.0);
       },
       "{:.0f} t",
-      [](const Scene::FigurePoint &, const Scene::MechanismResult &entry)
-        -> std::optional<double> {
+      [](const Scene::FigurePoint &,
+         const Scene::MechanismResult &entry) -> std::optional<double> {
         if (!has_face_force(entry) ||
             entry.contact.status != Analytic::Status::ok)
           return std::nullopt;

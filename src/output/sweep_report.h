@@ -23,8 +23,8 @@ namespace FloorBlock::Output
    */
   std::string
   lateral_force_plot(const std::vector<Scene::FigurePoint> &points,
-                     const std::string &                    figure,
-                     const std::string &                    title);
+                     const std::string                     &figure,
+                     const std::string                     &title);
 
   /**
    * @brief gnuplot script for Figures 6.10/6.11 at one curvature: sigma_max

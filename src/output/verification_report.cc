@@ -40,11 +40,15 @@ namespace FloorBlock::Output
   {
     std::string text;
     for (const auto &[name, check] : result.checks)
-      text += fmt::format(
-        "{:<30} computed {:.6e}  closed form {:.6e}  error {:.2e} "
-        "(tolerance {:.0e}) {}\n",
-        name, check.computed, check.closed_form, check.relative_error,
-        check.tolerance, check.passed ? "ok" : "FAILED");
+      text +=
+        fmt::format("{:<30} computed {:.6e}  closed form {:.6e}  error {:.2e} "
+                    "(tolerance {:.0e}) {}\n",
+                    name,
+                    check.computed,
+                    check.closed_form,
+                    check.relative_error,
+                    check.tolerance,
+                    check.passed ? "ok" : "FAILED");
     return text;
   }
 } // namespace FloorBlock::Output

@@ -15,37 +15,47 @@ namespace FloorBlock::Parameters
     // Sizes below a millimetre or above a kilometre are typos, not scenes.
     constexpr double smallest_length = 1.0e-3; // m
     constexpr double largest_length  = 1.0e3;  // m
-  } // namespace
+  }                                            // namespace
 
   void
   GeometryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    prm.declare_entry("Number of blocks", "6", Integer(1, 99),
+    prm.declare_entry("Number of blocks",
+                      "6",
+                      Integer(1, 99),
                       "Number n of free floor blocks between the free end and "
                       "the fixed face block. Units: none.");
-    prm.declare_entry("Block width", "1.0",
+    prm.declare_entry("Block width",
+                      "1.0",
                       Double(smallest_length, largest_length),
                       "Block width L perpendicular to the face (spacing of the "
                       "vertical fractures). Units: m.");
-    prm.declare_entry("Block height", "2.0",
+    prm.declare_entry("Block height",
+                      "2.0",
                       Double(smallest_length, largest_length),
                       "Block height H, from the failed bedding to the floor "
                       "surface. Units: m.");
-    prm.declare_entry("Support width", "1.5",
+    prm.declare_entry("Support width",
+                      "1.5",
                       Double(smallest_length, largest_length),
                       "Width b of one powered support along the face; the "
                       "plane-strain results per metre are multiplied by b for "
                       "forces and areas 'over b'. The chapter does not state "
                       "it; 1.5 m is a common shield width. Units: m.");
-    prm.declare_entry("Face block width", "1.0",
-                      Double(smallest_length, largest_length),
-                      "Width of the fixed face block next to block n. Units: m.");
-    prm.declare_entry("Base thickness", "1.0",
+    prm.declare_entry(
+      "Face block width",
+      "1.0",
+      Double(smallest_length, largest_length),
+      "Width of the fixed face block next to block n. Units: m.");
+    prm.declare_entry("Base thickness",
+                      "1.0",
                       Double(smallest_length, largest_length),
                       "Thickness of the bedding layer below the blocks on "
                       "which they slide. Units: m.");
-    prm.declare_entry("Corner rounding radius", "0.01", Double(0, largest_length),
+    prm.declare_entry("Corner rounding radius",
+                      "0.01",
+                      Double(0, largest_length),
                       "Corner rounding of the blocks, as UDEC's rounding "
                       "length: each fillet starts this far from the corner "
                       "along the vertical side, so both sides of a joint keep "
@@ -54,7 +64,9 @@ namespace FloorBlock::Parameters
                       "angle theta). 0 = sharp corners, whose pointwise "
                       "contact stress is singular. Must be below a quarter of "
                       "the smallest block edge. Units: m.");
-    prm.declare_entry("Dimension", "2", dealii::Patterns::Selection("2|3"),
+    prm.declare_entry("Dimension",
+                      "2",
+                      dealii::Patterns::Selection("2|3"),
                       "2: plane strain, per metre of face. 3: the 2D "
                       "assembly extruded along the face over Face length "
                       "(issue 16; src/geometry/extruded_assembly.h): `mesh` "
@@ -62,12 +74,14 @@ namespace FloorBlock::Parameters
                       "it on one process, reporting forces per metre of "
                       "face; run, converge and sweep --fem refuse it. "
                       "Units: none.");
-    prm.declare_entry("Face length", "4.5",
+    prm.declare_entry("Face length",
+                      "4.5",
                       Double(smallest_length, largest_length),
                       "Length of the 3D assembly along the face (z), used "
                       "when Dimension = 3; 4.5 m = 3 b for the default "
                       "support width. Units: m.");
-    prm.declare_entry("End faces", "plane strain",
+    prm.declare_entry("End faces",
+                      "plane strain",
                       dealii::Patterns::Selection("plane strain|free"),
                       "Boundary condition on the two end faces of a 3D "
                       "scene (z = 0 and z = Face length), used when "

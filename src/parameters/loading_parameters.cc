@@ -26,29 +26,38 @@ namespace FloorBlock::Parameters
   LoadingParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Loading");
-    prm.declare_entry("Gravity", "9.81", Double(0, 100),
+    prm.declare_entry("Gravity",
+                      "9.81",
+                      Double(0, 100),
                       "Gravitational acceleration acting on the rock. "
                       "Units: m/s^2.");
-    prm.declare_entry("Support load", "650", Double(0, 1.0e5),
+    prm.declare_entry("Support load",
+                      "650",
+                      Double(0, 1.0e5),
                       "Total load of one powered support (chapter: 650 t), "
                       "spread evenly over the loaded blocks and over the "
                       "support width b. Converted with standard gravity "
                       "9.80665 m/s^2. Units: t (tonnes-force).");
-    prm.declare_entry("Support load direction", "vertical",
-                      Selection("vertical|normal to block top"),
-                      "Direction of the support load on a block top: "
-                      "straight down with the same total per block on an "
-                      "inclined top (the closed forms' W_i + P_i), or as a "
-                      "pressure normal to the top (a shield base resting on "
-                      "it). Only differs where the block tops are inclined "
-                      "(Bedding/Floor uplift reading = inclined). Units: none.");
-    prm.declare_entry("Loaded blocks", "4,5,6",
-                      List(Integer(1, largest_block_count), 0,
-                           largest_block_count, ","),
-                      "Blocks under the support, counted from the face "
-                      "(1 = the block next to the face block); comma-separated, "
-                      "may be empty. Units: none.");
-    prm.declare_entry("Floor lift", "0.09", Double(0, 10),
+    prm.declare_entry(
+      "Support load direction",
+      "vertical",
+      Selection("vertical|normal to block top"),
+      "Direction of the support load on a block top: "
+      "straight down with the same total per block on an "
+      "inclined top (the closed forms' W_i + P_i), or as a "
+      "pressure normal to the top (a shield base resting on "
+      "it). Only differs where the block tops are inclined "
+      "(Bedding/Floor uplift reading = inclined). Units: none.");
+    prm.declare_entry(
+      "Loaded blocks",
+      "4,5,6",
+      List(Integer(1, largest_block_count), 0, largest_block_count, ","),
+      "Blocks under the support, counted from the face "
+      "(1 = the block next to the face block); comma-separated, "
+      "may be empty. Units: none.");
+    prm.declare_entry("Floor lift",
+                      "0.09",
+                      Double(0, 10),
                       "Size of the base motion in the floor-uplift stage of "
                       "the FEM: the translation distance (vertical, dip "
                       "modes), the rise of the face end (tilt), the rise of "
@@ -56,7 +65,8 @@ namespace FloorBlock::Parameters
                       "input: it follows from the bedding shape (closed "
                       "forms) or from the computed block rotations (FEM). "
                       "Units: m.");
-    prm.declare_entry("Uplift mode", "parabola",
+    prm.declare_entry("Uplift mode",
+                      "parabola",
                       Selection("vertical|dip toward face|dip away from face|"
                                 "tilt|parabola|slope"),
                       "How the base moves in the floor-uplift stage while "
@@ -68,7 +78,9 @@ namespace FloorBlock::Parameters
                       "x/nL (the planar counterpart of parabola, Figure 6.5). "
                       "Units: none.");
     prm.declare_entry(
-      "Footprint length", "0", Double(0, largest_footprint),
+      "Footprint length",
+      "0",
+      Double(0, largest_footprint),
       "3D scenes (Geometry/Dimension = 3): the support's extent along the "
       "face, the shield width b its whole Support load acts on. The load "
       "is the 2D support pressure times Geometry/Support width / Footprint "
@@ -79,7 +91,9 @@ namespace FloorBlock::Parameters
       "length, as under a row of supports side by side. Must not exceed "
       "Geometry/Face length; must be 0 in 2D. Units: m.");
     prm.declare_entry(
-      "Footprint offset", "-1", Double(centred_offset, largest_footprint),
+      "Footprint offset",
+      "-1",
+      Double(centred_offset, largest_footprint),
       "3D scenes with Footprint length > 0: z of the footprint's start "
       "along the face (the face runs from z = 0 to Geometry/Face length), "
       "between 0 and Face length - Footprint length. -1 (the default): "
@@ -96,17 +110,17 @@ namespace FloorBlock::Parameters
     support_load =
       Units::tonnes_force_to_newtons(prm.get_double("Support load"));
     const std::string loaded = prm.get("Loaded blocks");
-    support_load_direction =
-      prm.get("Support load direction") == "vertical" ?
-        SupportLoadDirection::vertical :
-        SupportLoadDirection::top_normal;
+    support_load_direction   = prm.get("Support load direction") == "vertical" ?
+                                 SupportLoadDirection::vertical :
+                                 SupportLoadDirection::top_normal;
     floor_lift               = prm.get_double("Floor lift");
     const std::string mode   = prm.get("Uplift mode");
-    uplift_mode = mode == "vertical"           ? UpliftMode::vertical :
-                  mode == "dip toward face"    ? UpliftMode::dip_toward_face :
-                  mode == "dip away from face" ? UpliftMode::dip_away_from_face :
-                  mode == "tilt"               ? UpliftMode::tilt :
-                  mode == "slope"              ? UpliftMode::slope :
+    uplift_mode              = mode == "vertical" ? UpliftMode::vertical :
+                               mode == "dip toward face" ? UpliftMode::dip_toward_face :
+                               mode == "dip away from face" ?
+                                                           UpliftMode::dip_away_from_face :
+                               mode == "tilt"  ? UpliftMode::tilt :
+                               mode == "slope" ? UpliftMode::slope :
                                                  UpliftMode::parabola;
     footprint_length         = prm.get_double("Footprint length");
     const double offset      = prm.get_double("Footprint offset");
@@ -115,7 +129,8 @@ namespace FloorBlock::Parameters
     if (offset == centred_offset)
       footprint_offset.reset();
     else if (offset < 0.)
-      throw InputError("Loading/Footprint offset", std::to_string(offset),
+      throw InputError("Loading/Footprint offset",
+                       std::to_string(offset),
                        "must be -1 (centred on the face) or between 0 and "
                        "Geometry/Face length - Loading/Footprint length (m)");
     else
@@ -128,7 +143,8 @@ namespace FloorBlock::Parameters
       {
         const unsigned int block = dealii::Utilities::string_to_int(entry);
         if (!seen.insert(block).second)
-          throw InputError("Loading/Loaded blocks", loaded,
+          throw InputError("Loading/Loaded blocks",
+                           loaded,
                            "each block may appear only once");
         loaded_blocks_from_face.push_back(block);
       }

@@ -9,13 +9,19 @@ namespace FloorBlock::Parameters
   MaterialParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    prm.declare_entry("Bulk modulus", "9e9", Double(1.0e6, 1.0e13),
+    prm.declare_entry("Bulk modulus",
+                      "9e9",
+                      Double(1.0e6, 1.0e13),
                       "Bulk modulus K of the intact rock (chapter Table 6.1: "
                       "9 GPa). Units: Pa.");
-    prm.declare_entry("Shear modulus", "6.7e9", Double(1.0e6, 1.0e13),
+    prm.declare_entry("Shear modulus",
+                      "6.7e9",
+                      Double(1.0e6, 1.0e13),
                       "Shear modulus G of the intact rock (chapter Table 6.1: "
                       "6.7 GPa). Units: Pa.");
-    prm.declare_entry("Density", "2500", Double(0, 2.0e4),
+    prm.declare_entry("Density",
+                      "2500",
+                      Double(0, 2.0e4),
                       "Rock density; the chapter does not state it, 2500 is "
                       "typical of coal-measure sandstone. Units: kg/m^3.");
     prm.leave_subsection();

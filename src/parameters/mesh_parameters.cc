@@ -14,21 +14,31 @@ namespace FloorBlock::Parameters
   MeshParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    prm.declare_entry("Corner size", "0.02", Double(1.0e-5, 10),
+    prm.declare_entry("Corner size",
+                      "0.02",
+                      Double(1.0e-5, 10),
                       "Target element size at the block corners, where "
                       "contact concentrates. Units: m.");
-    prm.declare_entry("Far size", "0.25", Double(1.0e-4, 100),
+    prm.declare_entry("Far size",
+                      "0.25",
+                      Double(1.0e-4, 100),
                       "Element size far from the corners. Units: m.");
-    prm.declare_entry("Growth rate", "1.3", Double(1.01, 3),
+    prm.declare_entry("Growth rate",
+                      "1.3",
+                      Double(1.01, 3),
                       "Ratio between the sizes of neighbouring elements on "
                       "the way from a corner to the far field. Units: none.");
-    prm.declare_entry("Matching joints", "true", Bool(),
+    prm.declare_entry("Matching joints",
+                      "true",
+                      Bool(),
                       "Whether both sides of every joint get the same nodes "
                       "(node-to-node contact). false (non-matching sides) "
                       "is refused while Model/Blocks chooses the elastic "
                       "FEM, whose joints pair nodes one to one. Units: none.");
     prm.declare_entry(
-      "Global refinements", "auto", Selection("auto|0|1|2|3|4|5|6"),
+      "Global refinements",
+      "auto",
+      Selection("auto|0|1|2|3|4|5|6"),
       "How many times deal.II halves every cell of the Gmsh mesh, new "
       "boundary vertices on the scene's curves (nested meshes: `converge "
       "--mode uniform` adds one per level). auto: none while the joints' "
@@ -38,7 +48,9 @@ namespace FloorBlock::Parameters
       "corner fillet alone limits the contact concentration "
       "(src/scene/mesh_refinement.h). Units: none.");
     prm.declare_entry(
-      "Cells per contact length", "8", Integer(0, 100),
+      "Cells per contact length",
+      "8",
+      Integer(0, 100),
       "Contact-zone sizing: cells of size c / N (not below Corner size) "
       "along both ends of every vertical joint, over 1.5 c from the "
       "corner, where c is the closed-form contact length of the face "
@@ -47,7 +59,9 @@ namespace FloorBlock::Parameters
       "not from the corner grading alone. 0: no contact-zone sizing "
       "(also when no mechanism gives a contact length). Units: none.");
     prm.declare_entry(
-      "Target relative error", "0.01", Double(1e-6, 1),
+      "Target relative error",
+      "0.01",
+      Double(1e-6, 1),
       "Accuracy as the input: `run` solves on the mesh sized from the "
       "scene, then refines it adaptively (hanging nodes at the contact "
       "ends, along large traction jumps and where the Kelly indicator is "
@@ -59,7 +73,8 @@ namespace FloorBlock::Parameters
       "reported from the coarser of the last two levels, with that "
       "estimate (src/pipeline/accuracy_loop.h). Units: none (0.01 = 1 %).");
     prm.declare_entry(
-      "Target figures", "normal force, contact length",
+      "Target figures",
+      "normal force, contact length",
       MultipleSelection("normal force|contact length|sigma_max|"
                         "sigma_max averaged"),
       "The face-joint figures Target relative error applies to; the others "
@@ -68,13 +83,17 @@ namespace FloorBlock::Parameters
       "peak at a corner has no mesh limit, and the averaged one depends on "
       "Solver/Averaging length (issue 15's corner analysis). Units: none.");
     prm.declare_entry(
-      "Maximum refinement levels", "6", Integer(1, 20),
+      "Maximum refinement levels",
+      "6",
+      Integer(1, 20),
       "Largest number of adaptive levels `run` solves after the first "
       "mesh (1: one refined solve, only for the estimate), not counting "
       "the level that confirms a checked pair which met the target "
       "(src/pipeline/target_loop.h). Units: none.");
     prm.declare_entry(
-      "Refinement time budget", "1800", Double(1, 1e6),
+      "Refinement time budget",
+      "1800",
+      Double(1, 1e6),
       "`run` starts no further level once the wall time of its solves "
       "has passed this or the next level's forecast would pass it. The "
       "default lets the exact law on the default scene reach 1 %: level "
@@ -82,7 +101,9 @@ namespace FloorBlock::Parameters
       "level 6's check, the next candidate, is forecast at about 1200 s "
       "(README, session 21). Units: s.");
     prm.declare_entry(
-      "Slice size", "0.25", Double(1e-3, 100),
+      "Slice size",
+      "0.25",
+      Double(1e-3, 100),
       "Thickness of the slices a 3D scene (Geometry/Dimension = 3) is "
       "extruded through along the face: ceil(Face length / Slice size) "
       "equal slices. Units: m.");
@@ -93,20 +114,19 @@ namespace FloorBlock::Parameters
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    corner_size     = prm.get_double("Corner size");
-    far_size        = prm.get_double("Far size");
-    growth_rate     = prm.get_double("Growth rate");
-    matching_joints = prm.get_bool("Matching joints");
-    cells_per_contact_length = prm.get_integer("Cells per contact length");
+    corner_size                   = prm.get_double("Corner size");
+    far_size                      = prm.get_double("Far size");
+    growth_rate                   = prm.get_double("Growth rate");
+    matching_joints               = prm.get_bool("Matching joints");
+    cells_per_contact_length      = prm.get_integer("Cells per contact length");
     const std::string refinements = prm.get("Global refinements");
-    global_refinements =
-      refinements == "auto" ?
-        std::nullopt :
-        std::optional<unsigned int>(std::stoul(refinements));
-    target_relative_error = prm.get_double("Target relative error");
+    global_refinements            = refinements == "auto" ?
+                                      std::nullopt :
+                                      std::optional<unsigned int>(std::stoul(refinements));
+    target_relative_error         = prm.get_double("Target relative error");
     target_figures.clear();
-    for (const std::string &name : dealii::Utilities::split_string_list(
-           prm.get("Target figures")))
+    for (const std::string &name :
+         dealii::Utilities::split_string_list(prm.get("Target figures")))
       target_figures.push_back(
         name == "normal force"   ? TargetFigure::normal_force :
         name == "contact length" ? TargetFigure::contact_length :
@@ -118,7 +138,8 @@ namespace FloorBlock::Parameters
     prm.leave_subsection();
 
     if (corner_size > far_size)
-      throw InputError("Mesh/Corner size", std::to_string(corner_size),
+      throw InputError("Mesh/Corner size",
+                       std::to_string(corner_size),
                        "must not exceed Mesh/Far size = " +
                          std::to_string(far_size) + " m");
   }

@@ -17,7 +17,7 @@ namespace FloorBlock::Parameters
      */
     std::string
     rigid_model_limitation(const BeddingParameters &bedding,
-                           const JointParameters &  joints,
+                           const JointParameters   &joints,
                            const LoadingParameters &loading)
     {
       if (joints.law == Contact::JointLawKind::rigid)
@@ -29,8 +29,7 @@ namespace FloorBlock::Parameters
       if (bedding.frame_dip != 0.)
         return "Bedding/Frame dip > 0: the rigid model's gravity is "
                "vertical in its frame";
-      if (loading.support_load_direction ==
-            SupportLoadDirection::top_normal &&
+      if (loading.support_load_direction == SupportLoadDirection::top_normal &&
           !bedding.flat_in_mesh())
         return "Loading/Support load direction = normal to block top on an "
                "inclined block top: the rigid model applies the support "
@@ -44,7 +43,9 @@ namespace FloorBlock::Parameters
   {
     prm.enter_subsection("Model");
     prm.declare_entry(
-      "Blocks", "elastic", Selection("elastic|rigid|auto"),
+      "Blocks",
+      "elastic",
+      Selection("elastic|rigid|auto"),
       "Which model computes the numbers of `solve` and `run` (the closed "
       "forms are always evaluated as well). elastic: the contact FEM "
       "(Gmsh mesh; deformable blocks, face block and base). rigid: rigid "
@@ -60,7 +61,9 @@ namespace FloorBlock::Parameters
       "iterations, Max cutbacks and Averaging length; the other Solver and "
       "Mesh entries apply to the elastic FEM only. Units: none.");
     prm.declare_entry(
-      "Outputs", "contact stress", Selection("forces|contact stress"),
+      "Outputs",
+      "contact stress",
+      Selection("forces|contact stress"),
       "What the run is for; read only when Model/Blocks = auto. forces: "
       "the lateral forces Q_j and the joint shear forces, which the rigid "
       "blocks reproduce (face-joint Q within 0.2 % of the elastic FEM with "
@@ -73,7 +76,9 @@ namespace FloorBlock::Parameters
       "contact 11-18 % shorter and a peak stress 22-24 % higher on the "
       "default scene). Units: none.");
     prm.declare_entry(
-      "Rigid points per joint", "400", Integer(2, 100000),
+      "Rigid points per joint",
+      "400",
+      Integer(2, 100000),
       "Trapezoid points along every joint of the rigid-block model, both "
       "end points included; the spacing H/(points - 1) must resolve the "
       "shortest contact zone of interest (5 mm for H = 2 m at 400). `run` "
@@ -87,19 +92,18 @@ namespace FloorBlock::Parameters
   {
     prm.enter_subsection("Model");
     const std::string model = prm.get("Blocks");
-    blocks  = model == "rigid" ? BlockModel::rigid :
-              model == "auto"  ? BlockModel::automatic :
-                                 BlockModel::elastic;
-    outputs = prm.get("Outputs") == "forces" ?
-                RequestedOutputs::forces :
-                RequestedOutputs::contact_stress;
+    blocks                  = model == "rigid" ? BlockModel::rigid :
+                              model == "auto"  ? BlockModel::automatic :
+                                                 BlockModel::elastic;
+    outputs = prm.get("Outputs") == "forces" ? RequestedOutputs::forces :
+                                               RequestedOutputs::contact_stress;
     rigid_points_per_joint = prm.get_integer("Rigid points per joint");
     prm.leave_subsection();
   }
 
   void
   ModelParameters::choose(const BeddingParameters &bedding,
-                          const JointParameters &  joints,
+                          const JointParameters   &joints,
                           const LoadingParameters &loading)
   {
     const std::string limitation =
@@ -112,9 +116,10 @@ namespace FloorBlock::Parameters
           return;
         case BlockModel::rigid:
           if (!limitation.empty())
-            throw InputError("Model/Blocks", "rigid",
-                             "elastic or auto for this scene (" +
-                               limitation + ")");
+            throw InputError("Model/Blocks",
+                             "rigid",
+                             "elastic or auto for this scene (" + limitation +
+                               ")");
           chosen        = BlockModel::rigid;
           choice_reason = "Model/Blocks = rigid";
           return;

@@ -19,8 +19,8 @@ namespace FloorBlock::Parameters
 
   std::string
   parameter_error_text(const dealii::ExceptionBase &error,
-                       const std::string &          parameter_path,
-                       const std::string &          value)
+                       const std::string           &parameter_path,
+                       const std::string           &value)
   {
     std::ostringstream info;
     error.print_info(info);

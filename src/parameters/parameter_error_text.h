@@ -17,6 +17,6 @@ namespace FloorBlock::Parameters
    */
   std::string
   parameter_error_text(const dealii::ExceptionBase &error,
-                       const std::string &          parameter_path,
-                       const std::string &          value);
+                       const std::string           &parameter_path,
+                       const std::string           &value);
 } // namespace FloorBlock::Parameters

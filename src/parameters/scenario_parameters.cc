@@ -39,24 +39,28 @@ namespace FloorBlock::Parameters
     {
       const double length = loading.footprint_length;
       if (length > 0. && geometry.dimension != 3)
-        throw InputError("Loading/Footprint length", std::to_string(length),
+        throw InputError("Loading/Footprint length",
+                         std::to_string(length),
                          "must be 0 while Geometry/Dimension = 2: a "
                          "footprint along the face needs a 3D scene");
       if (length > geometry.face_length)
-        throw InputError("Loading/Footprint length", std::to_string(length),
+        throw InputError("Loading/Footprint length",
+                         std::to_string(length),
                          "must be between 0 and Geometry/Face length = " +
                            std::to_string(geometry.face_length) + " m");
       if (!loading.footprint_offset)
         return;
       const double offset = *loading.footprint_offset;
       if (!(length > 0.))
-        throw InputError("Loading/Footprint offset", std::to_string(offset),
+        throw InputError("Loading/Footprint offset",
+                         std::to_string(offset),
                          "must be -1 (the default) while Loading/Footprint "
                          "length = 0: there is no footprint to place");
       // Round-off of an offset written as Face length - Footprint length.
       const double slack = 1e-9 * geometry.face_length;
       if (offset + length > geometry.face_length + slack)
-        throw InputError("Loading/Footprint offset", std::to_string(offset),
+        throw InputError("Loading/Footprint offset",
+                         std::to_string(offset),
                          "must be -1 (centred) or between 0 and Geometry/Face "
                          "length - Loading/Footprint length = " +
                            std::to_string(geometry.face_length - length) +
@@ -89,7 +93,8 @@ namespace FloorBlock::Parameters
 
     // The rigid half-plane is the plane y = 0 of the mesh.
     if (bedding.rigid_base && !bedding.flat_in_mesh())
-      throw InputError("Bedding/Base", "rigid",
+      throw InputError("Bedding/Base",
+                       "rigid",
                        "needs a flat bedding in the mesh: Bedding/Floor "
                        "uplift reading = lifted, or Shape = planar with "
                        "Inclination = 0");
@@ -111,10 +116,13 @@ namespace FloorBlock::Parameters
     // only after meshing, with a message about a node instead of this entry
     // and with files already written.
     if (!mesh.matching_joints && model.chosen == BlockModel::elastic)
-      throw InputError("Mesh/Matching joints", "false",
+      throw InputError("Mesh/Matching joints",
+                       "false",
                        "must be true while the elastic FEM is the model "
-                       "(" + model.choice_reason + "): its joints pair the "
-                       "nodes of both sides one to one");
+                       "(" +
+                         model.choice_reason +
+                         "): its joints pair the "
+                         "nodes of both sides one to one");
   }
 
   std::vector<unsigned int>
@@ -135,7 +143,7 @@ namespace FloorBlock::Parameters
       if (!std::filesystem::is_regular_file(path))
         throw InputError("scene file '" + path +
                          "' does not exist or is not a regular file");
-      std::ifstream in(path);
+      std::ifstream     in(path);
       std::stringstream text;
       text << in.rdbuf();
       if (!in)
@@ -143,7 +151,8 @@ namespace FloorBlock::Parameters
       return text.str();
     }
 
-    /// Splits "Joints/Bedding friction angle=20" into path and value and sets it.
+    /// Splits "Joints/Bedding friction angle=20" into path and value and sets
+    /// it.
     void
     apply_override(ParameterHandler &prm, const std::string &assignment)
     {
@@ -153,8 +162,10 @@ namespace FloorBlock::Parameters
         throw InputError("--set '" + assignment +
                          "': expected \"Subsection/Entry name=value\"");
 
-      const std::string path  = dealii::Utilities::trim(assignment.substr(0, equals));
-      const std::string value = dealii::Utilities::trim(assignment.substr(equals + 1));
+      const std::string path =
+        dealii::Utilities::trim(assignment.substr(0, equals));
+      const std::string value =
+        dealii::Utilities::trim(assignment.substr(equals + 1));
       const std::vector<std::string> levels =
         dealii::Utilities::split_string_list(path, '/');
 
@@ -175,7 +186,7 @@ namespace FloorBlock::Parameters
   } // namespace
 
   ScenarioParameters
-  read_scenario(const std::string &             path,
+  read_scenario(const std::string              &path,
                 const std::vector<std::string> &overrides)
   {
     ParameterHandler prm;
@@ -223,7 +234,7 @@ namespace FloorBlock::Parameters
   }
 
   ScenarioParameters
-  read_defaults(const std::string &             name,
+  read_defaults(const std::string              &name,
                 const std::vector<std::string> &overrides)
   {
     ParameterHandler prm;

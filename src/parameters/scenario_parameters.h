@@ -60,7 +60,7 @@ namespace FloorBlock::Parameters
    * unknown name, a value outside its pattern, or an impossible scene.
    */
   ScenarioParameters
-  read_scenario(const std::string &             path,
+  read_scenario(const std::string              &path,
                 const std::vector<std::string> &overrides);
 
   /**
@@ -68,7 +68,7 @@ namespace FloorBlock::Parameters
    * that take no scene file (verification cases).
    */
   ScenarioParameters
-  read_defaults(const std::string &             name,
+  read_defaults(const std::string              &name,
                 const std::vector<std::string> &overrides);
 
   /** @brief Every parameter with default, pattern, units and meaning. */

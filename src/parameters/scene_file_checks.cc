@@ -72,8 +72,8 @@ namespace FloorBlock::Parameters
      * message (built only when it throws: the nesting can be deep).
      */
     void
-    check_names(const std::string &        path,
-                const PropertyTree &       node,
+    check_names(const std::string        &path,
+                const PropertyTree       &node,
                 std::vector<std::string> &subsections)
     {
       for (const auto &[name, child] : node)
@@ -136,13 +136,13 @@ namespace FloorBlock::Parameters
           return deepest;
         }
       for (std::size_t start = text.find('<'); start != std::string::npos;
-           start = text.find('<', start + 1))
+           start             = text.find('<', start + 1))
         {
-          const std::size_t end = text.find('>', start);
-          if (end == std::string::npos || start + 1 >= text.size())
+                      const std::size_t end = text.find('>', start);
+                      if (end == std::string::npos || start + 1 >= text.size())
             break;
           const char next = text[start + 1];
-          if (next == '/')
+                      if (next == '/')
             depth = depth > 0 ? depth - 1 : 0;
           else if (next != '?' && next != '!' && text[end - 1] != '/')
             deepest = std::max(deepest, ++depth);

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <optional>
-
 #include <contact/joint_law_kind.h>
 #include <geometry/bedding_kinds.h>
 #include <geometry/end_faces.h>
@@ -9,6 +7,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,15 +24,15 @@ namespace FloorBlock::Parameters
   struct GeometryParameters
   {
     unsigned int n_blocks;
-    double       block_width;             ///< L (m), perpendicular to the face
-    double       block_height;            ///< H (m)
-    double       support_width;           ///< b (m), along the face
-    double       face_block_width;        ///< m
-    double       base_thickness;          ///< m, the bedding layer below the blocks
-    double       corner_rounding_radius;  ///< m, 0 = sharp corners
-    unsigned int dimension;               ///< 2 (plane strain) or 3 (extruded)
-    double       face_length;             ///< m, along the face (z), 3D only
-    Geometry::EndFaces end_faces;         ///< 3D only: plane strain or free
+    double       block_width;      ///< L (m), perpendicular to the face
+    double       block_height;     ///< H (m)
+    double       support_width;    ///< b (m), along the face
+    double       face_block_width; ///< m
+    double       base_thickness;   ///< m, the bedding layer below the blocks
+    double       corner_rounding_radius; ///< m, 0 = sharp corners
+    unsigned int dimension;              ///< 2 (plane strain) or 3 (extruded)
+    double       face_length;            ///< m, along the face (z), 3D only
+    Geometry::EndFaces end_faces;        ///< 3D only: plane strain or free
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -45,11 +44,12 @@ namespace FloorBlock::Parameters
   struct BeddingParameters
   {
     Geometry::BeddingShape shape;
-    Geometry::FloorUplift floor_uplift;
-    double       inclination; ///< rad, planar; positive when rising away from the face
-    double       curvature;   ///< k (m) in y = x^2/k, parabolic
-    bool         rigid_base;  ///< rigid half-plane instead of the elastic base
-    double       frame_dip;   ///< rad, dip of the frame's x axis below the horizontal
+    Geometry::FloorUplift  floor_uplift;
+    double
+      inclination;     ///< rad, planar; positive when rising away from the face
+    double curvature;  ///< k (m) in y = x^2/k, parabolic
+    bool   rigid_base; ///< rigid half-plane instead of the elastic base
+    double frame_dip;  ///< rad, dip of the frame's x axis below the horizontal
 
     /**
      * The bedding is the line y = 0 of the mesh (lifted reading, or a level
@@ -87,12 +87,12 @@ namespace FloorBlock::Parameters
   /** Subsection "Joints": vertical fractures and the bedding plane. */
   struct JointParameters
   {
-    double   bedding_friction_angle;  ///< phi_h (rad)
-    double   vertical_friction_angle; ///< phi_v (rad)
-    double   cohesion;                ///< Pa
-    double   tensile_strength;        ///< Pa
-    double   normal_stiffness;        ///< kn (Pa/m)
-    double   shear_stiffness;         ///< ks (Pa/m)
+    double                bedding_friction_angle;  ///< phi_h (rad)
+    double                vertical_friction_angle; ///< phi_v (rad)
+    double                cohesion;                ///< Pa
+    double                tensile_strength;        ///< Pa
+    double                normal_stiffness;        ///< kn (Pa/m)
+    double                shear_stiffness;         ///< ks (Pa/m)
     Contact::JointLawKind law;
 
     static void
@@ -104,8 +104,8 @@ namespace FloorBlock::Parameters
   /** How the base moves in the floor-uplift stage. */
   enum class UpliftMode
   {
-    vertical,           ///< translation straight up by the floor lift
-    dip_toward_face,    ///< translation along the bedding chord, toward the face
+    vertical,        ///< translation straight up by the floor lift
+    dip_toward_face, ///< translation along the bedding chord, toward the face
     dip_away_from_face, ///< translation along the bedding chord, away from it
     tilt,               ///< rotation about the free end; the face end rises
     parabola,           ///< bending u_y = lift (x / nL)^2, x from the face
@@ -116,16 +116,16 @@ namespace FloorBlock::Parameters
   /** Which way the support load pushes on an inclined block top. */
   enum class SupportLoadDirection
   {
-    vertical,     ///< straight down, as the closed forms' W_i + P_i
-    top_normal    ///< normal to the block top (a shield standing on it)
+    vertical,  ///< straight down, as the closed forms' W_i + P_i
+    top_normal ///< normal to the block top (a shield standing on it)
   };
 
   struct LoadingParameters
   {
-    UpliftMode uplift_mode;
+    UpliftMode           uplift_mode;
     SupportLoadDirection support_load_direction;
-    double gravity;      ///< m/s^2
-    double support_load; ///< N, total load of one powered support
+    double               gravity;      ///< m/s^2
+    double               support_load; ///< N, total load of one powered support
     /// Loaded blocks counted from the face (1 = next to the face block), as
     /// the user wrote them; Scene converts to the chapter's numbering.
     std::vector<unsigned int> loaded_blocks_from_face;
@@ -160,9 +160,9 @@ namespace FloorBlock::Parameters
 
   struct MeshParameters
   {
-    double corner_size;  ///< m, target element size at joint corners
-    double far_size;     ///< m, element size far from the corners
-    double growth_rate;  ///< size ratio between neighbouring elements, > 1
+    double corner_size; ///< m, target element size at joint corners
+    double far_size;    ///< m, element size far from the corners
+    double growth_rate; ///< size ratio between neighbouring elements, > 1
     bool   matching_joints;
     /**
      * deal.II refinements of the whole Gmsh mesh, each halving every cell
@@ -198,41 +198,42 @@ namespace FloorBlock::Parameters
   struct SolverParameters
   {
     /** The degree of a solve (1 when FE degree = auto). */
-    unsigned int       fe_degree;
+    unsigned int fe_degree;
     /** FE degree = auto: `run` races degrees 1 and 2 (degree_race.h). */
-    bool               choose_fe_degree;
-    unsigned int       n_gravity_steps;
-    bool               gravity_with_support_load;
-    unsigned int       n_support_steps;
-    unsigned int       n_uplift_steps;
+    bool                     choose_fe_degree;
+    unsigned int             n_gravity_steps;
+    bool                     gravity_with_support_load;
+    unsigned int             n_support_steps;
+    unsigned int             n_uplift_steps;
     Solver::LinearSolverKind linear_solver;
-    unsigned int       max_direct_dofs;
-    unsigned int       max_reuse_iterations; ///< GMRES on stored LU factors
+    unsigned int             max_direct_dofs;
+    unsigned int max_reuse_iterations; ///< GMRES on stored LU factors
     Solver::DirectSolverKind direct_solver;
-    double             newton_tolerance; ///< relative to the load norm
-    unsigned int       max_newton_iterations;
-    unsigned int       max_cutbacks;
-    double             averaging_length; ///< m, for the averaged peak stress
-    double             complementarity_factor;
+    double                   newton_tolerance; ///< relative to the load norm
+    unsigned int             max_newton_iterations;
+    unsigned int             max_cutbacks;
+    double averaging_length; ///< m, for the averaged peak stress
+    double complementarity_factor;
     /// Whether `run` solves further adaptive levels and reports the
     /// differences as the discretisation error estimate (accuracy_loop.h).
-    bool               estimate_error_by_refined_solve;
+    bool estimate_error_by_refined_solve;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
   };
-  /** Subsection "Verify", nested "Hertz": inputs of `floorblock verify hertz`. */
+  /** Subsection "Verify", nested "Hertz": inputs of `floorblock verify hertz`.
+   */
   struct VerifyParameters
   {
-    double       hertz_radius;         ///< R (m)
-    double       hertz_line_load;      ///< P (N/m)
-    double       hertz_youngs_modulus; ///< E of the cylinder (Pa)
-    double       hertz_poissons_ratio; ///< nu of the cylinder
+    double       hertz_radius;               ///< R (m)
+    double       hertz_line_load;            ///< P (N/m)
+    double       hertz_youngs_modulus;       ///< E of the cylinder (Pa)
+    double       hertz_poissons_ratio;       ///< nu of the cylinder
     unsigned int hertz_cells_per_half_width; ///< contact cell size a / N
-    double       patch_pressure;       ///< patch test pressure (Pa)
-    double       incline_margin;       ///< |tan(alpha)/mu - 1| either side
+    double       patch_pressure;             ///< patch test pressure (Pa)
+    double       incline_margin; ///< |tan(alpha)/mu - 1| either side
     double       two_blocks_lateral_pressure; ///< Pa
     unsigned int two_blocks_cells_per_metre;  ///< structured mesh density
     double       punch_pressure;              ///< on the block top (Pa)
@@ -265,14 +266,14 @@ namespace FloorBlock::Parameters
    */
   struct ModelParameters
   {
-    BlockModel       blocks;  ///< as written (auto stays automatic)
+    BlockModel       blocks; ///< as written (auto stays automatic)
     RequestedOutputs outputs;
     /// Trapezoid points per joint of the rigid-block model (>= 2).
-    unsigned int     rigid_points_per_joint;
+    unsigned int rigid_points_per_joint;
     /// The model that runs (never automatic once choose() has run).
-    BlockModel       chosen = BlockModel::elastic;
+    BlockModel chosen = BlockModel::elastic;
     /// Why that model runs, in words (echoed into fem.json).
-    std::string      choice_reason;
+    std::string choice_reason;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -289,7 +290,7 @@ namespace FloorBlock::Parameters
      */
     void
     choose(const BeddingParameters &bedding,
-           const JointParameters &  joints,
+           const JointParameters   &joints,
            const LoadingParameters &loading);
   };
 
@@ -300,7 +301,8 @@ namespace FloorBlock::Parameters
     unsigned int joint;
     /** Most zoom levels after the scene's mesh. */
     unsigned int max_zoom_levels;
-    /** Relative change between zoom levels at which the peak counts as converged. */
+    /** Relative change between zoom levels at which the peak counts as
+     * converged. */
     double converged_change;
     /** Relative change between zoom levels at which K1 counts as converged. */
     double intensity_change;

@@ -20,18 +20,23 @@ namespace FloorBlock::Pipeline
     /** A Mesh/Target figures entry: its fem.json key and its estimate. */
     struct TargetField
     {
-      TargetFigure                              figure;
-      const char                               *key;
+      TargetFigure        figure;
+      const char         *key;
       Output::FigureError Output::JointErrors::*error;
     };
 
     constexpr TargetField target_fields[] = {
-      {TargetFigure::normal_force, "normal_force_N_per_m",
+      {TargetFigure::normal_force,
+       "normal_force_N_per_m",
        &Output::JointErrors::normal_force},
-      {TargetFigure::contact_length, "contact_length_m",
+      {TargetFigure::contact_length,
+       "contact_length_m",
        &Output::JointErrors::contact_length},
-      {TargetFigure::sigma_max, "sigma_max_Pa", &Output::JointErrors::sigma_max},
-      {TargetFigure::sigma_max_averaged, "sigma_max_averaged_Pa",
+      {TargetFigure::sigma_max,
+       "sigma_max_Pa",
+       &Output::JointErrors::sigma_max},
+      {TargetFigure::sigma_max_averaged,
+       "sigma_max_averaged_Pa",
        &Output::JointErrors::sigma_max_averaged}};
 
     const TargetField &
@@ -53,7 +58,7 @@ namespace FloorBlock::Pipeline
                     const Output::ResultFolder           &folder)
     {
       Parameters::ScenarioParameters degree_2_scene = scene;
-      degree_2_scene.solver.fe_degree                = 2;
+      degree_2_scene.solver.fe_degree               = 2;
       TargetLoop                degree_1(scene, folder, folder);
       std::optional<TargetLoop> degree_2;
       const auto                degree_2_state = [&degree_2]() {
@@ -73,10 +78,10 @@ namespace FloorBlock::Pipeline
                              "degree = auto), the loop with less time spent "
                              "solving next"
                           << std::endl;
-                degree_2.emplace(
-                  degree_2_scene,
-                  Output::ResultFolder(folder.path_of("fe_degree_2")),
-                  folder);
+                degree_2.emplace(degree_2_scene,
+                                 Output::ResultFolder(
+                                   folder.path_of("fe_degree_2")),
+                                 folder);
               }
             degree_2->step();
           }
@@ -93,15 +98,17 @@ namespace FloorBlock::Pipeline
       else
         {
           if (won.met())
-            lost->abandon(fmt::format("FE degree {} met the target first",
-                                      winner));
+            lost->abandon(
+              fmt::format("FE degree {} met the target first", winner));
           choice = fmt::format(
             "auto: FE degrees 1 and 2 took turns; degree {} {} after {:.1f} "
             "s of its own solves (degree {}: {:.1f} s, {})",
             winner,
             won.met() ? "met the target first" :
                         "has the smaller error estimate, neither met it",
-            won.time_spent(), winner == 1 ? 2 : 1, lost->time_spent(),
+            won.time_spent(),
+            winner == 1 ? 2 : 1,
+            lost->time_spent(),
             lost->record().stop_reason);
         }
       std::cout << "accuracy: " << choice << std::endl;
@@ -135,10 +142,9 @@ namespace FloorBlock::Pipeline
       {
         const Output::FigureError &error = errors.*field_of(figure).error;
         const double               relative =
-          error.relative_error ? *error.relative_error :
-          error.absolute_error == 0. ?
-                                 0. :
-                                 std::numeric_limits<double>::infinity();
+          error.relative_error       ? *error.relative_error :
+                        error.absolute_error == 0. ? 0. :
+                                                     std::numeric_limits<double>::infinity();
         worst = std::max(worst, relative);
       }
     return worst;

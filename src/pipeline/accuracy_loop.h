@@ -33,9 +33,9 @@ namespace FloorBlock::Pipeline
    * "nothing") and as unbounded otherwise.
    */
   std::optional<double>
-  worst_target_error(const Output::FemErrorEstimate                &estimate,
-                     const std::string                             &joint,
-                     const std::vector<Parameters::TargetFigure>   &figures);
+  worst_target_error(const Output::FemErrorEstimate              &estimate,
+                     const std::string                           &joint,
+                     const std::vector<Parameters::TargetFigure> &figures);
 
   /**
    * @brief Accuracy as the input, the mesh as the output: solves the scene

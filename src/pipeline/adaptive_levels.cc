@@ -1,6 +1,6 @@
-#include <pipeline/adaptive_levels.h>
 #include <contact/contact_solver.h>
 #include <geometry/refinement_manifolds.h>
+#include <pipeline/adaptive_levels.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
@@ -66,10 +66,14 @@ namespace FloorBlock::Pipeline
       }
     // A zone end asks for a quarter of its segment (zone_end_refinement
     // = 4: two halvings); one more sweep lets the 2:1 grading follow.
-    constexpr unsigned int max_passes = 3;
+    constexpr unsigned int                 max_passes   = 3;
     const std::vector<Geometry::LocalSize> own_requests = requests;
-    return refine_and_solve(own_requests, Convergence::touching_cells_only,
-                            coarsen_fraction, max_passes, folder, write_vtu,
+    return refine_and_solve(own_requests,
+                            Convergence::touching_cells_only,
+                            coarsen_fraction,
+                            max_passes,
+                            folder,
+                            write_vtu,
                             extras);
   }
 
@@ -85,19 +89,18 @@ namespace FloorBlock::Pipeline
     // Each sweep halves a cell once: enough sweeps to go from the coarsest
     // cell to the smallest request.
     constexpr unsigned int max_passes = 40;
-    return refine_and_solve(toward, growth_rate, 0., max_passes, folder,
-                            write_vtu, extras);
+    return refine_and_solve(
+      toward, growth_rate, 0., max_passes, folder, write_vtu, extras);
   }
 
   FemOutcome
-  AdaptiveLevels::refine_and_solve(
-    const std::vector<Geometry::LocalSize> &with,
-    const double                            growth_rate,
-    const double                            coarsening,
-    const unsigned int                      max_passes,
-    const Output::ResultFolder             &folder,
-    const bool                              write_vtu,
-    const SolveExtras                      &extras)
+  AdaptiveLevels::refine_and_solve(const std::vector<Geometry::LocalSize> &with,
+                                   const double                growth_rate,
+                                   const double                coarsening,
+                                   const unsigned int          max_passes,
+                                   const Output::ResultFolder &folder,
+                                   const bool                  write_vtu,
+                                   const SolveExtras          &extras)
   {
     requests_used = with.size();
     dealii::Timer            timer;
@@ -139,7 +142,8 @@ namespace FloorBlock::Pipeline
         dealii::Timer timer;
         const auto    joint_targets = Convergence::joint_size_targets(
           outcome.result.increments.back().joints, refinement);
-        requests.insert(requests.end(), joint_targets.begin(),
+        requests.insert(requests.end(),
+                        joint_targets.begin(),
                         joint_targets.end());
         indicator_time += timer.wall_time();
       }

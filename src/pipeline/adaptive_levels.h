@@ -55,8 +55,8 @@ namespace FloorBlock::Pipeline
      */
     FemOutcome
     solve_next(const Output::ResultFolder &folder,
-               bool                         write_vtu,
-               const SolveExtras           &extras = {});
+               bool                        write_vtu,
+               const SolveExtras          &extras = {});
 
     /**
      * @brief Refines the last level's mesh toward @p toward (points and
@@ -119,17 +119,17 @@ namespace FloorBlock::Pipeline
                 bool                            write_vtu,
                 const SolveExtras              &extras);
 
-    const Parameters::ScenarioParameters         scene;
-    const Convergence::RefinementSettings        refinement;
-    const double                                 coarsen_fraction;
-    const Geometry::AssemblyDescription          description;
-    const std::vector<Convergence::JointSides>   joints;
-    dealii::Triangulation<2>                     triangulation;
-    unsigned int                                 level = 0;
-    std::vector<Geometry::LocalSize>             requests;
-    std::size_t                                  requests_used = 0;
-    dealii::Vector<float>                        kelly;
-    Convergence::MatchedRefinementSummary        refinement_done;
-    double                                       indicator_time = 0.;
+    const Parameters::ScenarioParameters       scene;
+    const Convergence::RefinementSettings      refinement;
+    const double                               coarsen_fraction;
+    const Geometry::AssemblyDescription        description;
+    const std::vector<Convergence::JointSides> joints;
+    dealii::Triangulation<2>                   triangulation;
+    unsigned int                               level = 0;
+    std::vector<Geometry::LocalSize>           requests;
+    std::size_t                                requests_used = 0;
+    dealii::Vector<float>                      kelly;
+    Convergence::MatchedRefinementSummary      refinement_done;
+    double                                     indicator_time = 0.;
   };
 } // namespace FloorBlock::Pipeline

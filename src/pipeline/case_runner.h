@@ -42,7 +42,7 @@ namespace FloorBlock::Pipeline
    */
   SweepProgress
   run_cases(const std::vector<SweepCase> &cases,
-            const Output::CaseStore &     store,
+            const Output::CaseStore      &store,
             const MPI_Comm                communicator,
-            std::ostream &                progress);
+            std::ostream                 &progress);
 } // namespace FloorBlock::Pipeline

@@ -13,13 +13,16 @@ namespace FloorBlock::Pipeline
                             scene.geometry.support_width,
                             scene.geometry.block_width,
                             scene.geometry.block_height};
-    comparison.final_joints = Compare::compare_vertical_joints(
-      outcome.result.increments.back(), closed_forms, comparison.constants);
+    comparison.final_joints =
+      Compare::compare_vertical_joints(outcome.result.increments.back(),
+                                       closed_forms,
+                                       comparison.constants);
     for (const auto &increment : outcome.result.increments)
       if (increment.stage == Loading::LoadStage::uplift)
         comparison.lift_history.push_back(
           {increment.stage_factor * scene.loading.floor_lift,
-           Compare::compare_vertical_joints(increment, closed_forms,
+           Compare::compare_vertical_joints(increment,
+                                            closed_forms,
                                             comparison.constants)
              .back()});
     return comparison;

@@ -1,11 +1,11 @@
-#include <pipeline/convergence_ladder.h>
-#include <pipeline/adaptive_levels.h>
-#include <pipeline/fem_pipeline.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
 #include <convergence/matched_refinement.h>
 #include <geometry/assembly_description.h>
 #include <geometry/refinement_manifolds.h>
+#include <pipeline/adaptive_levels.h>
+#include <pipeline/convergence_ladder.h>
+#include <pipeline/fem_pipeline.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
@@ -40,20 +40,21 @@ namespace FloorBlock::Pipeline
           record.joint_normal_forces[name.number - 1] = joint.normal_force;
           if (name.number == n_blocks)
             {
-              record.face_contact_length     = joint.closed_length;
-              record.face_sigma_max          = joint.peak_normal_stress;
-              record.face_sigma_max_averaged = joint.averaged_peak_normal_stress;
+              record.face_contact_length = joint.closed_length;
+              record.face_sigma_max      = joint.peak_normal_stress;
+              record.face_sigma_max_averaged =
+                joint.averaged_peak_normal_stress;
             }
         }
     }
 
     void
-    record_outcome(const FemOutcome &outcome,
+    record_outcome(const FemOutcome  &outcome,
                    const unsigned int n_blocks,
-                   LevelRecord      &record)
+                   LevelRecord       &record)
     {
-      record.status      = outcome.report.status;
-      record.status_text = outcome.report.status_text;
+      record.status       = outcome.report.status;
+      record.status_text  = outcome.report.status_text;
       record.n_cells      = outcome.mesh.n_cells;
       record.n_increments = outcome.result.increments.size();
       if (record.n_dofs == 0) // no solver was inspected
@@ -90,10 +91,10 @@ namespace FloorBlock::Pipeline
      * ladders the indicators for the next level (@p next).
      */
     LevelRecord
-    solve_level(const Parameters::ScenarioParameters &scene,
-                const RefinementMode                  mode,
-                const unsigned int                    level,
-                const std::size_t                     n_local_sizes,
+    solve_level(const Parameters::ScenarioParameters  &scene,
+                const RefinementMode                   mode,
+                const unsigned int                     level,
+                const std::size_t                      n_local_sizes,
                 const Convergence::RefinementSettings &refinement,
                 const Output::ResultFolder            &folder,
                 const LevelSolve                      &solve,
@@ -101,13 +102,13 @@ namespace FloorBlock::Pipeline
     {
       dealii::Timer timer;
       LevelRecord   record;
-      record.mode          = ladder_name(mode, scene.solver.fe_degree);
-      record.level         = level;
-      record.corner_size   = scene.mesh.corner_size;
-      record.far_size      = scene.mesh.far_size;
-      record.growth_rate   = scene.mesh.growth_rate;
+      record.mode               = ladder_name(mode, scene.solver.fe_degree);
+      record.level              = level;
+      record.corner_size        = scene.mesh.corner_size;
+      record.far_size           = scene.mesh.far_size;
+      record.growth_rate        = scene.mesh.growth_rate;
       record.global_refinements = Scene::global_refinements(scene);
-      record.n_local_sizes = n_local_sizes;
+      record.n_local_sizes      = n_local_sizes;
 
       SolveExtras extras;
       double      indicator_time = 0.;
@@ -121,23 +122,26 @@ namespace FloorBlock::Pipeline
         next->kelly =
           Convergence::kelly_indicator(solver.space(), solver.solution());
         next->requests = Convergence::bulk_size_targets(
-          solver.space().dof_handler().get_triangulation(), next->kelly,
+          solver.space().dof_handler().get_triangulation(),
+          next->kelly,
           refinement);
         indicator_time = indicator_timer.wall_time();
       };
       try
         {
           const FemOutcome outcome =
-            solve(extras, Output::ResultFolder(folder.path_of(
-                            record.mode + "/level_" + std::to_string(level))));
+            solve(extras,
+                  Output::ResultFolder(folder.path_of(record.mode + "/level_" +
+                                                      std::to_string(level))));
           record_outcome(outcome, scene.geometry.n_blocks, record);
           if (next && !outcome.result.increments.empty())
             {
               dealii::Timer indicator_timer;
-              const auto joint_targets = Convergence::joint_size_targets(
+              const auto    joint_targets = Convergence::joint_size_targets(
                 outcome.result.increments.back().joints, refinement);
               next->requests.insert(next->requests.end(),
-                                    joint_targets.begin(), joint_targets.end());
+                                    joint_targets.begin(),
+                                    joint_targets.end());
               indicator_time += indicator_timer.wall_time();
             }
           if (next)
@@ -161,9 +165,13 @@ namespace FloorBlock::Pipeline
     {
       return fmt::format("converge: {} level {}: {} cells, {} DoFs, {} "
                          "Newton iterations, {:.1f} s, {}{}",
-                         record.mode, record.level, record.n_cells,
-                         record.n_dofs, record.newton_iterations,
-                         record.wall_time, record.status,
+                         record.mode,
+                         record.level,
+                         record.n_cells,
+                         record.n_dofs,
+                         record.newton_iterations,
+                         record.wall_time,
+                         record.status,
                          record.converged() ? "" :
                                               " (" + record.status_text + ")");
     }
@@ -211,9 +219,9 @@ namespace FloorBlock::Pipeline
     class LadderLog
     {
     public:
-      LadderLog(const RefinementMode                mode,
-                const LevelCallback                &after_level,
-                const Convergence::LadderBudget    &budget)
+      LadderLog(const RefinementMode             mode,
+                const LevelCallback             &after_level,
+                const Convergence::LadderBudget &budget)
         : cumulative(mode != RefinementMode::uniform)
         , after_level(after_level)
         , budget(budget)
@@ -227,13 +235,13 @@ namespace FloorBlock::Pipeline
       can_afford_next_level()
       {
         const auto forecast = Convergence::forecast_next_level(levels);
-        const auto reason   = Convergence::budget_stop_reason(
-          budget, timer.wall_time(), forecast);
+        const auto reason =
+          Convergence::budget_stop_reason(budget, timer.wall_time(), forecast);
         if (reason)
           {
             stopped_because = "stopped before level " +
-                              std::to_string(levels.back().level + 1) +
-                              ": " + *reason;
+                              std::to_string(levels.back().level + 1) + ": " +
+                              *reason;
             std::cout << "converge: " << levels.back().mode << " ladder "
                       << stopped_because << std::endl;
             return false;
@@ -243,12 +251,15 @@ namespace FloorBlock::Pipeline
             fmt::format("{:.0f} s of the budget left",
                         budget.seconds - timer.wall_time()) :
             std::string("no time budget");
-        std::cout << fmt::format(
-                       "converge: {} level {} next: about {:.0f} DoFs and "
-                       "{:.0f} s ({})",
-                       levels.back().mode, levels.back().level + 1,
-                       forecast.n_dofs, forecast.wall_time, left)
-                  << std::endl;
+        std::cout
+          << fmt::format("converge: {} level {} next: about {:.0f} DoFs and "
+                         "{:.0f} s ({})",
+                         levels.back().mode,
+                         levels.back().level + 1,
+                         forecast.n_dofs,
+                         forecast.wall_time,
+                         left)
+          << std::endl;
         return true;
       }
 
@@ -287,12 +298,12 @@ namespace FloorBlock::Pipeline
       std::vector<LevelRecord> levels;
 
     private:
-      const bool                       cumulative;
-      const LevelCallback             &after_level;
-      const Convergence::LadderBudget  budget;
-      dealii::Timer                    timer;
-      double                           cumulative_time = 0.;
-      std::string                      stopped_because;
+      const bool                      cumulative;
+      const LevelCallback            &after_level;
+      const Convergence::LadderBudget budget;
+      dealii::Timer                   timer;
+      double                          cumulative_time = 0.;
+      std::string                     stopped_because;
     };
 
     LadderRun
@@ -310,7 +321,12 @@ namespace FloorBlock::Pipeline
             break;
           const auto level_scene = uniform_level_scene(scene, level);
           log.add(solve_level(
-            level_scene, RefinementMode::uniform, level, 0, refinement, folder,
+            level_scene,
+            RefinementMode::uniform,
+            level,
+            0,
+            refinement,
+            folder,
             [&](const SolveExtras &extras, const Output::ResultFolder &where) {
               return solve_scene(level_scene, where, false, extras);
             },
@@ -336,16 +352,22 @@ namespace FloorBlock::Pipeline
             break;
           Indicators next;
           log.add(solve_level(
-            scene, RefinementMode::remesh, level, local_sizes.size(),
-            refinement, folder,
+            scene,
+            RefinementMode::remesh,
+            level,
+            local_sizes.size(),
+            refinement,
+            folder,
             [&](SolveExtras extras, const Output::ResultFolder &where) {
               extras.local_sizes = local_sizes;
               return solve_scene(scene, where, false, extras);
             },
             &next));
-          if (level + 1 < n_levels && !log.can_refine_from(!next.requests.empty()))
+          if (level + 1 < n_levels &&
+              !log.can_refine_from(!next.requests.empty()))
             break;
-          Convergence::merge_size_requests(local_sizes, next.requests,
+          Convergence::merge_size_requests(local_sizes,
+                                           next.requests,
                                            scene.mesh.growth_rate);
         }
       return log.result();
@@ -371,14 +393,19 @@ namespace FloorBlock::Pipeline
           if (level > 0 && !log.can_afford_next_level())
             break;
           LevelRecord record = solve_level(
-            scene, RefinementMode::adaptive, level, 0, refinement, folder,
+            scene,
+            RefinementMode::adaptive,
+            level,
+            0,
+            refinement,
+            folder,
             [&](const SolveExtras &extras, const Output::ResultFolder &where) {
               return levels.solve_next(where, false, extras);
             },
             nullptr);
           record.n_local_sizes       = levels.n_requests_used();
           record.n_refinement_sweeps = levels.last_refinement().n_passes;
-          record.n_cells_coarsened   = levels.last_refinement().n_cells_coarsened;
+          record.n_cells_coarsened = levels.last_refinement().n_cells_coarsened;
           record.stage_wall_times["indicator"] = levels.last_indicator_time();
           log.add(record);
           if (level + 1 < n_levels && !log.can_refine_from(levels.can_refine()))
@@ -402,15 +429,19 @@ namespace FloorBlock::Pipeline
     switch (mode)
       {
         case RefinementMode::uniform:
-          return run_uniform_ladder(scene, n_levels, refinement, folder,
-                                    after_level, budget);
+          return run_uniform_ladder(
+            scene, n_levels, refinement, folder, after_level, budget);
         case RefinementMode::remesh:
-          return run_remesh_ladder(scene, n_levels, refinement, folder,
-                                   after_level, budget);
+          return run_remesh_ladder(
+            scene, n_levels, refinement, folder, after_level, budget);
         case RefinementMode::adaptive:
         default:
-          return run_adaptive_ladder(scene, n_levels, refinement,
-                                     coarsen_fraction, folder, after_level,
+          return run_adaptive_ladder(scene,
+                                     n_levels,
+                                     refinement,
+                                     coarsen_fraction,
+                                     folder,
+                                     after_level,
                                      budget);
       }
   }

@@ -68,7 +68,8 @@ namespace FloorBlock::Pipeline
   struct LadderRun
   {
     std::vector<Convergence::LevelRecord> levels;
-    /** Empty if every requested level ran (or the ladder had nothing to refine from). */
+    /** Empty if every requested level ran (or the ladder had nothing to refine
+     * from). */
     std::string stopped_because;
   };
 
@@ -85,12 +86,12 @@ namespace FloorBlock::Pipeline
    * @p budget (the time counted from this call), saying so.
    */
   LadderRun
-  run_ladder(const Parameters::ScenarioParameters   &scene,
-             const RefinementMode                    mode,
-             const unsigned int                      n_levels,
-             const Convergence::RefinementSettings  &refinement,
-             const double                            coarsen_fraction,
-             const Output::ResultFolder             &folder,
-             const LevelCallback                    &after_level,
-             const Convergence::LadderBudget        &budget);
+  run_ladder(const Parameters::ScenarioParameters  &scene,
+             const RefinementMode                   mode,
+             const unsigned int                     n_levels,
+             const Convergence::RefinementSettings &refinement,
+             const double                           coarsen_fraction,
+             const Output::ResultFolder            &folder,
+             const LevelCallback                   &after_level,
+             const Convergence::LadderBudget       &budget);
 } // namespace FloorBlock::Pipeline

@@ -13,8 +13,8 @@ namespace FloorBlock::Pipeline
   namespace
   {
     /// The quantities whose equal-error cost decides the adaptive target.
-    const std::vector<std::string> target_quantities = {
-      "contact_length_face", "sigma_max_averaged_face"};
+    const std::vector<std::string> target_quantities =
+      {"contact_length_face", "sigma_max_averaged_face"};
   } // namespace
 
   std::vector<RefinementMode>
@@ -56,10 +56,11 @@ namespace FloorBlock::Pipeline
     for (const auto &comparison : comparisons)
       {
         if (comparison.adaptive_mode != adaptive_mode ||
-            std::find(target_quantities.begin(), target_quantities.end(),
+            std::find(target_quantities.begin(),
+                      target_quantities.end(),
                       comparison.quantity) == target_quantities.end())
           continue;
-        evaluated = true;
+        evaluated        = true;
         const auto level = [](const std::optional<unsigned int> &value) {
           return value ? std::to_string(*value) : std::string("never");
         };
@@ -67,13 +68,15 @@ namespace FloorBlock::Pipeline
                         *comparison.dofs_ratio <= target_dofs_ratio &&
                         *comparison.cost_ratio < target_cost_ratio;
         met = met && ok;
-        text += fmt::format(
-          "{}: uniform level {}, {} level {}", comparison.quantity,
-          level(comparison.uniform_level), comparison.adaptive_mode,
-          level(comparison.adaptive_level));
+        text += fmt::format("{}: uniform level {}, {} level {}",
+                            comparison.quantity,
+                            level(comparison.uniform_level),
+                            comparison.adaptive_mode,
+                            level(comparison.adaptive_level));
         if (comparison.dofs_ratio && comparison.cost_ratio)
           text += fmt::format(": DoFs x{:.3f}, time x{:.3f}{}",
-                              *comparison.dofs_ratio, *comparison.cost_ratio,
+                              *comparison.dofs_ratio,
+                              *comparison.cost_ratio,
                               comparison.ratios_are_upper_bounds ?
                                 " (upper bounds: uniform never reaches it)" :
                                 "");
@@ -83,10 +86,12 @@ namespace FloorBlock::Pipeline
         text += ok ? " (met); " : " (missed); ";
       }
     if (!evaluated)
-      return {false, false,
+      return {false,
+              false,
               "needs the uniform and the " + adaptive_mode +
                 " ladder (--mode both or all)",
-              target_dofs_ratio, target_cost_ratio};
+              target_dofs_ratio,
+              target_cost_ratio};
     return {true, met, text, target_dofs_ratio, target_cost_ratio};
   }
   std::string
@@ -109,7 +114,8 @@ namespace FloorBlock::Pipeline
         if (comparison.dofs_ratio && comparison.cost_ratio)
           text += fmt::format(
             " (degree 2: DoFs x{:.2f}, time x{:.2f}{}; faster: degree {})",
-            *comparison.dofs_ratio, *comparison.cost_ratio,
+            *comparison.dofs_ratio,
+            *comparison.cost_ratio,
             comparison.ratios_are_upper_bounds ? ", upper bounds" : "",
             *comparison.cost_ratio < 1. ? 2 : 1);
         else

@@ -1,11 +1,11 @@
-#include <pipeline/deformed_view.h>
 #include <output/deformed_picture.h>
+#include <pipeline/deformed_view.h>
 
 namespace FloorBlock::Pipeline
 {
   void
   write_deformed_view(const Contact::ContactSolver<2> &solver,
-                      const std::string            &png_path)
+                      const std::string               &png_path)
   {
     const auto &nodes     = solver.contact_nodes();
     const auto  responses = solver.responses_at_solution();
@@ -14,7 +14,8 @@ namespace FloorBlock::Pipeline
     std::vector<Output::PictureMarker> markers;
     markers.reserve(nodes.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)
-      markers.push_back({nodes[p].position, Contact::state_name(responses[p].state)});
+      markers.push_back(
+        {nodes[p].position, Contact::state_name(responses[p].state)});
     Output::write_deformed_picture(solver.space().dof_handler(),
                                    solver.solution(),
                                    markers,

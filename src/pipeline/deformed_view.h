@@ -14,5 +14,5 @@ namespace FloorBlock::Pipeline
    */
   void
   write_deformed_view(const Contact::ContactSolver<2> &solver,
-                      const std::string            &png_path);
+                      const std::string               &png_path);
 } // namespace FloorBlock::Pipeline

@@ -10,11 +10,11 @@ namespace FloorBlock::Pipeline
    */
   struct RacerState
   {
-    bool   joined   = false; ///< the loop has been started
-    bool   finished = false; ///< met the target, or stopped without
-    bool   met      = false;
+    bool joined   = false; ///< the loop has been started
+    bool finished = false; ///< met the target, or stopped without
+    bool met      = false;
     /** At least one level was checked (the loop has an estimate). */
-    bool   checked  = false;
+    bool checked = false;
     /** A checked pair met the target; the next level is to confirm it. */
     bool   confirming = false;
     double time_spent = 0.; ///< s of the loop's own solves

@@ -11,11 +11,11 @@ namespace FloorBlock::Pipeline
 {
   Geometry::MeshStatistics
   distribute_swept_mesh(
-    const Parameters::ScenarioParameters          &scene,
-    const Output::ResultFolder                    &folder,
+    const Parameters::ScenarioParameters                 &scene,
+    const Output::ResultFolder                           &folder,
     dealii::parallel::fullydistributed::Triangulation<3> &triangulation)
   {
-    const MPI_Comm communicator = triangulation.get_communicator();
+    const MPI_Comm     communicator = triangulation.get_communicator();
     const unsigned int n_processes =
       dealii::Utilities::MPI::n_mpi_processes(communicator);
     Geometry::MeshStatistics mesh;
@@ -41,10 +41,10 @@ namespace FloorBlock::Pipeline
                                static_cast<double>(mesh.n_bodies),
                                static_cast<double>(mesh.n_matched_pairs),
                                mesh.wall_time};
-    packed = dealii::Utilities::MPI::broadcast(communicator, packed, 0);
-    mesh.n_cells         = static_cast<std::size_t>(packed[0]);
-    mesh.n_nodes         = static_cast<std::size_t>(packed[1]);
-    mesh.n_bodies        = static_cast<unsigned int>(packed[2]);
+    packed        = dealii::Utilities::MPI::broadcast(communicator, packed, 0);
+    mesh.n_cells  = static_cast<std::size_t>(packed[0]);
+    mesh.n_nodes  = static_cast<std::size_t>(packed[1]);
+    mesh.n_bodies = static_cast<unsigned int>(packed[2]);
     mesh.n_matched_pairs = static_cast<unsigned int>(packed[3]);
     mesh.wall_time       = packed[4];
     return mesh;

@@ -21,7 +21,7 @@ namespace FloorBlock::Pipeline
    */
   Geometry::MeshStatistics
   distribute_swept_mesh(
-    const Parameters::ScenarioParameters          &scene,
-    const Output::ResultFolder                    &folder,
+    const Parameters::ScenarioParameters                 &scene,
+    const Output::ResultFolder                           &folder,
     dealii::parallel::fullydistributed::Triangulation<3> &triangulation);
 } // namespace FloorBlock::Pipeline

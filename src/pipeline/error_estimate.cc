@@ -13,7 +13,7 @@ namespace FloorBlock::Pipeline
 {
   namespace
   {
-    using Figure = double Contact::JointReport::*;
+    using Figure = double             Contact::JointReport::*;
     using Error  = Output::FigureError Output::JointErrors::*;
 
     /** A figure of JointReport and where its estimate goes. */
@@ -99,11 +99,11 @@ namespace FloorBlock::Pipeline
           "the refined solve did not converge: " + fine.report.status_text;
         return estimate;
       }
-    estimate.available      = true;
-    estimate.refined_n_dofs = fine.result.n_dofs;
-    estimate.refined_status = fine.report.status;
-    const auto coarse_joints   = final_joints(coarse);
-    const auto fine_joints     = final_joints(fine);
+    estimate.available        = true;
+    estimate.refined_n_dofs   = fine.result.n_dofs;
+    estimate.refined_status   = fine.report.status;
+    const auto  coarse_joints = final_joints(coarse);
+    const auto  fine_joints   = final_joints(fine);
     const auto &reported_joints =
       reported == Output::ReportedSolve::coarse ? coarse_joints : fine_joints;
     for (std::size_t k = 0; k < coarse_joints.size() && k < fine_joints.size();
@@ -118,11 +118,11 @@ namespace FloorBlock::Pipeline
               factor * std::abs(coarse_value - fine_value) +
               (own_uncertainty ? reported_joints[k].*own_uncertainty : 0.);
             Output::FigureError &entry = errors.*error;
-            entry.value          = reported_joints[k].*figure;
-            entry.refined_value  = fine_value;
-            entry.absolute_error = estimate;
-            entry.relative_error = relative_to(estimate, fine_value);
-            entry.coarse_value   = coarse_value;
+            entry.value                = reported_joints[k].*figure;
+            entry.refined_value        = fine_value;
+            entry.absolute_error       = estimate;
+            entry.relative_error       = relative_to(estimate, fine_value);
+            entry.coarse_value         = coarse_value;
           }
       }
     return estimate;
@@ -153,12 +153,13 @@ namespace FloorBlock::Pipeline
           for (const auto &[figure, error, own_uncertainty] : estimated_figures)
             {
               Output::FigureError &entry = errors->second.*error;
-              const double least = widening(entry, joint.*figure);
+              const double         least = widening(entry, joint.*figure);
               if (least > entry.absolute_error)
                 {
                   entry.absolute_error = least;
-                  entry.relative_error = relative_to(least, entry.refined_value);
-                  widened              = true;
+                  entry.relative_error =
+                    relative_to(least, entry.refined_value);
+                  widened = true;
                 }
             }
         }
@@ -177,10 +178,10 @@ namespace FloorBlock::Pipeline
       if (!(step * check < 0.))
         return 0.; // monotone (or a zero step): the pair's estimate holds
       entry.oscillating = true;
-      return std::max({previous_value, entry.coarse_value,
-                       entry.refined_value}) -
-             std::min({previous_value, entry.coarse_value,
-                       entry.refined_value});
+      return std::max(
+               {previous_value, entry.coarse_value, entry.refined_value}) -
+             std::min(
+               {previous_value, entry.coarse_value, entry.refined_value});
     };
     if (widen_against(estimate, previous, range_if_reversed))
       estimate.method += "; where the check reversed the previous level's "
@@ -211,8 +212,9 @@ namespace FloorBlock::Pipeline
   {
     if (!scene.solver.estimate_error_by_refined_solve || !coarse.converged)
       return std::nullopt;
-    return refined_solve_error(
-      coarse, solve_scene(refined_scene(scene),
-                          Output::ResultFolder(folder.path_of("refined"))));
+    return refined_solve_error(coarse,
+                               solve_scene(refined_scene(scene),
+                                           Output::ResultFolder(
+                                             folder.path_of("refined"))));
   }
 } // namespace FloorBlock::Pipeline

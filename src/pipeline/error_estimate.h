@@ -17,10 +17,10 @@ namespace FloorBlock::Pipeline
    * contact length and the peak stresses.
    */
   Output::FemErrorEstimate
-  refined_solve_error(const FemOutcome   &coarse,
-                      const FemOutcome   &fine,
-                      Output::ReportedSolve reported =
-                        Output::ReportedSolve::coarse);
+  refined_solve_error(
+    const FemOutcome     &coarse,
+    const FemOutcome     &fine,
+    Output::ReportedSolve reported = Output::ReportedSolve::coarse);
 
   /**
    * @brief Guards @p estimate (of a level and its check) against a check

@@ -1,18 +1,19 @@
-#include <pipeline/fem_pipeline.h>
-#include <pipeline/deformed_view.h>
-#include <pipeline/distributed_swept_mesh.h>
-#include <pipeline/fem_report_builder.h>
-#include <pipeline/rigid_pipeline.h>
 #include <common/atomic_file.h>
+#include <common/input_error.h>
 #include <common/units.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
 #include <contact/joint_report.h>
-#include <output/contact_area_picture.h>
-#include <common/input_error.h>
+#include <fem/surface_load.h>
 #include <geometry/extruded_assembly.h>
 #include <geometry/refinement_manifolds.h>
 #include <geometry/triangulation_reader.h>
+#include <output/contact_area_picture.h>
+#include <pipeline/deformed_view.h>
+#include <pipeline/distributed_swept_mesh.h>
+#include <pipeline/fem_pipeline.h>
+#include <pipeline/fem_report_builder.h>
+#include <pipeline/rigid_pipeline.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/contact_zone_sizing.h>
@@ -21,7 +22,6 @@
 #include <scene/rigid_inputs.h>
 #include <scene/support_footprint.h>
 #include <scene/swept_contact_problem.h>
-#include <fem/surface_load.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -59,8 +59,8 @@ namespace FloorBlock::Pipeline
      * converges, so that answer needs a warning.
      */
     Output::OverlapCheck
-    overlap_check(const Contact::SolveResult            &result,
-                  const Parameters::ScenarioParameters  &scene)
+    overlap_check(const Contact::SolveResult           &result,
+                  const Parameters::ScenarioParameters &scene)
     {
       constexpr double relative_limit = 0.05;
       const double     limit =
@@ -75,15 +75,16 @@ namespace FloorBlock::Pipeline
               limit,
               large,
               large ?
-                 fmt::format("the joint sides overlap by up to {:.3g} m, "
-                             "more than 5 % of the smaller block side "
-                             "({:.3g} m): Joints/Normal stiffness is too soft "
-                             "for these loads, and the small-strain contact "
-                             "answer is not physical",
-                             overlap, limit) :
-                 fmt::format("largest overlap {:.3g} m, within 5 % of the "
-                             "smaller block side",
-                             overlap)};
+                fmt::format("the joint sides overlap by up to {:.3g} m, "
+                            "more than 5 % of the smaller block side "
+                            "({:.3g} m): Joints/Normal stiffness is too soft "
+                            "for these loads, and the small-strain contact "
+                            "answer is not physical",
+                            overlap,
+                            limit) :
+                fmt::format("largest overlap {:.3g} m, within 5 % of the "
+                            "smaller block side",
+                            overlap)};
     }
 
     /**
@@ -95,13 +96,14 @@ namespace FloorBlock::Pipeline
     template <int dim>
     FemOutcome
     solve_on_mesh(
-      const Parameters::ScenarioParameters                       &scene,
-      const dealii::Triangulation<dim>                           &triangulation,
-      const Contact::ContactProblem<dim>                         &problem,
-      const Geometry::MeshStatistics                             &mesh,
-      const Output::ResultFolder                                 &folder,
-      const bool                                                  write_vtu,
-      const std::function<void(const Contact::ContactSolver<dim> &)> &after_solve,
+      const Parameters::ScenarioParameters &scene,
+      const dealii::Triangulation<dim>     &triangulation,
+      const Contact::ContactProblem<dim>   &problem,
+      const Geometry::MeshStatistics       &mesh,
+      const Output::ResultFolder           &folder,
+      const bool                            write_vtu,
+      const std::function<void(const Contact::ContactSolver<dim> &)>
+                                                    &after_solve,
       const std::optional<Output::SweptSupportLoad> &support_load = {})
     {
       FemOutcome outcome;
@@ -122,15 +124,22 @@ namespace FloorBlock::Pipeline
         {
           status_text    = failure_text(failure);
           failure_record = Output::SolveFailureRecord{
-            scene.solver.max_cutbacks, failure.attempts,
+            scene.solver.max_cutbacks,
+            failure.attempts,
             failure.partial_result.n_failed_newton_iterations};
           outcome.result = failure.partial_result;
         }
       after_solve(solver);
 
-      outcome.report = make_fem_report(
-        outcome.result, scene, "elastic FEM", outcome.converged, status_text,
-        failure_record ? failure_record->cutbacks_before_failure : 0);
+      outcome.report =
+        make_fem_report(outcome.result,
+                        scene,
+                        "elastic FEM",
+                        outcome.converged,
+                        status_text,
+                        failure_record ?
+                          failure_record->cutbacks_before_failure :
+                          0);
       outcome.report.failure       = failure_record;
       outcome.report.joint_overlap = overlap_check(outcome.result, scene);
       outcome.report.mesh          = outcome.mesh;
@@ -144,7 +153,7 @@ namespace FloorBlock::Pipeline
      * the faces that carry them, along the vertical, at full load.
      */
     Output::SweptSupportLoad
-    swept_support_load(const Parameters::ScenarioParameters          &scene,
+    swept_support_load(const Parameters::ScenarioParameters         &scene,
                        const std::optional<Scene::SupportFootprint> &footprint,
                        const dealii::Triangulation<3>               &solid,
                        const Fem::ElasticModel<3>                   &model)
@@ -191,9 +200,9 @@ namespace FloorBlock::Pipeline
 
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
-              const Output::ResultFolder &          folder,
+              const Output::ResultFolder           &folder,
               const bool                            write_vtu,
-              const SolveExtras &                   extras)
+              const SolveExtras                    &extras)
   {
     if (scene.geometry.dimension == 3)
       {
@@ -207,8 +216,8 @@ namespace FloorBlock::Pipeline
     dealii::Triangulation<2>       triangulation;
     const Geometry::MeshStatistics mesh =
       mesh_scene(scene, folder, extras.local_sizes, triangulation);
-    return solve_meshed_scene(scene, triangulation, mesh, folder, write_vtu,
-                              extras);
+    return solve_meshed_scene(
+      scene, triangulation, mesh, folder, write_vtu, extras);
   }
 
   Geometry::MeshStatistics
@@ -230,7 +239,8 @@ namespace FloorBlock::Pipeline
     if (const unsigned int n_refinements = Scene::global_refinements(scene))
       {
         dealii::Timer timer;
-        Geometry::refine_globally_on_curves(description, n_refinements,
+        Geometry::refine_globally_on_curves(description,
+                                            n_refinements,
                                             triangulation);
         write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
         mesh.wall_time += timer.wall_time();
@@ -287,7 +297,8 @@ namespace FloorBlock::Pipeline
   check_swept_scene(const Parameters::ScenarioParameters &scene)
   {
     if (Scene::uses_rigid_blocks(scene))
-      throw InputError("Model/Blocks", "rigid (chosen or by auto)",
+      throw InputError("Model/Blocks",
+                       "rigid (chosen or by auto)",
                        "elastic when Geometry/Dimension = 3: the rigid-block "
                        "model is 2D");
     // deal.II extrudes coarse meshes only, and refining the swept mesh
@@ -297,7 +308,8 @@ namespace FloorBlock::Pipeline
     // exact law's multipliers and its LU factors live on one process.
     if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
         scene.joints.law == Contact::JointLawKind::rigid)
-      throw InputError("Joints/Law", "rigid",
+      throw InputError("Joints/Law",
+                       "rigid",
                        "compliant when a 3D scene runs on several processes "
                        "(mpirun -np " +
                          std::to_string(dealii::Utilities::MPI::n_mpi_processes(
@@ -318,9 +330,9 @@ namespace FloorBlock::Pipeline
                    dealii::Triangulation<3>             &solid)
   {
     check_swept_scene(scene);
-    dealii::Triangulation<2>       section;
-    Geometry::MeshStatistics       mesh = mesh_scene(scene, folder, {}, section);
-    dealii::Timer                  timer;
+    dealii::Triangulation<2> section;
+    Geometry::MeshStatistics mesh = mesh_scene(scene, folder, {}, section);
+    dealii::Timer            timer;
     Geometry::extrude_assembly(section, Scene::swept_slices(scene), solid);
     Scene::tag_support_footprint(scene, solid);
     write_solved_mesh(solid, folder.path_of("mesh.msh"), mesh);
@@ -335,17 +347,24 @@ namespace FloorBlock::Pipeline
                     const bool                            write_vtu)
   {
     check_swept_scene(scene);
-    Contact::ContactProblem<3> problem = Scene::swept_contact_problem(
-      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
-      scene.geometry.end_faces);
+    Contact::ContactProblem<3> problem =
+      Scene::swept_contact_problem(Scene::make_floor_contact_problem(
+                                     Scene::floor_problem_settings(scene)),
+                                   scene.geometry.end_faces);
     const auto footprint = Scene::support_footprint(scene);
     if (footprint)
-      Scene::load_support_footprint(*footprint, scene.geometry.support_width,
+      Scene::load_support_footprint(*footprint,
+                                    scene.geometry.support_width,
                                     problem);
-    const auto solve = [&](const dealii::Triangulation<3>  &solid,
+    const auto solve = [&](const dealii::Triangulation<3> &solid,
                            const Geometry::MeshStatistics &mesh) {
       const FemOutcome outcome = solve_on_mesh<3>(
-        scene, solid, problem, mesh, folder, write_vtu,
+        scene,
+        solid,
+        problem,
+        mesh,
+        folder,
+        write_vtu,
         [](const Contact::ContactSolver<3> &) {},
         swept_support_load(scene, footprint, solid, problem.model));
       write_face_contact_area(outcome, scene, folder);
@@ -371,8 +390,9 @@ namespace FloorBlock::Pipeline
   {
     folder.write_json("fem.json",
                       Output::fem_json(outcome.result, outcome.report));
-    folder.write("joints.csv", Output::joints_csv(
-                                 outcome.result, outcome.report.support_width));
+    folder.write("joints.csv",
+                 Output::joints_csv(outcome.result,
+                                    outcome.report.support_width));
     folder.write("joint_profiles.csv",
                  Output::joint_profiles_csv(outcome.result));
   }

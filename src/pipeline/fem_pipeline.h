@@ -55,9 +55,9 @@ namespace FloorBlock::Pipeline
    */
   FemOutcome
   solve_scene(const Parameters::ScenarioParameters &scene,
-              const Output::ResultFolder &          folder,
+              const Output::ResultFolder           &folder,
               const bool                            write_vtu = true,
-              const SolveExtras &                   extras    = {});
+              const SolveExtras                    &extras    = {});
 
   /**
    * @brief The Gmsh mesh of the scene (with @p local_sizes, adaptive
@@ -136,5 +136,6 @@ namespace FloorBlock::Pipeline
 
   /** @brief fem.json and joints.csv of a solve, into @p folder. */
   void
-  write_fem_files(const FemOutcome &outcome, const Output::ResultFolder &folder);
+  write_fem_files(const FemOutcome           &outcome,
+                  const Output::ResultFolder &folder);
 } // namespace FloorBlock::Pipeline

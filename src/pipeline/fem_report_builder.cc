@@ -11,9 +11,9 @@ namespace FloorBlock::Pipeline
   {
     /** Status and text of the worst force balance, given what was left out. */
     void
-    describe_balance(const std::size_t           n_increments,
-                     const unsigned int          n_unloaded,
-                     const double                largest_round_off_force,
+    describe_balance(const std::size_t            n_increments,
+                     const unsigned int           n_unloaded,
+                     const double                 largest_round_off_force,
                      Output::ForceBalanceSummary &balance)
     {
       balance.status      = "ok";
@@ -50,17 +50,17 @@ namespace FloorBlock::Pipeline
                   const std::string                    &model,
                   const bool                            converged,
                   const std::string                    &status_text,
-                  const unsigned int cutbacks_before_failure)
+                  const unsigned int                    cutbacks_before_failure)
   {
     Output::FemReport report;
-    report.model         = model;
-    report.model_choice  = scene.model.choice_reason;
-    report.status        = converged ? "converged" : "not converged";
-    report.status_text   = status_text;
-    report.n_blocks      = scene.geometry.n_blocks;
-    report.support_width = scene.geometry.support_width;
-    report.n_cutbacks    = cutbacks_before_failure;
-    unsigned int n_unloaded              = 0;
+    report.model            = model;
+    report.model_choice     = scene.model.choice_reason;
+    report.status           = converged ? "converged" : "not converged";
+    report.status_text      = status_text;
+    report.n_blocks         = scene.geometry.n_blocks;
+    report.support_width    = scene.geometry.support_width;
+    report.n_cutbacks       = cutbacks_before_failure;
+    unsigned int n_unloaded = 0;
     double       largest_round_off_force = 0.; // N/m
     for (const auto &increment : result.increments)
       {
@@ -83,8 +83,10 @@ namespace FloorBlock::Pipeline
         largest_round_off_force =
           std::max(largest_round_off_force, load.round_off_force);
       }
-    describe_balance(result.increments.size(), n_unloaded,
-                     largest_round_off_force, report.force_balance);
+    describe_balance(result.increments.size(),
+                     n_unloaded,
+                     largest_round_off_force,
+                     report.force_balance);
     return report;
   }
 } // namespace FloorBlock::Pipeline

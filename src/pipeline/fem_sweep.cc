@@ -1,16 +1,16 @@
+#include <common/units.h>
+#include <output/fem_sweep_report.h>
 #include <pipeline/case_runner.h>
 #include <pipeline/fem_pipeline.h>
 #include <pipeline/fem_sweep.h>
-#include <common/units.h>
-#include <output/fem_sweep_report.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <iostream>
-
-#include <unistd.h>
 
 namespace FloorBlock::Pipeline
 {
@@ -39,12 +39,12 @@ namespace FloorBlock::Pipeline
     void
     fem_case(const Scene::FigurePoint &point, const Output::CaseStore &store)
     {
-      const ScratchFolder scratch{std::filesystem::temp_directory_path() /
-                                  ("floorblock_case_" +
-                                   std::to_string(::getpid()) + "_" +
-                                   point.id())};
+      const ScratchFolder scratch{
+        std::filesystem::temp_directory_path() /
+        ("floorblock_case_" + std::to_string(::getpid()) + "_" + point.id())};
       const FemOutcome outcome =
-        solve_scene(point.scene, Output::ResultFolder(scratch.path.string()),
+        solve_scene(point.scene,
+                    Output::ResultFolder(scratch.path.string()),
                     false);
       store.store(case_id(point),
                   Output::fem_case_json(Output::fem_case_record(
@@ -54,7 +54,7 @@ namespace FloorBlock::Pipeline
 
   unsigned int
   run_fem_sweep(const std::vector<Scene::FigurePoint> &points,
-                const Output::ResultFolder &           folder,
+                const Output::ResultFolder            &folder,
                 const unsigned int                     limit)
   {
     const Output::CaseStore store(folder.path_of("cases"));

@@ -23,6 +23,6 @@ namespace FloorBlock::Pipeline
    */
   unsigned int
   run_fem_sweep(const std::vector<Scene::FigurePoint> &points,
-                const Output::ResultFolder &           folder,
+                const Output::ResultFolder            &folder,
                 const unsigned int                     limit);
 } // namespace FloorBlock::Pipeline

@@ -19,5 +19,5 @@ namespace FloorBlock::Pipeline
    */
   FemOutcome
   solve_rigid_scene(const Parameters::ScenarioParameters &scene,
-                    const Output::ResultFolder &          folder);
+                    const Output::ResultFolder           &folder);
 } // namespace FloorBlock::Pipeline

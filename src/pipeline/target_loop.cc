@@ -1,8 +1,8 @@
-#include <pipeline/target_loop.h>
 #include <compare/joint_name.h>
 #include <convergence/ladder_budget.h>
 #include <pipeline/accuracy_loop.h>
 #include <pipeline/error_estimate.h>
+#include <pipeline/target_loop.h>
 
 #include <deal.II/base/timer.h>
 
@@ -32,11 +32,11 @@ namespace FloorBlock::Pipeline
       if (outcome.converged && !outcome.result.increments.empty())
         for (const auto &joint : outcome.result.increments.back().joints)
           if (joint.name == Compare::face_joint_name(scene.geometry.n_blocks))
-            record.face_figures = {
-              {"normal_force_N_per_m", joint.normal_force},
-              {"contact_length_m", joint.closed_length},
-              {"sigma_max_Pa", joint.peak_normal_stress},
-              {"sigma_max_averaged_Pa", joint.averaged_peak_normal_stress}};
+            record.face_figures = {{"normal_force_N_per_m", joint.normal_force},
+                                   {"contact_length_m", joint.closed_length},
+                                   {"sigma_max_Pa", joint.peak_normal_stress},
+                                   {"sigma_max_averaged_Pa",
+                                    joint.averaged_peak_normal_stress}};
       return record;
     }
 
@@ -62,8 +62,7 @@ namespace FloorBlock::Pipeline
       const auto &previous = levels[levels.size() - 2];
       if (!(previous.wall_time > 0.))
         return last.wall_time;
-      return last.wall_time *
-             std::max(1., last.wall_time / previous.wall_time);
+      return last.wall_time * std::max(1., last.wall_time / previous.wall_time);
     }
 
     /** Copies a solve's files over the report folder's. */
@@ -72,15 +71,20 @@ namespace FloorBlock::Pipeline
                         const Output::ResultFolder &folder)
     {
       namespace fs = std::filesystem;
-      for (const char *name : {"fem.json", "joints.csv", "joint_profiles.csv",
-                               "mesh.msh", "deformed.png"})
+      for (const char *name : {"fem.json",
+                               "joints.csv",
+                               "joint_profiles.csv",
+                               "mesh.msh",
+                               "deformed.png"})
         if (fs::exists(level_folder.path_of(name)))
-          fs::copy_file(level_folder.path_of(name), folder.path_of(name),
+          fs::copy_file(level_folder.path_of(name),
+                        folder.path_of(name),
                         fs::copy_options::overwrite_existing);
       if (fs::exists(level_folder.path_of("vtu")))
         {
           fs::remove_all(folder.path_of("vtu"));
-          fs::copy(level_folder.path_of("vtu"), folder.path_of("vtu"),
+          fs::copy(level_folder.path_of("vtu"),
+                   folder.path_of("vtu"),
                    fs::copy_options::recursive);
         }
     }
@@ -184,16 +188,18 @@ namespace FloorBlock::Pipeline
     dealii::Timer timer;
     if (!outcomes.empty())
       ++level;
-    outcomes.push_back(levels.solve_next(
-      level == 0 ? base_folder :
-                   Output::ResultFolder(base_folder.path_of(
-                     "refined/level_" + std::to_string(level))),
-      true));
+    outcomes.push_back(
+      levels.solve_next(level == 0 ?
+                          base_folder :
+                          Output::ResultFolder(base_folder.path_of(
+                            "refined/level_" + std::to_string(level))),
+                        true));
     spent += timer.wall_time();
     target.levels.push_back(
       level_record(level, outcomes.back(), timer.wall_time(), scene));
     if (level > 0)
-      std::cout << fmt::format("accuracy: level {}: {} DoFs, {:.1f} s", level,
+      std::cout << fmt::format("accuracy: level {}: {} DoFs, {:.1f} s",
+                               level,
                                outcomes.back().result.n_dofs,
                                timer.wall_time())
                 << std::endl;
@@ -204,7 +210,8 @@ namespace FloorBlock::Pipeline
           fmt::format("{}level {} did not converge: {}",
                       confirming ? "the target was met but the confirming " :
                                    "",
-                      level, outcomes.back().report.status_text);
+                      level,
+                      outcomes.back().report.status_text);
         action = Action::none;
         return;
       }
@@ -218,9 +225,11 @@ namespace FloorBlock::Pipeline
     // It only says when the nested check is worth its cost; level 0
     // is always checked (the default scene meets the target there).
     if (level > 0)
-      record.difference_indicator = worst_target_error(
-        refined_solve_error(outcomes[level - 1], outcomes[level]), face,
-        scene.mesh.target_figures);
+      record.difference_indicator =
+        worst_target_error(refined_solve_error(outcomes[level - 1],
+                                               outcomes[level]),
+                           face,
+                           scene.mesh.target_figures);
     const bool check =
       level == 0 || (record.difference_indicator &&
                      *record.difference_indicator <= target.relative_error);
@@ -235,7 +244,9 @@ namespace FloorBlock::Pipeline
         target.stop_reason = fmt::format(
           "the check of level {} would end after about {:.0f} s, past "
           "Mesh/Refinement time budget = {:g} s",
-          level, spent + forecast, scene.mesh.refinement_time_budget);
+          level,
+          spent + forecast,
+          scene.mesh.refinement_time_budget);
         action = Action::none;
         return;
       }
@@ -247,8 +258,8 @@ namespace FloorBlock::Pipeline
   {
     Output::RefinementLevelRecord &record = target.levels[level];
     dealii::Timer                  timer;
-    const FemOutcome               halved = levels.solve_halved(
-      Output::ResultFolder(base_folder.path_of(
+    const FemOutcome               halved =
+      levels.solve_halved(Output::ResultFolder(base_folder.path_of(
         "refined/level_" + std::to_string(level) + "_halved")));
     record.halved_wall_time = timer.wall_time();
     spent += record.halved_wall_time;
@@ -259,10 +270,14 @@ namespace FloorBlock::Pipeline
     // 0, under 1 s), otherwise whichever of the two has the smaller
     // estimate, the check as a rule. Both are widened where the check
     // reverses the change from the level before (a chance agreement).
-    Output::FemErrorEstimate coarse_estimate = refined_solve_error(
-      outcomes[level], halved, Output::ReportedSolve::coarse);
-    Output::FemErrorEstimate refined_estimate = refined_solve_error(
-      outcomes[level], halved, Output::ReportedSolve::refined);
+    Output::FemErrorEstimate coarse_estimate =
+      refined_solve_error(outcomes[level],
+                          halved,
+                          Output::ReportedSolve::coarse);
+    Output::FemErrorEstimate refined_estimate =
+      refined_solve_error(outcomes[level],
+                          halved,
+                          Output::ReportedSolve::refined);
     if (level > 0)
       for (Output::FemErrorEstimate *pair_estimate :
            {&coarse_estimate, &refined_estimate})
@@ -271,18 +286,20 @@ namespace FloorBlock::Pipeline
       worst_target_error(coarse_estimate, face, scene.mesh.target_figures);
     record.halved_worst_target_error =
       worst_target_error(refined_estimate, face, scene.mesh.target_figures);
-    std::cout << fmt::format(
-                   "accuracy: {}level {} ({} DoFs) checked on its halved "
-                   "mesh ({} DoFs): target figures within {}, the halved "
-                   "solve's within {} (target {})",
-                   target.fe_degree == 1 ?
-                     "" :
-                     fmt::format("FE degree {}, ", target.fe_degree),
-                   level, outcomes[level].result.n_dofs,
-                   halved.result.n_dofs, percent(record.worst_target_error),
-                   percent(record.halved_worst_target_error),
-                   percent(target.relative_error))
-              << std::endl;
+    std::cout
+      << fmt::format("accuracy: {}level {} ({} DoFs) checked on its halved "
+                     "mesh ({} DoFs): target figures within {}, the halved "
+                     "solve's within {} (target {})",
+                     target.fe_degree == 1 ?
+                       "" :
+                       fmt::format("FE degree {}, ", target.fe_degree),
+                     level,
+                     outcomes[level].result.n_dofs,
+                     halved.result.n_dofs,
+                     percent(record.worst_target_error),
+                     percent(record.halved_worst_target_error),
+                     percent(target.relative_error))
+      << std::endl;
     if (!coarse_estimate.available)
       {
         // The last available estimate stays the reported one.
@@ -299,7 +316,7 @@ namespace FloorBlock::Pipeline
     target.reported_level = level;
     target.reported_solve = report_refined ? Output::ReportedSolve::refined :
                                              Output::ReportedSolve::coarse;
-    estimate = report_refined ? refined_estimate : coarse_estimate;
+    estimate              = report_refined ? refined_estimate : coarse_estimate;
     if (report_refined)
       reported_halved = halved;
     else
@@ -315,14 +332,17 @@ namespace FloorBlock::Pipeline
         target.confirming_level = level + 1;
         std::cout << fmt::format("accuracy: level {}{} meets the target; "
                                  "level {} confirms it",
-                                 level, report_refined ? "'s check" : "",
+                                 level,
+                                 report_refined ? "'s check" : "",
                                  level + 1)
                   << std::endl;
         plan_next_level();
         if (finished())
           target.stop_reason = fmt::format(
-            "the target was met on level {}{} but not confirmed: {}", level,
-            report_refined ? "'s check" : "", target.stop_reason);
+            "the target was met on level {}{} but not confirmed: {}",
+            level,
+            report_refined ? "'s check" : "",
+            target.stop_reason);
         return;
       }
     plan_next_level();
@@ -331,7 +351,7 @@ namespace FloorBlock::Pipeline
   bool
   TargetLoop::confirm_met_target()
   {
-    confirming = false;
+    confirming                                   = false;
     const Output::FemErrorEstimate pair_estimate = *estimate;
     widen_to_contain(*estimate, outcomes.back(), level);
     // Confirmed when the level lies inside the bracket of every target
@@ -344,22 +364,24 @@ namespace FloorBlock::Pipeline
       inside = inside && worst_target_error(*estimate, face, {figure}) ==
                            worst_target_error(pair_estimate, face, {figure});
     const std::optional<double> widened = reported_error();
-    const bool report_refined =
+    const bool                  report_refined =
       target.reported_solve == Output::ReportedSolve::refined;
     if (inside)
       {
-        target.met         = true;
-        target.stop_reason = fmt::format(
-          "target met on level {}{}, confirmed by level {}",
-          target.reported_level,
-          report_refined ? "'s check (every cell halved)" : "", level);
+        target.met = true;
+        target.stop_reason =
+          fmt::format("target met on level {}{}, confirmed by level {}",
+                      target.reported_level,
+                      report_refined ? "'s check (every cell halved)" : "",
+                      level);
         action = Action::none;
         return true;
       }
     std::cout << fmt::format("accuracy: level {} lies outside level {}{}'s "
                              "bracket, so that pair agreed by chance: its "
                              "estimate becomes at least {}, refining on",
-                             level, target.reported_level,
+                             level,
+                             target.reported_level,
                              report_refined ? "'s check" : "",
                              percent(widened))
               << std::endl;
@@ -377,14 +399,16 @@ namespace FloorBlock::Pipeline
         fmt::format("Mesh/Maximum refinement levels = {} reached",
                     scene.mesh.max_refinement_levels);
     else if (!levels.can_refine())
-      target.stop_reason = fmt::format(
-        "level {} left no size request to refine from", level);
+      target.stop_reason =
+        fmt::format("level {} left no size request to refine from", level);
     else if (const double forecast = forecast_wall_time(target.levels);
              spent + forecast > scene.mesh.refinement_time_budget)
       target.stop_reason = fmt::format(
         "level {} would end after about {:.0f} s, past Mesh/Refinement "
         "time budget = {:g} s",
-        level + 1, spent + forecast, scene.mesh.refinement_time_budget);
+        level + 1,
+        spent + forecast,
+        scene.mesh.refinement_time_budget);
     else
       action = Action::solve_level;
   }
@@ -396,11 +420,11 @@ namespace FloorBlock::Pipeline
       return {outcomes[0], std::nullopt};
     const bool in_base = target.reported_level == 0 && !reported_halved;
     if (!in_base)
-      promote_level_files(
-        Output::ResultFolder(base_folder.path_of(
-          "refined/level_" + std::to_string(target.reported_level) +
-          (reported_halved ? "_halved" : ""))),
-        report_folder);
+      promote_level_files(Output::ResultFolder(base_folder.path_of(
+                            "refined/level_" +
+                            std::to_string(target.reported_level) +
+                            (reported_halved ? "_halved" : ""))),
+                          report_folder);
     else if (base_folder.path_of("") != report_folder.path_of(""))
       promote_level_files(base_folder, report_folder);
     target.wall_time = spent;

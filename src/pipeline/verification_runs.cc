@@ -23,23 +23,29 @@ namespace FloorBlock::Pipeline
      * --set overrides apply on top.
      */
     const std::vector<std::string> verification_base = {
-      "Joints/Law=rigid", "Joints/Normal stiffness=1e14",
+      "Joints/Law=rigid",
+      "Joints/Normal stiffness=1e14",
       "Joints/Shear stiffness=1e14"};
 
     /** A quantity whose closed form may be 0: error relative to @p scale. */
     Output::CheckedQuantity
-    scaled_quantity(const double computed, const double closed_form,
-                    const double scale, const double tolerance)
+    scaled_quantity(const double computed,
+                    const double closed_form,
+                    const double scale,
+                    const double tolerance)
     {
       const double error = std::abs(computed - closed_form) / scale;
       return {computed, closed_form, error, tolerance, error <= tolerance};
     }
 
     Output::CheckedQuantity
-    quantity(const double computed, const double closed_form,
+    quantity(const double computed,
+             const double closed_form,
              const double tolerance)
     {
-      return scaled_quantity(computed, closed_form, std::abs(closed_form),
+      return scaled_quantity(computed,
+                             closed_form,
+                             std::abs(closed_form),
                              tolerance);
     }
 
@@ -54,20 +60,20 @@ namespace FloorBlock::Pipeline
     verify_hertz(const Parameters::ScenarioParameters &scene)
     {
       Verification::HertzSettings settings;
-      settings.radius         = scene.verify.hertz_radius;
-      settings.line_load      = scene.verify.hertz_line_load;
-      settings.youngs_modulus = scene.verify.hertz_youngs_modulus;
-      settings.poissons_ratio = scene.verify.hertz_poissons_ratio;
-      settings.cells_per_half_width =
-        scene.verify.hertz_cells_per_half_width;
-      settings.law                 = scene.joints.law;
-      settings.compliant_stiffness = scene.joints.normal_stiffness;
-      settings.fe_degree           = scene.solver.fe_degree;
+      settings.radius               = scene.verify.hertz_radius;
+      settings.line_load            = scene.verify.hertz_line_load;
+      settings.youngs_modulus       = scene.verify.hertz_youngs_modulus;
+      settings.poissons_ratio       = scene.verify.hertz_poissons_ratio;
+      settings.cells_per_half_width = scene.verify.hertz_cells_per_half_width;
+      settings.law                  = scene.joints.law;
+      settings.compliant_stiffness  = scene.joints.normal_stiffness;
+      settings.fe_degree            = scene.solver.fe_degree;
 
       const Verification::HertzResult result =
         Verification::run_hertz_verification(settings);
       return {{{"contact_half_width",
-                quantity(result.half_width_computed, result.half_width_exact,
+                quantity(result.half_width_computed,
+                         result.half_width_exact,
                          Verification::hertz_half_width_tolerance)},
                {"peak_pressure",
                 quantity(result.peak_pressure_computed,
@@ -86,70 +92,69 @@ namespace FloorBlock::Pipeline
       settings.fe_degree = scene.solver.fe_degree;
       const Verification::PatchResult result =
         Verification::run_patch_verification(settings);
-      const Contact::JointReport &joint = result.increment.joints.at(0);
-      const double pressure = result.applied_pressure;
-      double       lowest = pressure, highest = pressure;
+      const Contact::JointReport &joint    = result.increment.joints.at(0);
+      const double                pressure = result.applied_pressure;
+      double                      lowest = pressure, highest = pressure;
       for (const auto &sample : joint.profile)
         {
           lowest  = std::min(lowest, sample.normal_traction);
           highest = std::max(highest, sample.normal_traction);
         }
-      const double force = pressure * result.joint_length;
+      const double     force     = pressure * result.joint_length;
       constexpr double tolerance = Verification::patch_tolerance;
-      return {{{"joint_normal_force",
-                quantity(joint.normal_force, force, tolerance)},
-               {"lowest_normal_traction",
-                quantity(lowest, pressure, tolerance)},
-               {"highest_normal_traction",
-                quantity(highest, pressure, tolerance)},
-               {"joint_shear_force_over_normal",
-                scaled_quantity(joint.shear_force, 0., force, tolerance)}},
-              {},
-              {{"n_open_pairs", joint.counts.n_open}}};
+      return {
+        {{"joint_normal_force", quantity(joint.normal_force, force, tolerance)},
+         {"lowest_normal_traction", quantity(lowest, pressure, tolerance)},
+         {"highest_normal_traction", quantity(highest, pressure, tolerance)},
+         {"joint_shear_force_over_normal",
+          scaled_quantity(joint.shear_force, 0., force, tolerance)}},
+        {},
+        {{"n_open_pairs", joint.counts.n_open}}};
     }
 
     Output::VerificationResult
     verify_incline(const Parameters::ScenarioParameters &scene)
     {
       Verification::InclineSettings settings;
-      settings.friction_angle   = scene.joints.bedding_friction_angle;
+      settings.friction_angle = scene.joints.bedding_friction_angle;
       // The case tilts the block to (1 -+ margin) tan(phi): with phi = 0
       // both inclines are 0 and the closed-form shear W sin(0) = 0 leaves
       // no relative error to state.
       if (!(settings.friction_angle > 0.))
         throw InputError("Joints/Bedding friction angle",
-                         fmt::format("{} deg", Units::radians_to_degrees(
-                                                 settings.friction_angle)),
+                         fmt::format("{} deg",
+                                     Units::radians_to_degrees(
+                                       settings.friction_angle)),
                          "> 0 deg for verify incline");
       settings.normal_stiffness = scene.joints.normal_stiffness;
       settings.shear_stiffness  = scene.joints.shear_stiffness;
       settings.law              = scene.joints.law;
-      const double friction = std::tan(settings.friction_angle);
-      const double margin   = scene.verify.incline_margin;
-      settings.incline = std::atan((1. - margin) * friction);
+      const double friction     = std::tan(settings.friction_angle);
+      const double margin       = scene.verify.incline_margin;
+      settings.incline          = std::atan((1. - margin) * friction);
       const Verification::InclineResult below =
         Verification::run_incline_verification(settings);
       const double incline_below = settings.incline;
-      settings.incline = std::atan((1. + margin) * friction);
+      settings.incline           = std::atan((1. + margin) * friction);
       const Verification::InclineResult above =
         Verification::run_incline_verification(settings);
       Output::VerificationResult quantities = {
-        {{"slips_below_threshold",
-          decision(Verification::slips(below), false)},
-         {"slips_above_threshold",
-          decision(Verification::slips(above), true)}},
+        {{"slips_below_threshold", decision(Verification::slips(below), false)},
+         {"slips_above_threshold", decision(Verification::slips(above), true)}},
         {{"incline_below_deg", Units::radians_to_degrees(incline_below)},
          {"incline_above_deg", Units::radians_to_degrees(settings.incline)}},
         {}};
       if (below.stuck)
         {
           const Contact::JointReport &joint = below.stuck->joints.at(0);
-          quantities.checks["joint_shear_force"] = quantity(
-            std::abs(joint.shear_force), below.weight * std::sin(incline_below),
-            Verification::incline_tolerance);
-          quantities.checks["joint_normal_force"] = quantity(
-            joint.normal_force, below.weight * std::cos(incline_below),
-            Verification::incline_tolerance);
+          quantities.checks["joint_shear_force"] =
+            quantity(std::abs(joint.shear_force),
+                     below.weight * std::sin(incline_below),
+                     Verification::incline_tolerance);
+          quantities.checks["joint_normal_force"] =
+            quantity(joint.normal_force,
+                     below.weight * std::cos(incline_below),
+                     Verification::incline_tolerance);
         }
       return quantities;
     }
@@ -194,9 +199,11 @@ namespace FloorBlock::Pipeline
           const Verification::PunchCase result =
             Verification::run_punch_case(settings, state);
           const std::string prefix(name);
-          quantities.checks[prefix + "_corner_exponent"] = scaled_quantity(
-            result.fitted_exponent, result.theory_exponent, 1.,
-            Verification::punch_exponent_tolerance);
+          quantities.checks[prefix + "_corner_exponent"] =
+            scaled_quantity(result.fitted_exponent,
+                            result.theory_exponent,
+                            1.,
+                            Verification::punch_exponent_tolerance);
           quantities.figures[prefix + "_fit_from_m"] = result.fit_from;
           quantities.figures[prefix + "_fit_to_m"]   = result.fit_to;
           quantities.figures[prefix + "_fit_rms_relative_residual"] =

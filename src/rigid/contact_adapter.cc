@@ -20,9 +20,9 @@ namespace FloorBlock::RigidBlocks
     }
 
     Contact::JointReport
-    contact_joint(const RigidJointReport   &joint,
-                  const JointGeometry &geometry,
-                  const double         averaging_length)
+    contact_joint(const RigidJointReport &joint,
+                  const JointGeometry    &geometry,
+                  const double            averaging_length)
     {
       Contact::JointReport report;
       report.name               = joint.name;
@@ -139,8 +139,8 @@ namespace FloorBlock::RigidBlocks
 
   Contact::SolveResult
   to_contact_result(const RigidSolveResult &rigid,
-                    const Model       &model,
-                    const double       averaging_length)
+                    const Model            &model,
+                    const double            averaging_length)
   {
     Contact::SolveResult result;
     for (const IncrementReport &increment : rigid.increments)

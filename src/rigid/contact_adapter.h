@@ -44,6 +44,6 @@ namespace FloorBlock::RigidBlocks
    */
   Contact::SolveResult
   to_contact_result(const RigidSolveResult &rigid,
-                    const Model       &model,
-                    const double       averaging_length);
+                    const Model            &model,
+                    const double            averaging_length);
 } // namespace FloorBlock::RigidBlocks

@@ -35,7 +35,7 @@ namespace FloorBlock::RigidBlocks
               std::vector<double> &rhs,
               const double         relative_pivot_tolerance)
   {
-    const unsigned int size          = matrix.size;
+    const unsigned int size             = matrix.size;
     double             largest_diagonal = 0.;
     for (unsigned int row = 0; row < size; ++row)
       largest_diagonal = std::max(largest_diagonal, std::abs(matrix(row, row)));
@@ -46,7 +46,8 @@ namespace FloorBlock::RigidBlocks
       {
         unsigned int pivot_row = column;
         for (unsigned int row = column + 1; row < size; ++row)
-          if (std::abs(matrix(row, column)) > std::abs(matrix(pivot_row, column)))
+          if (std::abs(matrix(row, column)) >
+              std::abs(matrix(pivot_row, column)))
             pivot_row = row;
         if (!(std::abs(matrix(pivot_row, column)) > pivot_floor))
           {

@@ -9,12 +9,12 @@
 namespace FloorBlock::RigidBlocks
 {
   double
-  relative_imbalance(const JointSet                 &joint_set,
+  relative_imbalance(const JointSet                      &joint_set,
                      const std::vector<RigidJointReport> &reports,
-                     const std::vector<BlockLoads>  &loads,
-                     const double                    gravity_factor,
-                     const double                    support_factor,
-                     const double                    block_width)
+                     const std::vector<BlockLoads>       &loads,
+                     const double                         gravity_factor,
+                     const double                         support_factor,
+                     const double                         block_width)
   {
     const unsigned int                n_blocks = joint_set.n_blocks();
     std::vector<dealii::Tensor<1, 2>> force_sum(n_blocks);
@@ -49,12 +49,13 @@ namespace FloorBlock::RigidBlocks
       }
 
     // Nothing loaded and nothing touching: the balance is trivially exact.
-    reference = std::max(reference, std::numeric_limits<double>::min());
+    reference    = std::max(reference, std::numeric_limits<double>::min());
     double worst = 0.;
     for (unsigned int index = 0; index < n_blocks; ++index)
-      worst = std::max({worst,
-                        force_sum[index].norm() / reference,
-                        std::abs(moment_sum[index]) / (reference * block_width)});
+      worst =
+        std::max({worst,
+                  force_sum[index].norm() / reference,
+                  std::abs(moment_sum[index]) / (reference * block_width)});
     return worst;
   }
 } // namespace FloorBlock::RigidBlocks

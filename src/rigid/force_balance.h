@@ -22,10 +22,10 @@ namespace FloorBlock::RigidBlocks
    * @return max over blocks of both ratios (-).
    */
   double
-  relative_imbalance(const JointSet                 &joint_set,
+  relative_imbalance(const JointSet                      &joint_set,
                      const std::vector<RigidJointReport> &reports,
-                     const std::vector<BlockLoads>  &loads,
-                     const double                    gravity_factor,
-                     const double                    support_factor,
-                     const double                    block_width);
+                     const std::vector<BlockLoads>       &loads,
+                     const double                         gravity_factor,
+                     const double                         support_factor,
+                     const double                         block_width);
 } // namespace FloorBlock::RigidBlocks

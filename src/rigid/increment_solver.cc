@@ -35,7 +35,7 @@ namespace FloorBlock::RigidBlocks
     closed_points_per_block(const JointSet       &joint_set,
                             const JointResponses &responses)
     {
-      std::vector<unsigned int> closed(joint_set.n_blocks(), 0);
+      std::vector<unsigned int>         closed(joint_set.n_blocks(), 0);
       const std::vector<JointGeometry> &joints = joint_set.joints();
       for (unsigned int j = 0; j < joints.size(); ++j)
         for (const Contact::JointResponse<2> &response : responses[j])
@@ -95,7 +95,7 @@ namespace FloorBlock::RigidBlocks
           for (unsigned int p = 0; p < responses[j].size(); ++p)
             {
               const Contact::JointResponse<2> &response = responses[j][p];
-              const double normal_trial =
+              const double                     normal_trial =
                 -constants.normal_stiffness * response.gap;
               const double shear =
                 response.tangential_traction * joints[j].points[p].tangent;
@@ -109,8 +109,8 @@ namespace FloorBlock::RigidBlocks
               else if (response.state == Contact::JointState::open)
                 code = SetCode::open;
               else if (limit - std::abs(shear) <= margin)
-                code = shear > 0. ? SetCode::slip_positive :
-                                    SetCode::slip_negative;
+                code =
+                  shear > 0. ? SetCode::slip_positive : SetCode::slip_negative;
               hash = (hash ^ static_cast<std::uint64_t>(code)) * fnv_prime;
             }
         }
@@ -140,26 +140,28 @@ namespace FloorBlock::RigidBlocks
       double sum_of_squares = 0.;
       for (const JointGeometry &joint : joint_set.joints())
         {
-          const double stiffness = std::max(
-            joint_set.law(joint).parameters().normal_stiffness,
-            joint_set.law(joint).parameters().shear_stiffness);
+          const double stiffness =
+            std::max(joint_set.law(joint).parameters().normal_stiffness,
+                     joint_set.law(joint).parameters().shear_stiffness);
           for (const JointPoint &point : joint.points)
             {
-              const double travel =
-                joint_set
-                  .side_displacement(joint.side_a, point.position, motions,
-                                     uplift_factor)
-                  .norm() +
-                joint_set
-                  .side_displacement(joint.side_b, point.position, motions,
-                                     uplift_factor)
-                  .norm();
+              const double travel = joint_set
+                                      .side_displacement(joint.side_a,
+                                                         point.position,
+                                                         motions,
+                                                         uplift_factor)
+                                      .norm() +
+                                    joint_set
+                                      .side_displacement(joint.side_b,
+                                                         point.position,
+                                                         motions,
+                                                         uplift_factor)
+                                      .norm();
               const double force = point.weight * stiffness * travel;
               sum_of_squares += force * force;
             }
         }
-      return std::numeric_limits<double>::epsilon() *
-             std::sqrt(sum_of_squares);
+      return std::numeric_limits<double>::epsilon() * std::sqrt(sum_of_squares);
     }
 
     std::vector<Contact::JointState>
@@ -183,7 +185,7 @@ namespace FloorBlock::RigidBlocks
                    const JointHistories           &histories)
   {
     IncrementOutcome outcome;
-    outcome.motions = start_motions;
+    outcome.motions                           = start_motions;
     std::vector<BlockMotion> motions_at_solve = start_motions;
     std::vector<double>      residual;
     std::vector<double>      update;
@@ -214,7 +216,8 @@ namespace FloorBlock::RigidBlocks
                       {&residual, &tangent});
       Contact::NewtonIterate iterate;
       iterate.residual_norm = force_norm(residual, block_width);
-      iterate.set_signature = set_signature(joint_set, outcome.responses, histories);
+      iterate.set_signature =
+        set_signature(joint_set, outcome.responses, histories);
       iterate.counts = Contact::count_states(all_states(outcome.responses));
       return iterate;
     };
@@ -227,7 +230,7 @@ namespace FloorBlock::RigidBlocks
           {
             outcome.failure       = SolveStatus::floating_block;
             outcome.failing_block = index + 1;
-            message = "block " + std::to_string(index + 1) +
+            message               = "block " + std::to_string(index + 1) +
                       " is floating: all points of its joints are open";
             return false;
           }

@@ -14,12 +14,12 @@ namespace FloorBlock::RigidBlocks
   /** @brief Outcome of one load state. */
   struct IncrementOutcome
   {
-    Contact::NewtonReport    newton;
+    Contact::NewtonReport newton;
     /** Motions and responses of the last iterate (converged or not). */
     std::vector<BlockMotion> motions;
     JointResponses           responses;
     /** Meaningful when !newton.converged. */
-    SolveStatus  failure      = SolveStatus::not_converged;
+    SolveStatus  failure       = SolveStatus::not_converged;
     unsigned int failing_block = 0;
   };
 

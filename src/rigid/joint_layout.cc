@@ -7,7 +7,8 @@ namespace FloorBlock::RigidBlocks
 {
   namespace
   {
-    /** Trapezoid weight of point k of n_points over an interval of length h_total. */
+    /** Trapezoid weight of point k of n_points over an interval of length
+     * h_total. */
     double
     trapezoid_weight(const unsigned int k,
                      const unsigned int n_points,
@@ -40,15 +41,15 @@ namespace FloorBlock::RigidBlocks
                        BodyRef{BodyKind::face_block, 0} :
                        BodyRef{BodyKind::block, joint_number};
       // Joint j is the face-side edge of block j.
-      const double x_joint  = face_side_x(assembly, joint_number - 1);
-      const double y_top    = profile.height(x_joint) + assembly.block_height;
-      const double height   = assembly.block_height;
+      const double x_joint = face_side_x(assembly, joint_number - 1);
+      const double y_top   = profile.height(x_joint) + assembly.block_height;
+      const double height  = assembly.block_height;
       for (unsigned int k = 0; k < n_points; ++k)
         {
           JointPoint point;
           point.coordinate = height * k / (n_points - 1);
-          point.position   = dealii::Point<2>(x_joint, y_top - point.coordinate);
-          point.weight     = trapezoid_weight(k, n_points, height);
+          point.position = dealii::Point<2>(x_joint, y_top - point.coordinate);
+          point.weight   = trapezoid_weight(k, n_points, height);
           // From block j (x >= x_joint) towards the face (x < x_joint).
           point.normal  = dealii::Tensor<1, 2>({-1., 0.});
           point.tangent = dealii::Tensor<1, 2>({0., 1.});
@@ -64,22 +65,22 @@ namespace FloorBlock::RigidBlocks
                   const unsigned int                   n_points)
     {
       JointGeometry joint;
-      joint.kind   = JointKind::bedding;
-      joint.number = block_number;
-      joint.name   = "bedding " + std::to_string(block_number);
-      joint.side_a = {BodyKind::base, 0};
-      joint.side_b = {BodyKind::block, block_number - 1};
+      joint.kind           = JointKind::bedding;
+      joint.number         = block_number;
+      joint.name           = "bedding " + std::to_string(block_number);
+      joint.side_a         = {BodyKind::base, 0};
+      joint.side_b         = {BodyKind::block, block_number - 1};
       const double x_start = face_side_x(assembly, block_number - 1);
       const double width   = assembly.block_width;
       for (unsigned int k = 0; k < n_points; ++k)
         {
           JointPoint point;
-          point.coordinate  = width * k / (n_points - 1);
-          const double x    = x_start + point.coordinate;
-          const double slope = profile.slope(x);
+          point.coordinate        = width * k / (n_points - 1);
+          const double x          = x_start + point.coordinate;
+          const double slope      = profile.slope(x);
           const double arc_factor = std::sqrt(1. + slope * slope);
-          point.position = dealii::Point<2>(x, profile.height(x));
-          point.weight   = trapezoid_weight(k, n_points, width) * arc_factor;
+          point.position          = dealii::Point<2>(x, profile.height(x));
+          point.weight = trapezoid_weight(k, n_points, width) * arc_factor;
           // Base (below) into block (above).
           point.normal  = dealii::Tensor<1, 2>({-slope, 1.}) / arc_factor;
           point.tangent = dealii::Tensor<1, 2>({1., slope}) / arc_factor;

@@ -61,12 +61,13 @@ namespace FloorBlock::RigidBlocks
   struct JointGeometry
   {
     JointKind kind = JointKind::vertical;
-    /** Chapter number: j of vertical joint j, i of the bedding under block i. */
+    /** Chapter number: j of vertical joint j, i of the bedding under block i.
+     */
     unsigned int number = 0;
     /** "vertical 6", "bedding 3". */
-    std::string name;
-    BodyRef     side_a;
-    BodyRef     side_b;
+    std::string             name;
+    BodyRef                 side_a;
+    BodyRef                 side_b;
     std::vector<JointPoint> points;
   };
 

@@ -6,12 +6,12 @@ namespace FloorBlock::RigidBlocks
   namespace
   {
     /**
-     * Shear traction in the chapter's sense (see RigidJointReport::shear_force).
-     * The law's tangential traction t_t is the tangential force per length
-     * on side A (B receives -t_t). Vertical joint: A is block j, the
-     * chapter counts the downward force on it, -t_t.e_y. Bedding: B is
-     * the block, the chapter counts the force on it towards the face,
-     * i.e. along -tangent: (-t_t).(-tangent).
+     * Shear traction in the chapter's sense (see
+     * RigidJointReport::shear_force). The law's tangential traction t_t is the
+     * tangential force per length on side A (B receives -t_t). Vertical joint:
+     * A is block j, the chapter counts the downward force on it, -t_t.e_y.
+     * Bedding: B is the block, the chapter counts the force on it towards the
+     * face, i.e. along -tangent: (-t_t).(-tangent).
      */
     double
     chapter_shear(const JointGeometry             &joint,
@@ -29,12 +29,12 @@ namespace FloorBlock::RigidBlocks
                       const Contact::JointResponse<2> &first_response,
                       const Contact::JointResponse<2> &second_response)
     {
-      const double length  = (second.position - first.position).norm();
+      const double length = (second.position - first.position).norm();
       // Overlap = -gap, linear along a straight segment.
       const double overlap_first  = -first_response.gap;
       const double overlap_second = -second_response.gap;
-      const bool   first_in   = first_response.normal_traction > 0.;
-      const bool   second_in  = second_response.normal_traction > 0.;
+      const bool   first_in       = first_response.normal_traction > 0.;
+      const bool   second_in      = second_response.normal_traction > 0.;
       if (first_in && second_in)
         return length;
       if (!first_in && !second_in)

@@ -42,7 +42,7 @@ namespace FloorBlock::RigidBlocks
   JointSet::side_displacement(const BodyRef                  &body,
                               const dealii::Point<2>         &point,
                               const std::vector<BlockMotion> &motions,
-                              const double                    uplift_factor) const
+                              const double uplift_factor) const
   {
     switch (body.kind)
       {
@@ -66,17 +66,20 @@ namespace FloorBlock::RigidBlocks
     JointResponses responses(joint_list.size());
     for (unsigned int j = 0; j < joint_list.size(); ++j)
       {
-        const JointGeometry            &joint = joint_list[j];
+        const JointGeometry            &joint     = joint_list[j];
         const Contact::CoulombJoint<2> &joint_law = law(joint);
         responses[j].reserve(joint.points.size());
         for (unsigned int p = 0; p < joint.points.size(); ++p)
           {
-            const JointPoint &point = joint.points[p];
-            const dealii::Tensor<1, 2> jump =
-              side_displacement(joint.side_b, point.position, motions,
-                                uplift_factor) -
-              side_displacement(joint.side_a, point.position, motions,
-                                uplift_factor);
+            const JointPoint          &point = joint.points[p];
+            const dealii::Tensor<1, 2> jump  = side_displacement(joint.side_b,
+                                                                point.position,
+                                                                motions,
+                                                                uplift_factor) -
+                                              side_displacement(joint.side_a,
+                                                                point.position,
+                                                                motions,
+                                                                uplift_factor);
             responses[j].push_back(
               joint_law.evaluate(jump, point.normal, histories[j][p]));
           }

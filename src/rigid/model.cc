@@ -26,7 +26,7 @@ namespace FloorBlock::RigidBlocks
       std::vector<BlockMotion> motions;
       JointHistories           histories;
       /** Uplift factor of the committed state (-). */
-      double      uplift = 0.;
+      double           uplift = 0.;
       RigidSolveResult result;
     };
 
@@ -79,7 +79,7 @@ namespace FloorBlock::RigidBlocks
 
   std::vector<RigidJointReport>
   Model::evaluate_prescribed(const std::vector<BlockMotion> &motions,
-                             const double                    uplift_factor) const
+                             const double uplift_factor) const
   {
     const JointResponses responses =
       joints.evaluate(motions, uplift_factor, joints.virgin_histories());
@@ -92,7 +92,7 @@ namespace FloorBlock::RigidBlocks
     const auto start = std::chrono::steady_clock::now();
     PathState  path;
     path.motions.resize(joints.n_blocks());
-    path.histories = joints.virgin_histories();
+    path.histories                      = joints.virgin_histories();
     const RigidSolverSettings &settings = description.solver;
 
     IncrementOutcome                      outcome;
@@ -156,11 +156,11 @@ namespace FloorBlock::RigidBlocks
       {
         path.result.status        = outcome.failure;
         path.result.failing_block = outcome.failing_block;
-        path.result.message =
-          std::string("stage '") +
-          Loading::stage_name(path_outcome.failed_stage) + "' failed after " +
-          std::to_string(settings.max_cutbacks) +
-          " cutbacks: " + outcome.newton.failure_reason;
+        path.result.message       = std::string("stage '") +
+                              Loading::stage_name(path_outcome.failed_stage) +
+                              "' failed after " +
+                              std::to_string(settings.max_cutbacks) +
+                              " cutbacks: " + outcome.newton.failure_reason;
       }
     path.result.wall_time = seconds_since(start);
     return path.result;

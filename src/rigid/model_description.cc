@@ -24,10 +24,11 @@ namespace FloorBlock::RigidBlocks
         throw InputError(parameter, text(value), allowed);
     }
 
-    /** Joint constants: kn, ks > 0 (a rigid body needs springs), phi in [0, 90 deg). */
+    /** Joint constants: kn, ks > 0 (a rigid body needs springs), phi in [0, 90
+     * deg). */
     void
     validate_joint(const Contact::JointConstants &joint,
-                   const std::string              &section)
+                   const std::string             &section)
     {
       require(std::isfinite(joint.normal_stiffness) &&
                 joint.normal_stiffness > 0.,

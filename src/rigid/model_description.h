@@ -1,8 +1,8 @@
 #pragma once
 
+#include <contact/contact_problem.h>
 #include <contact/joint_law.h>
 #include <contact/newton_driver.h>
-#include <contact/contact_problem.h>
 #include <geometry/assembly_description.h>
 
 #include <vector>
@@ -96,7 +96,7 @@ namespace FloorBlock::RigidBlocks
     /** Prescribed motion of the (rigid) base in the uplift stage. */
     Contact::UpliftSettings uplift;
     /** Increments of the gravity, support-load and uplift stages. */
-    Loading::LoadSteps steps;
+    Loading::LoadSteps  steps;
     RigidSolverSettings solver;
   };
 

@@ -26,12 +26,18 @@ namespace FloorBlock::RigidBlocks
       {
         if (joint.kind != JointKind::bedding)
           continue;
-        const unsigned int      index  = joint.side_b.index;
-        const dealii::Point<2> &first  = joint.points.front().position;
-        const dealii::Point<2> &last   = joint.points.back().position;
+        const unsigned int      index   = joint.side_b.index;
+        const dealii::Point<2> &first   = joint.points.front().position;
+        const dealii::Point<2> &last    = joint.points.back().position;
         const auto              step_at = [&](const dealii::Point<2> &point) {
-          return joint_set.side_displacement(base, point, motions, target_uplift) -
-                 joint_set.side_displacement(base, point, motions, previous_uplift);
+          return joint_set.side_displacement(base,
+                                             point,
+                                             motions,
+                                             target_uplift) -
+                 joint_set.side_displacement(base,
+                                             point,
+                                             motions,
+                                             previous_uplift);
         };
         const dealii::Tensor<1, 2> step_first = step_at(first);
         const dealii::Tensor<1, 2> step_last  = step_at(last);

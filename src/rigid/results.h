@@ -26,7 +26,7 @@ namespace FloorBlock::RigidBlocks
     /** Shear traction in the sense of RigidJointReport::shear_force (Pa). */
     double shear_traction = 0.;
     /** Normal gap, negative in overlap (m). */
-    double gap = 0.;
+    double              gap   = 0.;
     Contact::JointState state = Contact::JointState::open;
   };
 
@@ -57,7 +57,7 @@ namespace FloorBlock::RigidBlocks
     double peak_normal_traction = 0.;
     double peak_coordinate      = 0.;
     /** normal_force / contact_length, 0 without contact (Pa). */
-    double mean_normal_traction = 0.;
+    double               mean_normal_traction = 0.;
     Contact::StateCounts counts;
     /** Resultant contact force on side B (N/m) ... */
     dealii::Tensor<1, 2> force_on_side_b;
@@ -72,14 +72,14 @@ namespace FloorBlock::RigidBlocks
   {
     Loading::LoadStage stage = Loading::LoadStage::gravity;
     /** Factors of gravity, support load and uplift after the increment (-). */
-    double gravity_factor = 0.;
-    double support_factor = 0.;
-    double uplift_factor  = 0.;
-    unsigned int n_iterations = 0;
+    double       gravity_factor = 0.;
+    double       support_factor = 0.;
+    double       uplift_factor  = 0.;
+    unsigned int n_iterations   = 0;
     /** Halvings needed before this increment converged. */
     unsigned int n_cutbacks = 0;
     /** Final Newton residual over its reference force (-). */
-    double relative_residual = 0.;
+    double               relative_residual = 0.;
     Contact::StateCounts counts;
     /** Joints: vertical 1..n, then bedding 1..n. */
     std::vector<RigidJointReport> joints;

@@ -12,7 +12,7 @@ namespace FloorBlock::RigidBlocks
     /** One side of a point: its first row and its displacement derivatives. */
     struct SideTerms
     {
-      bool                                movable = false;
+      bool                                movable   = false;
       unsigned int                        first_row = 0;
       std::array<dealii::Tensor<1, 2>, 3> derivatives;
       /** +1 for side B, -1 for side A: the sign of its part of the jump. */
@@ -29,9 +29,10 @@ namespace FloorBlock::RigidBlocks
       terms.sign = sign;
       if (body.kind != BodyKind::block)
         return terms;
-      terms.movable     = true;
-      terms.first_row   = dofs_per_block * body.index;
-      terms.derivatives = displacement_derivatives(centroids[body.index], point);
+      terms.movable   = true;
+      terms.first_row = dofs_per_block * body.index;
+      terms.derivatives =
+        displacement_derivatives(centroids[body.index], point);
       return terms;
     }
   } // namespace
@@ -69,11 +70,11 @@ namespace FloorBlock::RigidBlocks
               targets.slip_stabilisation *
               joint_set.law(joints[j]).parameters().shear_stiffness *
               dealii::outer_product(point.tangent, point.tangent);
-          const std::array<SideTerms, 2> sides = {{
-            side_terms(joints[j].side_a, -1., point.position,
-                       joint_set.centroids()),
-            side_terms(joints[j].side_b, 1., point.position,
-                       joint_set.centroids())}};
+          const std::array<SideTerms, 2> sides = {
+            {side_terms(
+               joints[j].side_a, -1., point.position, joint_set.centroids()),
+             side_terms(
+               joints[j].side_b, 1., point.position, joint_set.centroids())}};
           for (const SideTerms &row_side : sides)
             {
               if (!row_side.movable)

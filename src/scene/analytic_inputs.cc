@@ -8,38 +8,44 @@ namespace FloorBlock::Scene
   Analytic::BlockChain
   block_chain(const Parameters::ScenarioParameters &scene)
   {
-    const auto &geometry = scene.geometry;
-    const double block_weight = scene.material.density *
-                                scene.loading.gravity * geometry.block_width *
-                                geometry.block_height;
+    const auto  &geometry     = scene.geometry;
+    const double block_weight = scene.material.density * scene.loading.gravity *
+                                geometry.block_width * geometry.block_height;
 
     const std::vector<unsigned int> loaded = scene.loaded_blocks();
-    const double load_per_loaded_block =
-      loaded.empty() ? 0.0 :
-                       scene.loading.support_load /
-                         (loaded.size() * geometry.support_width);
+    const double                    load_per_loaded_block =
+      loaded.empty() ?
+                           0.0 :
+                           scene.loading.support_load / (loaded.size() * geometry.support_width);
 
-    Analytic::BlockChain chain = Analytic::uniform_chain(
-      geometry.n_blocks, block_weight, 0.0, scene.bedding.inclination,
-      geometry.block_width, geometry.block_height,
-      scene.joints.bedding_friction_angle,
-      scene.joints.vertical_friction_angle);
+    Analytic::BlockChain chain =
+      Analytic::uniform_chain(geometry.n_blocks,
+                              block_weight,
+                              0.0,
+                              scene.bedding.inclination,
+                              geometry.block_width,
+                              geometry.block_height,
+                              scene.joints.bedding_friction_angle,
+                              scene.joints.vertical_friction_angle);
 
     for (const unsigned int block : loaded)
       chain.support_load[block - 1] = load_per_loaded_block;
 
     if (scene.bedding.shape == Geometry::BeddingShape::parabolic)
-      chain.inclination = Analytic::parabolic_inclinations(
-        geometry.n_blocks, geometry.block_width, scene.bedding.curvature);
+      chain.inclination =
+        Analytic::parabolic_inclinations(geometry.n_blocks,
+                                         geometry.block_width,
+                                         scene.bedding.curvature);
     return chain;
   }
 
   double
   face_joint_floor_lift(const Parameters::ScenarioParameters &scene,
-                        const Analytic::BlockChain &          chain)
+                        const Analytic::BlockChain           &chain)
   {
     // The face block stays upright: its inclination is 0.
-    return Analytic::joint_floor_lift(chain.inclination.back(), 0.0,
+    return Analytic::joint_floor_lift(chain.inclination.back(),
+                                      0.0,
                                       scene.geometry.block_width);
   }
 } // namespace FloorBlock::Scene

@@ -29,5 +29,5 @@ namespace FloorBlock::Scene
    */
   double
   face_joint_floor_lift(const Parameters::ScenarioParameters &scene,
-                        const Analytic::BlockChain &          chain);
+                        const Analytic::BlockChain           &chain);
 } // namespace FloorBlock::Scene

@@ -12,8 +12,7 @@ namespace FloorBlock::Scene
     // The chapter's grids (section 6.6 and 6.7), in the chapter's units.
     const std::vector<double> bedding_friction_degrees{10, 15, 20, 25, 30, 35};
     const std::vector<double> vertical_friction_degrees{15, 25, 35, 45};
-    const std::vector<double> support_load_tonnes{400, 500, 600,
-                                                  700, 800, 900};
+    const std::vector<double> support_load_tonnes{400, 500, 600, 700, 800, 900};
     const std::vector<double> stress_figure_curvatures{400, 200, 100, 50};
 
     /**
@@ -51,11 +50,11 @@ namespace FloorBlock::Scene
     }
 
     FigurePoint
-    evaluate(const std::string &                   figure,
-             Parameters::ScenarioParameters        variant,
-             const double                          curvature,
-             const double                          bedding_friction_degree,
-             const double                          vertical_friction_degree)
+    evaluate(const std::string             &figure,
+             Parameters::ScenarioParameters variant,
+             const double                   curvature,
+             const double                   bedding_friction_degree,
+             const double                   vertical_friction_degree)
     {
       variant.bedding.shape = curvature > 0 ?
                                 Geometry::BeddingShape::parabolic :
@@ -80,8 +79,10 @@ namespace FloorBlock::Scene
   std::string
   FigurePoint::id() const
   {
-    return fmt::format("{}_k{:.0f}_phih{:.0f}_phiv{:.0f}_load{:.0f}t", figure,
-                       curvature, Units::radians_to_degrees(bedding_friction),
+    return fmt::format("{}_k{:.0f}_phih{:.0f}_phiv{:.0f}_load{:.0f}t",
+                       figure,
+                       curvature,
+                       Units::radians_to_degrees(bedding_friction),
                        Units::radians_to_degrees(vertical_friction),
                        support_load / Units::tonnes_force_to_newtons(1.));
   }
@@ -112,8 +113,8 @@ namespace FloorBlock::Scene
           {
             Parameters::ScenarioParameters variant = scene;
             variant.loading.support_load = Units::tonnes_force_to_newtons(load);
-            points.push_back(evaluate("fig6_10_11", variant, curvature,
-                                      bedding, vertical_degrees));
+            points.push_back(evaluate(
+              "fig6_10_11", variant, curvature, bedding, vertical_degrees));
           }
     return points;
   }

@@ -45,20 +45,25 @@ namespace FloorBlock::Scene
     result.youngs_modulus = scene.material.youngs_modulus();
     result.floor_lift     = face_joint_floor_lift(scene, result.chain);
 
-    for (const Mechanism mechanism :
-         {Mechanism::no_rotation, Mechanism::rotation_no_vertical_slip,
-          Mechanism::rotation_vertical_slip})
+    for (const Mechanism mechanism : {Mechanism::no_rotation,
+                                      Mechanism::rotation_no_vertical_slip,
+                                      Mechanism::rotation_vertical_slip})
       {
-        MechanismResult entry{mechanism, solve(mechanism, result.chain), 0.,
+        MechanismResult entry{mechanism,
+                              solve(mechanism, result.chain),
+                              0.,
                               {}};
         if (!entry.forces.lateral_force.empty())
           {
             entry.face_force_over_width =
               entry.forces.lateral_force.back() * result.support_width;
-            entry.contact = Analytic::corner_contact(
-              entry.face_force_over_width, result.floor_lift,
-              result.youngs_modulus, result.support_width,
-              scene.geometry.block_width, scene.geometry.block_height);
+            entry.contact =
+              Analytic::corner_contact(entry.face_force_over_width,
+                                       result.floor_lift,
+                                       result.youngs_modulus,
+                                       result.support_width,
+                                       scene.geometry.block_width,
+                                       scene.geometry.block_height);
           }
         else
           entry.contact.status = entry.forces.status;

@@ -20,26 +20,27 @@ namespace FloorBlock::Scene
   std::string
   to_string(const Mechanism mechanism);
 
-  /** One mechanism evaluated for a scene, with its corner contact at the face. */
+  /** One mechanism evaluated for a scene, with its corner contact at the face.
+   */
   struct MechanismResult
   {
-    Mechanism                mechanism;
-    Analytic::ChainForces    forces; ///< per metre of face
+    Mechanism             mechanism;
+    Analytic::ChainForces forces; ///< per metre of face
     /// Q_n over the support width b (N): the Q of Eq. 6.51; 0 if no answer.
-    double                   face_force_over_width = 0.;
-    Analytic::CornerContact  contact; ///< Eqs. 6.51-6.53 at the face joint
+    double                  face_force_over_width = 0.;
+    Analytic::CornerContact contact; ///< Eqs. 6.51-6.53 at the face joint
   };
 
   /** Every closed form of the chapter for one scene. */
   struct ClosedForms
   {
-    Analytic::BlockChain          chain;
-    double                        support_width;  ///< b (m)
-    double                        youngs_modulus; ///< E (Pa)
-    double                        floor_lift;     ///< y of Eq. 6.51 (m)
-    std::vector<MechanismResult>  mechanisms;
+    Analytic::BlockChain         chain;
+    double                       support_width;  ///< b (m)
+    double                       youngs_modulus; ///< E (Pa)
+    double                       floor_lift;     ///< y of Eq. 6.51 (m)
+    std::vector<MechanismResult> mechanisms;
     /// Centroid heights and rotation criterion of the no-rotation case.
-    Analytic::CentroidHeights     no_rotation_heights;
+    Analytic::CentroidHeights no_rotation_heights;
   };
 
   /** @brief Evaluates all three mechanisms, the centroid heights and 6.51-6.53. */

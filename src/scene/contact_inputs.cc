@@ -11,7 +11,7 @@ namespace FloorBlock::Scene
   {
     Contact::JointConstants
     joint_constants(const Parameters::JointParameters &joints,
-                     const double                       friction_angle)
+                    const double                       friction_angle)
     {
       Contact::JointConstants parameters;
       parameters.normal_stiffness = joints.normal_stiffness;
@@ -36,7 +36,8 @@ namespace FloorBlock::Scene
     double
     bedding_height(const Parameters::ScenarioParameters &scene, const double x)
     {
-      if (scene.bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding)
+      if (scene.bedding.floor_uplift ==
+          Geometry::FloorUplift::lifted_flat_bedding)
         return 0.;
       if (scene.bedding.shape == Geometry::BeddingShape::planar)
         return x * std::tan(scene.bedding.inclination);
@@ -89,7 +90,7 @@ namespace FloorBlock::Scene
   FloorProblemSettings
   floor_problem_settings(const Parameters::ScenarioParameters &scene)
   {
-    const Analytic::BlockChain     chain = block_chain(scene);
+    const Analytic::BlockChain chain = block_chain(scene);
     // The pressure acts on the floor-surface id of a block, which is the
     // straight part of its top between the two top fillets: L - 2r (ids.h).
     // Dividing by L (as before) applied only (L - 2r)/L of P_i, 98 % on the
@@ -128,9 +129,9 @@ namespace FloorBlock::Scene
         Parameters::SupportLoadDirection::vertical,
       {},
       {}};
-    settings.frame_dip        = scene.bedding.frame_dip;
-    settings.rigid_base       = scene.bedding.rigid_base;
-    settings.uplift           = uplift_settings(scene);
+    settings.frame_dip  = scene.bedding.frame_dip;
+    settings.rigid_base = scene.bedding.rigid_base;
+    settings.uplift     = uplift_settings(scene);
     settings.steps.gravity_with_pressure =
       scene.solver.gravity_with_support_load;
     settings.steps.n_gravity  = scene.solver.n_gravity_steps;
@@ -141,24 +142,24 @@ namespace FloorBlock::Scene
 
   Contact::ContactSolverSettings
   contact_solver_settings(const Parameters::ScenarioParameters &scene,
-                          const std::string &                   vtu_folder)
+                          const std::string                    &vtu_folder)
   {
-    const auto &solver = scene.solver;
+    const auto                    &solver = scene.solver;
     Contact::ContactSolverSettings settings;
     settings.fe_degree                 = solver.fe_degree;
     settings.newton.relative_tolerance = solver.newton_tolerance;
     settings.newton.max_iterations     = solver.max_newton_iterations;
-    settings.linear.kind            = solver.linear_solver;
+    settings.linear.kind               = solver.linear_solver;
     settings.linear.max_direct_dofs =
       scene.geometry.dimension == 3 ?
         std::min(solver.max_direct_dofs, max_direct_dofs_3d) :
         solver.max_direct_dofs;
     settings.linear.max_reuse_iterations = solver.max_reuse_iterations;
-    settings.linear.direct_solver   = solver.direct_solver;
-    settings.max_cutbacks           = solver.max_cutbacks;
-    settings.averaging_length       = solver.averaging_length;
-    settings.complementarity_factor   = solver.complementarity_factor;
-    settings.output_directory       = vtu_folder;
+    settings.linear.direct_solver        = solver.direct_solver;
+    settings.max_cutbacks                = solver.max_cutbacks;
+    settings.averaging_length            = solver.averaging_length;
+    settings.complementarity_factor      = solver.complementarity_factor;
+    settings.output_directory            = vtu_folder;
     return settings;
   }
 } // namespace FloorBlock::Scene

@@ -42,5 +42,5 @@ namespace FloorBlock::Scene
    */
   Contact::ContactSolverSettings
   contact_solver_settings(const Parameters::ScenarioParameters &scene,
-                          const std::string &                   vtu_folder);
+                          const std::string                    &vtu_folder);
 } // namespace FloorBlock::Scene

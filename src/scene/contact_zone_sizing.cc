@@ -53,7 +53,7 @@ namespace FloorBlock::Scene
          evaluate_closed_forms(scene).mechanisms)
       {
         const Analytic::CornerContact &contact = mechanism.contact;
-        const bool has_length =
+        const bool                     has_length =
           contact.status == Analytic::Status::ok ||
           contact.status == Analytic::Status::contact_longer_than_block;
         if (!has_length || !std::isfinite(contact.contact_length) ||

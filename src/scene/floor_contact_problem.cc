@@ -43,7 +43,7 @@ namespace FloorBlock::Scene
     const auto add_joint = [&](const std::string               &name,
                                const dealii::types::boundary_id side_a,
                                const dealii::types::boundary_id side_b,
-                               const Contact::JointConstants  &parameters) {
+                               const Contact::JointConstants   &parameters) {
       Contact::JointDefinition<2> joint;
       joint.name       = name;
       joint.side_a     = side_a;
@@ -78,18 +78,18 @@ namespace FloorBlock::Scene
                   settings.bedding_joints);
 
     Contact::SupportDefinition<2> face_outer;
-    face_outer.boundary_id            = Ids::face_block_outer_side;
-    face_outer.constrained_components = {{true, true}};
+    face_outer.boundary_id                    = Ids::face_block_outer_side;
+    face_outer.constrained_components         = {{true, true}};
     Contact::SupportDefinition<2> face_bottom = face_outer;
     face_bottom.boundary_id = Ids::bedding_block_side(Ids::face_block_index);
     Contact::SupportDefinition<2> base = face_outer;
     base.boundary_id                   = Ids::base_bottom;
     base.moves_with_uplift             = true;
-    scene.supports = {face_outer, face_bottom};
+    scene.supports                     = {face_outer, face_bottom};
     if (!settings.rigid_base)
       scene.supports.push_back(base);
-    scene.uplift   = settings.uplift;
-    scene.steps    = settings.steps;
+    scene.uplift = settings.uplift;
+    scene.steps  = settings.steps;
     return scene;
   }
 } // namespace FloorBlock::Scene

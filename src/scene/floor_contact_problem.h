@@ -14,25 +14,28 @@ namespace FloorBlock::Scene
   struct FloorProblemSettings
   {
     unsigned int n_blocks = 6;
-    /** Elastic law of blocks, face block and base (Table 6.1: K 9 GPa, G 6.7 GPa). */
+    /** Elastic law of blocks, face block and base (Table 6.1: K 9 GPa, G 6.7
+     * GPa). */
     Material::ElasticLaw<2> rock =
       Material::ElasticLaw<2>::from_bulk_shear(9e9, 6.7e9);
-    /** Density of blocks and face block (kg/m^3); the base is weightless (it is displacement driven). */
+    /** Density of blocks and face block (kg/m^3); the base is weightless (it is
+     * displacement driven). */
     double density = 2500.;
     /** Gravity acceleration magnitude (m/s^2), acting in -y. */
-    double gravity = 9.81;
-    Contact::JointLawKind law = Contact::JointLawKind::compliant;
+    double                gravity = 9.81;
+    Contact::JointLawKind law     = Contact::JointLawKind::compliant;
     /** Vertical fractures (Table 6.1: kn 9 GPa/m, ks 6.7 GPa/m). */
     Contact::JointConstants vertical_joints;
     /** Bedding joint under the blocks. */
     Contact::JointConstants bedding_joints;
-    /** Support pressure on the top of block i (Pa), keyed by chapter index i. */
+    /** Support pressure on the top of block i (Pa), keyed by chapter index i.
+     */
     std::map<unsigned int, double> support_pressures;
     /**
      * Support pressure straight down per unit horizontal length (true), as
      * the closed forms' vertical P_i, or normal to the block top (false).
      */
-    bool vertical_support_load = true;
+    bool                    vertical_support_load = true;
     Contact::UpliftSettings uplift;
     Loading::LoadSteps      steps;
     /**

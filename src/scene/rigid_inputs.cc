@@ -8,7 +8,7 @@ namespace FloorBlock::Scene
   RigidBlocks::ModelDescription
   rigid_model_description(const Parameters::ScenarioParameters &scene)
   {
-    const FloorProblemSettings      floor = floor_problem_settings(scene);
+    const FloorProblemSettings    floor = floor_problem_settings(scene);
     RigidBlocks::ModelDescription description;
     description.assembly           = assembly_description(scene);
     description.density            = floor.density;

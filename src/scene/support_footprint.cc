@@ -14,7 +14,7 @@ namespace FloorBlock::Scene
     const double length = scene.loading.footprint_length;
     if (scene.geometry.dimension != 3 || !(length > 0.))
       return std::nullopt;
-    const double face_length = scene.geometry.face_length;
+    const double     face_length = scene.geometry.face_length;
     SupportFootprint footprint;
     footprint.start = scene.loading.footprint_offset ?
                         *scene.loading.footprint_offset :
@@ -33,7 +33,8 @@ namespace FloorBlock::Scene
       return Geometry::uniform_slices(scene.geometry.face_length,
                                       scene.mesh.slice_size);
     return Geometry::footprint_slices(scene.geometry.face_length,
-                                      scene.mesh.slice_size, footprint->start,
+                                      scene.mesh.slice_size,
+                                      footprint->start,
                                       footprint->end);
   }
 
@@ -42,8 +43,10 @@ namespace FloorBlock::Scene
                         dealii::Triangulation<3>             &solid)
   {
     if (const auto footprint = support_footprint(scene))
-      Geometry::tag_footprint(scene.loaded_blocks(), footprint->start,
-                              footprint->end, solid);
+      Geometry::tag_footprint(scene.loaded_blocks(),
+                              footprint->start,
+                              footprint->end,
+                              solid);
   }
 
   void
@@ -51,8 +54,8 @@ namespace FloorBlock::Scene
                          const double                support_width,
                          Contact::ContactProblem<3> &problem)
   {
-    namespace Ids = Geometry::Ids;
-    auto &model = problem.model;
+    namespace Ids      = Geometry::Ids;
+    auto        &model = problem.model;
     const double scale = support_width / footprint.length();
     std::map<dealii::types::boundary_id, double> pressures;
     for (const auto &[id, pressure] : model.pressures)

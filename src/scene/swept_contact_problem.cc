@@ -36,14 +36,14 @@ namespace FloorBlock::Scene
     swept_joint(const Contact::JointDefinition<2> &plane)
     {
       Contact::JointDefinition<3> joint;
-      joint.name                    = plane.name;
-      joint.side_a                  = plane.side_a;
-      joint.side_b                  = plane.side_b;
-      joint.law                     = plane.law;
-      joint.parameters              = plane.parameters;
-      joint.against_rigid_plane     = plane.against_rigid_plane;
-      joint.plane_point             = dealii::Point<3>(with_zero_z(plane.plane_point));
-      joint.plane_normal            = with_zero_z(plane.plane_normal);
+      joint.name                = plane.name;
+      joint.side_a              = plane.side_a;
+      joint.side_b              = plane.side_b;
+      joint.law                 = plane.law;
+      joint.parameters          = plane.parameters;
+      joint.against_rigid_plane = plane.against_rigid_plane;
+      joint.plane_point  = dealii::Point<3>(with_zero_z(plane.plane_point));
+      joint.plane_normal = with_zero_z(plane.plane_normal);
       joint.obstacle_curvature      = plane.obstacle_curvature;
       joint.plane_moves_with_uplift = plane.plane_moves_with_uplift;
       return joint;
@@ -74,8 +74,8 @@ namespace FloorBlock::Scene
     for (const auto &support : plane.supports)
       problem.supports.push_back(swept_support(support));
     if (end_faces == Geometry::EndFaces::plane_strain)
-      for (const auto end : {Geometry::Ids::end_face_near,
-                             Geometry::Ids::end_face_far})
+      for (const auto end :
+           {Geometry::Ids::end_face_near, Geometry::Ids::end_face_far})
         {
           Contact::SupportDefinition<3> support;
           support.boundary_id            = end;

@@ -12,8 +12,8 @@ namespace FloorBlock::Solver
 {
   namespace
   {
-    using dealii::TrilinosWrappers::MPI::Vector;
     using dealii::TrilinosWrappers::SparseMatrix;
+    using dealii::TrilinosWrappers::MPI::Vector;
 
     LinearSolveInfo
     solve_direct(const LinearSolverSettings &settings,
@@ -23,11 +23,11 @@ namespace FloorBlock::Solver
     {
       LinearSolveInfo info;
       info.used_direct = true;
-      dealii::SolverControl control(1, 0.);
+      dealii::SolverControl                                  control(1, 0.);
       dealii::TrilinosWrappers::SolverDirect::AdditionalData data(
         false, settings.direct_package);
       dealii::TrilinosWrappers::SolverDirect solver(control, data);
-      Vector trial(solution);
+      Vector                                 trial(solution);
       try
         {
           solver.solve(matrix, trial, rhs);
@@ -70,12 +70,12 @@ namespace FloorBlock::Solver
   }
 
   LinearSolveInfo
-  solve_linear_system(const LinearSolverSettings           &settings,
-                      const SparseMatrix                   &matrix,
-                      const Vector                         &rhs,
-                      const NearNullSpace                  &null_space,
-                      Vector                               &solution,
-                      const double                          forcing)
+  solve_linear_system(const LinearSolverSettings &settings,
+                      const SparseMatrix         &matrix,
+                      const Vector               &rhs,
+                      const NearNullSpace        &null_space,
+                      Vector                     &solution,
+                      const double                forcing)
   {
     return uses_direct_solver(settings, matrix.m()) ?
              solve_direct(settings, matrix, rhs, solution) :

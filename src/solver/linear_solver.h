@@ -49,9 +49,9 @@ namespace FloorBlock::Solver
   /** @brief What one linear solve did. */
   struct LinearSolveInfo
   {
-    bool         success       = false;
-    bool         used_direct   = false;
-    unsigned int n_iterations  = 0;
+    bool         success      = false;
+    bool         used_direct  = false;
+    unsigned int n_iterations = 0;
     std::string  message;
   };
 
@@ -90,11 +90,10 @@ namespace FloorBlock::Solver
                      const std::size_t           n_dofs);
 
   LinearSolveInfo
-  solve_linear_system(
-    const LinearSolverSettings                  &settings,
-    const dealii::TrilinosWrappers::SparseMatrix &matrix,
-    const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-    const NearNullSpace                          &null_space,
-    dealii::TrilinosWrappers::MPI::Vector        &solution,
-    double                                        forcing = 0.);
+  solve_linear_system(const LinearSolverSettings                   &settings,
+                      const dealii::TrilinosWrappers::SparseMatrix &matrix,
+                      const dealii::TrilinosWrappers::MPI::Vector  &rhs,
+                      const NearNullSpace                          &null_space,
+                      dealii::TrilinosWrappers::MPI::Vector        &solution,
+                      double forcing = 0.);
 } // namespace FloorBlock::Solver

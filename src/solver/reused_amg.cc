@@ -15,7 +15,8 @@ namespace FloorBlock::Solver
 {
   namespace
   {
-    /** ML smoother sweeps per level: two is ML's recommendation for elasticity. */
+    /** ML smoother sweeps per level: two is ML's recommendation for elasticity.
+     */
     constexpr unsigned int ml_smoother_sweeps = 2;
     /**
      * W-cycles: each coarse level is visited twice per cycle. With a
@@ -71,8 +72,8 @@ namespace FloorBlock::Solver
     if (!null_space.modes.empty())
       {
         if (!ml_null_space)
-          ml_null_space = null_space_for_ml(
-            null_space, matrix.trilinos_matrix().DomainMap());
+          ml_null_space =
+            null_space_for_ml(null_space, matrix.trilinos_matrix().DomainMap());
         parameters.set("PDE equations",
                        static_cast<int>(null_space.n_components));
         parameters.set("null space: type", "pre-computed");
@@ -89,10 +90,10 @@ namespace FloorBlock::Solver
   bool
   ReusedAmg::gmres(const dealii::TrilinosWrappers::SparseMatrix &matrix,
                    const dealii::TrilinosWrappers::MPI::Vector  &rhs,
-                   const double                 relative_tolerance,
-                   const unsigned int           max_iterations,
-                   dealii::TrilinosWrappers::MPI::Vector        &trial,
-                   LinearSolveInfo                              &info)
+                   const double                           relative_tolerance,
+                   const unsigned int                     max_iterations,
+                   dealii::TrilinosWrappers::MPI::Vector &trial,
+                   LinearSolveInfo                       &info)
   {
     // Silent: hitting the cap on a kept hierarchy is the expected signal
     // to rebuild it.
@@ -103,7 +104,7 @@ namespace FloorBlock::Solver
     dealii::TrilinosWrappers::SolverGMRES::AdditionalData data(
       false, gmres_restart_length);
     dealii::TrilinosWrappers::SolverGMRES solver(control, data);
-    trial = 0.;
+    trial          = 0.;
     bool converged = true;
     try
       {
@@ -126,8 +127,8 @@ namespace FloorBlock::Solver
   {
     ++counters.n_solves;
     LinearSolveInfo info;
-    const double tolerance = std::max(settings.relative_tolerance, forcing);
-    const double decades   = std::max(1., -std::log10(tolerance));
+    const double    tolerance = std::max(settings.relative_tolerance, forcing);
+    const double    decades   = std::max(1., -std::log10(tolerance));
     dealii::TrilinosWrappers::MPI::Vector trial(solution);
     try
       {
@@ -136,7 +137,7 @@ namespace FloorBlock::Solver
           {
             const auto allowance = static_cast<unsigned int>(std::ceil(
               reuse_allowance * fresh_iterations_per_decade * decades));
-            converged = gmres(matrix,
+            converged            = gmres(matrix,
                               rhs,
                               tolerance,
                               std::min(allowance, settings.max_iterations),
@@ -147,12 +148,8 @@ namespace FloorBlock::Solver
           {
             build(matrix);
             const unsigned int before = info.n_iterations;
-            if (!gmres(matrix,
-                       rhs,
-                       tolerance,
-                       settings.max_iterations,
-                       trial,
-                       info))
+            if (!gmres(
+                  matrix, rhs, tolerance, settings.max_iterations, trial, info))
               {
                 info.message = "GMRES + ML: no convergence in " +
                                std::to_string(settings.max_iterations) +

@@ -90,14 +90,15 @@ namespace FloorBlock::Solver
           dealii::TrilinosWrappers::MPI::Vector        &trial,
           LinearSolveInfo                              &info);
 
-    const LinearSolverSettings                settings;
-    const NearNullSpace                       null_space;
-    /** The modes as ML reads them (column-major), built with the first hierarchy. */
+    const LinearSolverSettings settings;
+    const NearNullSpace        null_space;
+    /** The modes as ML reads them (column-major), built with the first
+     * hierarchy. */
     std::unique_ptr<Epetra_MultiVector>       ml_null_space;
     dealii::TrilinosWrappers::PreconditionAMG preconditioner;
     bool                                      has_hierarchy = false;
     /** GMRES iterations per decade of reduction on the last fresh hierarchy. */
-    double                                    fresh_iterations_per_decade = 0.;
-    AmgStatistics                             counters;
+    double        fresh_iterations_per_decade = 0.;
+    AmgStatistics counters;
   };
 } // namespace FloorBlock::Solver

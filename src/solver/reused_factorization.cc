@@ -17,8 +17,8 @@ namespace FloorBlock::Solver
 {
   namespace
   {
-    using dealii::TrilinosWrappers::MPI::Vector;
     using dealii::TrilinosWrappers::SparseMatrix;
+    using dealii::TrilinosWrappers::MPI::Vector;
 
     /**
      * GMRES iterations allowed on fresh factors: one suffices in exact
@@ -50,8 +50,7 @@ namespace FloorBlock::Solver
           left.ExtractMyRowView(row, n_left, values_left, columns_left);
           right.ExtractMyRowView(row, n_right, values_right, columns_right);
           if (n_left != n_right ||
-              !std::equal(columns_left, columns_left + n_left,
-                          columns_right) ||
+              !std::equal(columns_left, columns_left + n_left, columns_right) ||
               !std::equal(values_left, values_left + n_left, values_right))
             ++count;
         }
@@ -59,8 +58,7 @@ namespace FloorBlock::Solver
     }
   } // namespace
 
-  ReusedFactorization::ReusedFactorization(
-    const LinearSolverSettings &settings)
+  ReusedFactorization::ReusedFactorization(const LinearSolverSettings &settings)
     : settings(settings)
   {}
 
@@ -76,7 +74,7 @@ namespace FloorBlock::Solver
   ReusedFactorization::factorize(const SparseMatrix &matrix,
                                  std::string        &message)
   {
-    has_factors = false;
+    has_factors      = false;
     const bool first = factored_matrix.m() == 0;
     if (first)
       {
@@ -84,10 +82,9 @@ namespace FloorBlock::Solver
         const bool serial = matrix.trilinos_matrix().NumMyRows() ==
                             matrix.trilinos_matrix().NumGlobalRows();
         const bool use_umfpack =
-          serial &&
-          (settings.direct_solver == DirectSolverKind::umfpack ||
-           (settings.direct_solver == DirectSolverKind::automatic &&
-            matrix.m() >= settings.min_umfpack_dofs));
+          serial && (settings.direct_solver == DirectSolverKind::umfpack ||
+                     (settings.direct_solver == DirectSolverKind::automatic &&
+                      matrix.m() >= settings.min_umfpack_dofs));
         package = use_umfpack ? "UMFPACK" : settings.direct_package;
         if (use_umfpack)
           umfpack = std::make_unique<UmfpackFactors>();
@@ -128,8 +125,8 @@ namespace FloorBlock::Solver
               }
             if (direct->NumericFactorization() != 0)
               {
-                message = package +
-                          ": numeric factorisation failed (singular matrix)";
+                message =
+                  package + ": numeric factorisation failed (singular matrix)";
                 return false;
               }
           }
@@ -167,16 +164,15 @@ namespace FloorBlock::Solver
                                     Vector             &solution)
   {
     LinearSolveInfo info;
-    info.used_direct = true;
-    const double    target = settings.relative_tolerance * rhs.l2_norm();
+    info.used_direct    = true;
+    const double target = settings.relative_tolerance * rhs.l2_norm();
     // Silent: exceeding the cap is the expected signal to refactorise.
     dealii::SolverControl control(max_iterations, target, false, false);
     // Right preconditioning, so that the tolerance applies to the true
     // residual |b - A x|, not to the preconditioned one.
-    dealii::SolverGMRES<Vector>::AdditionalData data(max_iterations + 2,
-                                                     true);
-    dealii::SolverGMRES<Vector> gmres(control, data);
-    Vector trial(solution);
+    dealii::SolverGMRES<Vector>::AdditionalData data(max_iterations + 2, true);
+    dealii::SolverGMRES<Vector>                 gmres(control, data);
+    Vector                                      trial(solution);
     trial = 0.;
     try
       {
@@ -195,8 +191,8 @@ namespace FloorBlock::Solver
     counters.n_krylov_iterations += info.n_iterations;
     if (!has_only_finite_values(trial))
       {
-        info.message = package +
-                       " returned non-finite values (singular matrix)";
+        info.message =
+          package + " returned non-finite values (singular matrix)";
         return info;
       }
     // GMRES stops on its recursive residual estimate, which drifts from
@@ -237,8 +233,8 @@ namespace FloorBlock::Solver
       has_factors ? count_differing_rows(matrix, factored_matrix) : 0;
     if (has_factors && changed_rows < settings.max_reuse_iterations)
       {
-        const LinearSolveInfo reused = krylov_solve(
-          matrix, rhs, settings.max_reuse_iterations, solution);
+        const LinearSolveInfo reused =
+          krylov_solve(matrix, rhs, settings.max_reuse_iterations, solution);
         if (reused.success)
           {
             ++counters.n_reused;
@@ -268,15 +264,15 @@ namespace FloorBlock::Solver
       }
     if (!has_only_finite_values(trial))
       {
-        info.message = package +
-                       " returned non-finite values (singular matrix)";
+        info.message =
+          package + " returned non-finite values (singular matrix)";
         return info;
       }
     solution     = trial;
     info.success = true;
     ++counters.n_accepted_above_tolerance;
-    info.message       = "direct solution accepted above the residual "
-                         "tolerance (ill-conditioned matrix)";
+    info.message = "direct solution accepted above the residual "
+                   "tolerance (ill-conditioned matrix)";
     return info;
   }
 } // namespace FloorBlock::Solver

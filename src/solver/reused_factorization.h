@@ -99,10 +99,10 @@ namespace FloorBlock::Solver
     std::unique_ptr<Epetra_LinearProblem>  problem;
     std::unique_ptr<Amesos_BaseSolver>     direct;
     /** Set instead of @p direct when UMFPACK is chosen. */
-    std::unique_ptr<UmfpackFactors>        umfpack;
+    std::unique_ptr<UmfpackFactors> umfpack;
     /** Name of the LU in messages: "Amesos_Klu" or "UMFPACK". */
-    std::string                            package;
-    bool                                   has_factors = false;
-    ReuseStatistics                        counters;
+    std::string     package;
+    bool            has_factors = false;
+    ReuseStatistics counters;
   };
 } // namespace FloorBlock::Solver

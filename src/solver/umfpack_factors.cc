@@ -51,13 +51,13 @@ namespace FloorBlock::Solver
                                "one process, numbered 0 .. n-1");
     std::vector<SuiteSparse_long> new_row_start{0};
     std::vector<SuiteSparse_long> new_columns;
-    std::vector<double> new_values;
+    std::vector<double>           new_values;
     new_columns.reserve(matrix.NumMyNonzeros());
     new_values.reserve(matrix.NumMyNonzeros());
     std::vector<std::pair<SuiteSparse_long, double>> entries;
     for (int row = 0; row < matrix.NumMyRows(); ++row)
       {
-        int     n_entries = 0;
+        int     n_entries  = 0;
         double *row_values = nullptr;
         int    *indices    = nullptr;
         matrix.ExtractMyRowView(row, n_entries, row_values, indices);
@@ -110,12 +110,12 @@ namespace FloorBlock::Solver
     if (numeric != nullptr)
       umfpack_dl_free_numeric(&numeric);
     const SuiteSparse_long status = umfpack_dl_numeric(row_start.data(),
-                                           columns.data(),
-                                           values.data(),
-                                           symbolic,
-                                           &numeric,
-                                           control.data(),
-                                           nullptr);
+                                                       columns.data(),
+                                                       values.data(),
+                                                       symbolic,
+                                                       &numeric,
+                                                       control.data(),
+                                                       nullptr);
     if (status != UMFPACK_OK && numeric != nullptr)
       umfpack_dl_free_numeric(&numeric);
     check(status, "numeric factorisation");

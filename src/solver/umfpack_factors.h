@@ -67,9 +67,9 @@ namespace FloorBlock::Solver
     /** Compressed rows of A, read by UMFPACK as the columns of A^T. */
     std::vector<SuiteSparse_long> row_start;
     std::vector<SuiteSparse_long> columns;
-    std::vector<double> values;
-    std::vector<double> control;
-    void *symbolic = nullptr;
-    void *numeric  = nullptr;
+    std::vector<double>           values;
+    std::vector<double>           control;
+    void                         *symbolic = nullptr;
+    void                         *numeric  = nullptr;
   };
 } // namespace FloorBlock::Solver

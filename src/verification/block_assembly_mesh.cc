@@ -17,19 +17,20 @@ namespace FloorBlock::Verification
         const unsigned int first = vertices.size();
         for (unsigned int j = 0; j <= block.n_y; ++j)
           for (unsigned int i = 0; i <= block.n_x; ++i)
-            vertices.emplace_back(
-              block.x_min + (block.x_max - block.x_min) * i / block.n_x,
-              block.y_min + (block.y_max - block.y_min) * j / block.n_y);
+            vertices.emplace_back(block.x_min +
+                                    (block.x_max - block.x_min) * i / block.n_x,
+                                  block.y_min + (block.y_max - block.y_min) *
+                                                  j / block.n_y);
         for (unsigned int j = 0; j < block.n_y; ++j)
           for (unsigned int i = 0; i < block.n_x; ++i)
             {
               dealii::CellData<2> cell;
               const unsigned int  base = first + j * (block.n_x + 1) + i;
-              cell.vertices     = {base,
-                                   base + 1,
-                                   base + block.n_x + 1,
-                                   base + block.n_x + 2};
-              cell.material_id  = block.material;
+              cell.vertices            = {base,
+                                          base + 1,
+                                          base + block.n_x + 1,
+                                          base + block.n_x + 2};
+              cell.material_id         = block.material;
               cells.push_back(cell);
             }
       }
@@ -48,15 +49,13 @@ namespace FloorBlock::Verification
               if (std::abs(centre[0] - block.x_min) < tolerance)
                 face->set_boundary_id(block.left);
               else if (std::abs(centre[0] - block.x_max) < tolerance)
-                face->set_boundary_id(centre[1] > block.split_y ?
-                                        block.right_upper :
-                                        block.right);
+                face->set_boundary_id(
+                  centre[1] > block.split_y ? block.right_upper : block.right);
               else if (std::abs(centre[1] - block.y_min) < tolerance)
                 face->set_boundary_id(block.bottom);
               else if (std::abs(centre[1] - block.y_max) < tolerance)
-                face->set_boundary_id(centre[0] > block.split_x ?
-                                        block.top_right :
-                                        block.top);
+                face->set_boundary_id(
+                  centre[0] > block.split_x ? block.top_right : block.top);
             }
         }
   }

@@ -10,8 +10,8 @@ namespace FloorBlock::Verification
   /** A structured rectangular body of a verification mesh (m). */
   struct BlockSpec
   {
-    double x_min, x_max, y_min, y_max;
-    unsigned int n_x, n_y;
+    double                     x_min, x_max, y_min, y_max;
+    unsigned int               n_x, n_y;
     dealii::types::material_id material;
     dealii::types::boundary_id left, right, bottom, top;
     /** Faces of the right side above split_y get right_upper instead. */

@@ -13,7 +13,7 @@ namespace FloorBlock::Verification
 {
   namespace
   {
-    constexpr dealii::types::material_id body = 1;
+    constexpr dealii::types::material_id body           = 1;
     constexpr dealii::types::boundary_id contact_face   = 1;
     constexpr dealii::types::boundary_id symmetry_plane = 2;
     constexpr dealii::types::boundary_id loaded_face    = 3;
@@ -73,10 +73,10 @@ namespace FloorBlock::Verification
           for (const auto &cell : mesh.active_cell_iterators())
             {
               // Distance of the cell's nearest point to the fine disc.
-              const double distance = std::max(
-                0.,
-                cell->center().norm() - cell->diameter() / 2. -
-                  fine_zone_half_widths * half_width);
+              const double distance =
+                std::max(0.,
+                         cell->center().norm() - cell->diameter() / 2. -
+                           fine_zone_half_widths * half_width);
               // Edge length of a square cell of this diameter, with a
               // margin for round-off of equal sizes.
               if (cell->diameter() / std::sqrt(2.) >
@@ -96,8 +96,9 @@ namespace FloorBlock::Verification
   HertzResult
   run_hertz_verification(const HertzSettings &settings)
   {
-    const Material::ElasticLaw<2> law = Material::ElasticLaw<2>::from_youngs_poisson(
-      settings.youngs_modulus, settings.poissons_ratio);
+    const Material::ElasticLaw<2> law =
+      Material::ElasticLaw<2>::from_youngs_poisson(settings.youngs_modulus,
+                                                   settings.poissons_ratio);
     // Rigid counterpart: the contact modulus is the elastic body's
     // plane-strain modulus, 1/E* = (1 - nu^2)/E.
     const Analytic::HertzLineContact closed_form =
@@ -141,11 +142,10 @@ namespace FloorBlock::Verification
     Contact::ContactSolverSettings numerics;
     numerics.fe_degree   = settings.fe_degree;
     numerics.linear.kind = Solver::LinearSolverKind::direct;
-    Contact::ContactSolver<2> solver(mesh, scene, numerics);
+    Contact::ContactSolver<2>   solver(mesh, scene, numerics);
     const Contact::SolveResult  solved = solver.run();
-    const Contact::JointReport &report =
-      solved.increments.back().joints.at(0);
-    result.n_dofs = solved.n_dofs;
+    const Contact::JointReport &report = solved.increments.back().joints.at(0);
+    result.n_dofs                      = solved.n_dofs;
     for (const Contact::IncrementResult &increment : solved.increments)
       result.n_newton_iterations += increment.n_newton_iterations;
     result.contact_force = 2. * report.normal_force;
@@ -153,8 +153,8 @@ namespace FloorBlock::Verification
     // prints (make_joint_reports(): the end from the square-root fall of
     // the exact law's traction): the half model's contact is [0, a].
     result.half_width_computed = report.closed_length;
-    double last_closed = 0.,
-           first_open  = hertz_body_half_widths * result.half_width_exact;
+    double last_closed         = 0.,
+           first_open = hertz_body_half_widths * result.half_width_exact;
     for (const auto &sample : report.profile)
       {
         const double x = sample.position[0];

@@ -17,7 +17,7 @@ namespace FloorBlock::Verification
      * zone), so every radius, load and modulus gets the same resolution.
      */
     unsigned int          cells_per_half_width = 32;
-    Contact::JointLawKind law        = Contact::JointLawKind::rigid;
+    Contact::JointLawKind law                  = Contact::JointLawKind::rigid;
     /** Stiffness of the compliant law (Pa/m), ignored for rigid. */
     double       compliant_stiffness = 1e14;
     unsigned int fe_degree           = 1;
@@ -61,15 +61,17 @@ namespace FloorBlock::Verification
     /** Position of the last closed node (m): the discrete contact. */
     double last_closed_position = 0.;
     /** Distance between the last closed and the first open node (m). */
-    double contact_cell_size = 0.;
-    unsigned int n_dofs = 0;
+    double       contact_cell_size = 0.;
+    unsigned int n_dofs            = 0;
     /** Newton iterations, summed over the increments. */
     unsigned int n_newton_iterations = 0;
-    double       half_width_error() const
+    double
+    half_width_error() const
     {
       return half_width_computed / half_width_exact - 1.;
     }
-    double peak_pressure_error() const
+    double
+    peak_pressure_error() const
     {
       return peak_pressure_computed / peak_pressure_exact - 1.;
     }

@@ -12,14 +12,14 @@ namespace FloorBlock::Verification
   namespace
   {
     constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
-                                         block_top = 12;
+                                         block_top  = 12;
     constexpr dealii::types::boundary_id base_sides = 20, base_top = 21,
                                          base_bottom = 22;
     constexpr dealii::types::material_id block = 1, base = 2;
-    constexpr double density              = 2500.; // kg/m^3
-    constexpr double gravity_acceleration = 9.81;  // m/s^2
-    constexpr double block_width = 1., block_height = 0.5; // m
-    constexpr double base_depth  = 0.5;                     // m
+    constexpr double                     density              = 2500.; // kg/m^3
+    constexpr double                     gravity_acceleration = 9.81;  // m/s^2
+    constexpr double block_width = 1., block_height = 0.5;             // m
+    constexpr double base_depth = 0.5;                                 // m
 
     Contact::ContactProblem<2>
     incline_scene(const InclineSettings &settings)
@@ -28,8 +28,10 @@ namespace FloorBlock::Verification
       scene.model.laws.emplace(block, table_rock());
       scene.model.laws.emplace(base, table_rock());
       scene.model.densities[block] = density;
-      scene.model.gravity[0] = gravity_acceleration * std::sin(settings.incline);
-      scene.model.gravity[1] = -gravity_acceleration * std::cos(settings.incline);
+      scene.model.gravity[0] =
+        gravity_acceleration * std::sin(settings.incline);
+      scene.model.gravity[1] =
+        -gravity_acceleration * std::cos(settings.incline);
       scene.supports = {fixed_support(base_bottom, true, true)};
       Contact::JointDefinition<2> joint;
       joint.name                        = "bedding";
@@ -49,17 +51,34 @@ namespace FloorBlock::Verification
   run_incline_verification(const InclineSettings &settings)
   {
     dealii::Triangulation<2> mesh;
-    make_block_assembly({{0., block_width, 0., block_height, 8, 4, block,
-                          block_sides, block_sides, block_bottom, block_top},
-                         {0., block_width, -base_depth, 0., 8, 4, base,
-                          base_sides, base_sides, base_bottom, base_top}},
+    make_block_assembly({{0.,
+                          block_width,
+                          0.,
+                          block_height,
+                          8,
+                          4,
+                          block,
+                          block_sides,
+                          block_sides,
+                          block_bottom,
+                          block_top},
+                         {0.,
+                          block_width,
+                          -base_depth,
+                          0.,
+                          8,
+                          4,
+                          base,
+                          base_sides,
+                          base_sides,
+                          base_bottom,
+                          base_top}},
                         mesh);
     InclineResult result;
-    result.weight =
-      density * gravity_acceleration * block_width * block_height;
+    result.weight = density * gravity_acceleration * block_width * block_height;
     Contact::ContactSolver<2> solver(mesh,
-                                  incline_scene(settings),
-                                  verification_settings());
+                                     incline_scene(settings),
+                                     verification_settings());
     try
       {
         result.stuck = solver.run().increments.back();

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <contact/results.h>
 #include <contact/contact_problem.h>
+#include <contact/results.h>
 #include <verification/verification_setup.h>
 
 #include <optional>
@@ -13,10 +13,10 @@ namespace FloorBlock::Verification
   {
     double friction_angle = 30. * M_PI / 180.; ///< phi of the joint (rad)
     /** Incline alpha (rad); the block slips iff tan(alpha) > tan(phi). */
-    double incline          = 0.;
-    double normal_stiffness = 9e9;   ///< kn, Table 6.1 (Pa/m)
-    double shear_stiffness  = 6.7e9; ///< ks, Table 6.1 (Pa/m)
-    Contact::JointLawKind law = Contact::JointLawKind::compliant;
+    double                incline          = 0.;
+    double                normal_stiffness = 9e9;   ///< kn, Table 6.1 (Pa/m)
+    double                shear_stiffness  = 6.7e9; ///< ks, Table 6.1 (Pa/m)
+    Contact::JointLawKind law              = Contact::JointLawKind::compliant;
   };
 
   /** @brief Outcome of the incline case: stuck with forces, or slipping. */

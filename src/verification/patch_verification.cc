@@ -26,10 +26,28 @@ namespace FloorBlock::Verification
   {
     dealii::Triangulation<2> mesh;
     // Different cell counts across the joint in y, matching in x.
-    make_block_assembly({{0., joint_length, 0., 1., 4, 3, 1, lower_left,
-                          lower_right, lower_bottom, lower_top},
-                         {0., joint_length, 1., 2., 4, 5, 2, upper_left,
-                          upper_right, upper_bottom, upper_top}},
+    make_block_assembly({{0.,
+                          joint_length,
+                          0.,
+                          1.,
+                          4,
+                          3,
+                          1,
+                          lower_left,
+                          lower_right,
+                          lower_bottom,
+                          lower_top},
+                         {0.,
+                          joint_length,
+                          1.,
+                          2.,
+                          4,
+                          5,
+                          2,
+                          upper_left,
+                          upper_right,
+                          upper_bottom,
+                          upper_top}},
                         mesh);
     Contact::ContactProblem<2> scene;
     scene.model.laws.emplace(1, table_rock());
@@ -53,7 +71,7 @@ namespace FloorBlock::Verification
     Contact::ContactSolverSettings numerics =
       verification_settings(settings.fe_degree);
     numerics.linear.kind = settings.linear_solver;
-    Contact::ContactSolver<2> solver(mesh, scene, numerics);
+    Contact::ContactSolver<2>  solver(mesh, scene, numerics);
     const Contact::SolveResult solved = solver.run();
     PatchResult                result;
     result.increment        = solved.increments.back();

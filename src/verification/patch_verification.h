@@ -1,7 +1,7 @@
 #pragma once
 
-#include <contact/results.h>
 #include <contact/contact_problem.h>
+#include <contact/results.h>
 #include <verification/verification_setup.h>
 
 namespace FloorBlock::Verification
@@ -17,8 +17,8 @@ namespace FloorBlock::Verification
   struct PatchSettings
   {
     double pressure = 2e6; ///< applied on the top of the upper body (Pa)
-    Contact::JointLawKind    law       = Contact::JointLawKind::compliant;
-    unsigned int             fe_degree = 1;
+    Contact::JointLawKind    law           = Contact::JointLawKind::compliant;
+    unsigned int             fe_degree     = 1;
     Solver::LinearSolverKind linear_solver = Solver::LinearSolverKind::direct;
   };
 

@@ -27,7 +27,7 @@ namespace FloorBlock::Verification
     constexpr double base_size    = 3.;   // m, width and depth of the base
     constexpr double cell_size    = 0.25; // m, before refinement
     constexpr double stuck_friction_coefficient = 10.;
-    constexpr double pi = 3.14159265358979323846;
+    constexpr double pi                         = 3.14159265358979323846;
 
     /**
      * Square cells of 0.25 m on both bodies, aligned at the interface, then
@@ -42,12 +42,28 @@ namespace FloorBlock::Verification
       const auto cells = [](const double length) {
         return static_cast<unsigned int>(std::lround(length / cell_size));
       };
-      BlockSpec upper{0., half_width, 0., block_height, cells(half_width),
-                      cells(block_height), block, block_axis, block_side,
-                      block_bottom, block_top};
-      BlockSpec lower{0., base_size, -base_size, 0., cells(base_size),
-                      cells(base_size), base, base_axis, base_side,
-                      base_bottom, base_contact};
+      BlockSpec upper{0.,
+                      half_width,
+                      0.,
+                      block_height,
+                      cells(half_width),
+                      cells(block_height),
+                      block,
+                      block_axis,
+                      block_side,
+                      block_bottom,
+                      block_top};
+      BlockSpec lower{0.,
+                      base_size,
+                      -base_size,
+                      0.,
+                      cells(base_size),
+                      cells(base_size),
+                      base,
+                      base_axis,
+                      base_side,
+                      base_bottom,
+                      base_contact};
       lower.split_x   = half_width;
       lower.top_right = base_free_top;
       make_block_assembly({upper, lower}, mesh);
@@ -81,7 +97,7 @@ namespace FloorBlock::Verification
     result.state = state;
 
     Analytic::WedgePair corner;
-    corner.first_angle = pi / 2.;
+    corner.first_angle  = pi / 2.;
     corner.second_angle = pi;
     const double shear_modulus =
       settings.youngs_modulus / (2. * (1. + settings.poissons_ratio));
@@ -98,14 +114,15 @@ namespace FloorBlock::Verification
     result.smallest_cell = smallest_cell(mesh);
 
     Contact::ContactProblem<2> scene;
-    const auto law = Material::ElasticLaw<2>::from_youngs_poisson(
-      settings.youngs_modulus, settings.poissons_ratio);
+    const auto                 law =
+      Material::ElasticLaw<2>::from_youngs_poisson(settings.youngs_modulus,
+                                                   settings.poissons_ratio);
     scene.model.laws.emplace(block, law);
     scene.model.laws.emplace(base, law);
     scene.model.pressures[block_top] = settings.pressure;
-    scene.supports = {fixed_support(block_axis, true, false),
-                      fixed_support(base_axis, true, false),
-                      fixed_support(base_bottom, true, true)};
+    scene.supports                   = {fixed_support(block_axis, true, false),
+                                        fixed_support(base_axis, true, false),
+                                        fixed_support(base_bottom, true, true)};
     Contact::JointDefinition<2> interface;
     interface.name   = "punch";
     interface.side_a = base_contact;
@@ -118,9 +135,9 @@ namespace FloorBlock::Verification
     scene.joints = {interface};
     scene.steps  = {0, 1, 0};
 
-    Contact::ContactSolver<2> solver(mesh, scene, verification_settings());
+    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
     const Contact::SolveResult solved = solver.run();
-    result.n_dofs = solved.n_dofs;
+    result.n_dofs                     = solved.n_dofs;
 
     // Interface pressure against the distance r of its node from the
     // corner, over the fit range.

@@ -48,9 +48,9 @@ namespace FloorBlock::Verification
     double fit_to   = 0.; ///< largest (m)
     unsigned int n_fit_points = 0;
     /** Root-mean-square relative residual of the two-term fit (-). */
-    double fit_residual   = 0.;
-    double smallest_cell  = 0.; ///< m, at the corner
-    unsigned int n_dofs   = 0;
+    double       fit_residual  = 0.;
+    double       smallest_cell = 0.; ///< m, at the corner
+    unsigned int n_dofs        = 0;
   };
 
   /**
@@ -66,8 +66,8 @@ namespace FloorBlock::Verification
    * (Analytic::corner_modes()).
    */
   PunchCase
-  run_punch_case(const PunchSettings             &settings,
-                 const Analytic::InterfaceState   state);
+  run_punch_case(const PunchSettings           &settings,
+                 const Analytic::InterfaceState state);
 
   /**
    * Fit range, inner end, in smallest cells from the corner: the nodal

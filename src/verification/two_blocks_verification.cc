@@ -22,29 +22,58 @@ namespace FloorBlock::Verification
                                          base_bottom = 33;
     constexpr dealii::types::material_id left_block = 1, right_block = 2,
                                          base = 3;
-    constexpr double block_height  = 2.;  // m
-    constexpr double block_width   = 1.;  // m
-    constexpr double base_depth    = 0.5; // m
-    constexpr double loaded_from_y = 1.5; // m, lateral load on the upper quarter
-    constexpr double density       = 2500.; // kg/m^3
-    constexpr double gravity_acceleration = 9.81; // m/s^2
+    constexpr double block_height             = 2.;  // m
+    constexpr double block_width              = 1.;  // m
+    constexpr double base_depth               = 0.5; // m
+    constexpr double loaded_from_y =
+      1.5; // m, lateral load on the upper quarter
+    constexpr double density                 = 2500.; // kg/m^3
+    constexpr double gravity_acceleration    = 9.81;  // m/s^2
     constexpr double vertical_friction_angle = Units::degrees_to_radians(30.);
   } // namespace
 
   TwoBlocksResult
   run_two_blocks_verification(const TwoBlocksSettings &settings)
   {
-    const unsigned int n_x = settings.cells_per_metre;
-    const unsigned int n_y = 2 * settings.cells_per_metre;
+    const unsigned int       n_x = settings.cells_per_metre;
+    const unsigned int       n_y = 2 * settings.cells_per_metre;
     dealii::Triangulation<2> mesh;
-    make_block_assembly(
-      {{-block_width, 0., 0., block_height, n_x, n_y, left_block, left_outer,
-        left_joint, left_bottom, left_top},
-       {0., block_width, 0., block_height, n_x, n_y, right_block, right_joint,
-        right_outer, right_bottom, right_top, loaded_from_y, right_outer_upper},
-       {0., block_width, -base_depth, 0., n_x, n_x / 2, base, base_sides,
-        base_sides, base_bottom, base_top}},
-      mesh);
+    make_block_assembly({{-block_width,
+                          0.,
+                          0.,
+                          block_height,
+                          n_x,
+                          n_y,
+                          left_block,
+                          left_outer,
+                          left_joint,
+                          left_bottom,
+                          left_top},
+                         {0.,
+                          block_width,
+                          0.,
+                          block_height,
+                          n_x,
+                          n_y,
+                          right_block,
+                          right_joint,
+                          right_outer,
+                          right_bottom,
+                          right_top,
+                          loaded_from_y,
+                          right_outer_upper},
+                         {0.,
+                          block_width,
+                          -base_depth,
+                          0.,
+                          n_x,
+                          n_x / 2,
+                          base,
+                          base_sides,
+                          base_sides,
+                          base_bottom,
+                          base_top}},
+                        mesh);
     // The blocks mirror each other about the joint x = 0, so flagging by
     // distance to the corner refines both sides of the joint alike: the
     // new joint nodes, hanging ones included, keep their partners.
@@ -59,7 +88,8 @@ namespace FloorBlock::Verification
         mesh.execute_coarsening_and_refinement();
       }
     Contact::ContactProblem<2> scene;
-    for (const dealii::types::material_id body : {left_block, right_block, base})
+    for (const dealii::types::material_id body :
+         {left_block, right_block, base})
       scene.model.laws.emplace(body, table_rock());
     scene.model.densities[right_block]       = density;
     scene.model.gravity[1]                   = -gravity_acceleration;
@@ -87,9 +117,9 @@ namespace FloorBlock::Verification
     // alone, frictionless bedding and an opening joint would leave the
     // right block a horizontal mechanism with no unique answer.
     scene.steps = {0, 2, 0};
-    Contact::ContactSolver<2> solver(mesh, scene, verification_settings());
-    const Contact::SolveResult      solved = solver.run();
-    const Contact::IncrementResult &last   = solved.increments.back();
+    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
+    const Contact::SolveResult solved    = solver.run();
+    const Contact::IncrementResult &last = solved.increments.back();
     TwoBlocksResult                 result;
     result.applied_lateral_force =
       settings.lateral_pressure * (block_height - loaded_from_y);

@@ -10,7 +10,7 @@ namespace FloorBlock::Verification
   {
     /** Cells per metre of the structured meshes (blocks 1 m x 2 m). */
     unsigned int          cells_per_metre = 4;
-    Contact::JointLawKind law = Contact::JointLawKind::compliant;
+    Contact::JointLawKind law             = Contact::JointLawKind::compliant;
     double joint_stiffness  = 9e9; ///< kn = ks, compliant law (Pa/m)
     double lateral_pressure = 4e5; ///< on the upper quarter (Pa)
     /**
@@ -18,7 +18,7 @@ namespace FloorBlock::Verification
      * corner_refinement_radius of the joint's top corner, on both sides
      * alike so that the joint sides still match node by node.
      */
-    unsigned int corner_refinements      = 0;
+    unsigned int corner_refinements       = 0;
     double       corner_refinement_radius = 0.6; ///< m
   };
 

@@ -20,10 +20,10 @@ namespace FloorBlock::Verification
   verification_settings(const unsigned int fe_degree = 1)
   {
     Contact::ContactSolverSettings settings;
-    settings.fe_degree                  = fe_degree;
-    settings.linear.kind                = Solver::LinearSolverKind::direct;
-    settings.newton.relative_tolerance  = 1e-12;
-    settings.max_cutbacks               = 3;
+    settings.fe_degree                 = fe_degree;
+    settings.linear.kind               = Solver::LinearSolverKind::direct;
+    settings.newton.relative_tolerance = 1e-12;
+    settings.max_cutbacks              = 3;
     return settings;
   }
 

@@ -1,7 +1,3 @@
-#include "direct_solver_phases.h"
-
-#include "measurements.h"
-
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_CrsMatrix.h>
@@ -10,6 +6,9 @@
 
 #include <memory>
 #include <stdexcept>
+
+#include "direct_solver_phases.h"
+#include "measurements.h"
 
 namespace FloorBlock::Benchmark
 {
@@ -21,10 +20,10 @@ namespace FloorBlock::Benchmark
     // Amesos takes non-const pointers but does not modify the matrix.
     auto &operator_matrix =
       const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
-    Epetra_MultiVector right_hand_side(rhs.trilinos_vector());
-    Epetra_MultiVector solution(operator_matrix.DomainMap(), 1);
+    Epetra_MultiVector   right_hand_side(rhs.trilinos_vector());
+    Epetra_MultiVector   solution(operator_matrix.DomainMap(), 1);
     Epetra_LinearProblem problem(&operator_matrix, &solution, &right_hand_side);
-    Amesos factory;
+    Amesos               factory;
     std::unique_ptr<Amesos_BaseSolver> solver(
       factory.Create(package.c_str(), problem));
     if (!solver)

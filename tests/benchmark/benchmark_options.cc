@@ -23,7 +23,8 @@ namespace FloorBlock::Benchmark
           std::istringstream value_text(item);
           Number             value{};
           if (!(value_text >> value) || !(value > 0))
-            throw InputError(flag, text,
+            throw InputError(flag,
+                             text,
                              "a comma-separated list of positive numbers");
           values.push_back(value);
         }
@@ -59,8 +60,8 @@ namespace FloorBlock::Benchmark
         const std::string argument = argv[i];
         const auto        value_of = [&](const std::string &flag) {
           return argument.rfind(flag + "=", 0) == 0 ?
-                   argument.substr(flag.size() + 1) :
-                   std::string();
+                          argument.substr(flag.size() + 1) :
+                          std::string();
         };
         if (!value_of("--scene").empty())
           options.scene_path = value_of("--scene");
@@ -72,11 +73,13 @@ namespace FloorBlock::Benchmark
         else if (!value_of("--laws").empty())
           options.joint_laws = law_list(value_of("--laws"));
         else if (!value_of("--hertz_cells").empty())
-          options.hertz_cells_per_half_width = number_list<unsigned int>(
-            "--hertz_cells", value_of("--hertz_cells"));
+          options.hertz_cells_per_half_width =
+            number_list<unsigned int>("--hertz_cells",
+                                      value_of("--hertz_cells"));
         else if (!value_of("--level_time_limit").empty())
-          options.level_time_limit = number_list<double>(
-            "--level_time_limit", value_of("--level_time_limit"))[0];
+          options.level_time_limit =
+            number_list<double>("--level_time_limit",
+                                value_of("--level_time_limit"))[0];
         else
           argv[kept++] = argv[i];
       }

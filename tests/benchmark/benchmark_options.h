@@ -29,7 +29,8 @@ namespace FloorBlock::Benchmark
 
   /**
    * @brief Takes --scene=, --set= (repeatable), --refinements=, --laws=,
-   * --hertz_levels= and --level_time_limit= out of argv (the rest stays for Google Benchmark).
+   * --hertz_levels= and --level_time_limit= out of argv (the rest stays for
+   * Google Benchmark).
    * @throws InputError naming the flag and the bad value.
    */
   BenchmarkOptions

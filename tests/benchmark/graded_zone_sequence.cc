@@ -19,7 +19,8 @@
 // Usage:
 //   floorblock_graded_zone_sequence <scene.prm> <h_c mm> <g> <h_j mm> <steps>
 //       [--fixed-growth] [--fixed-corner] [--check] [--halvings N]
-//       [--from-halving K] [--all-peaks] [--all-ends] [--set "Section/Name=value"]...
+//       [--from-halving K] [--all-peaks] [--all-ends] [--set
+//       "Section/Name=value"]...
 // --check solves the last step once more with every cell halved and prints
 // `run`'s two-grid estimate of the last step from it
 // (Pipeline::refined_solve_error: 6 times the difference plus the ends'
@@ -41,6 +42,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,8 +52,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace
 {
   using namespace FloorBlock;
@@ -58,17 +59,17 @@ namespace
   struct Options
   {
     std::string              scene_file;
-    double                   corner_size = 0.; // m
-    double                   growth_rate = 0.;
-    double                   line_size   = 0.; // m
-    int                      steps       = 0;
-    bool                     fixed_growth = false;
-    bool                     fixed_corner = false;
-    bool                     check        = false;
-    unsigned int             halvings     = 0;
+    double                   corner_size   = 0.; // m
+    double                   growth_rate   = 0.;
+    double                   line_size     = 0.; // m
+    int                      steps         = 0;
+    bool                     fixed_growth  = false;
+    bool                     fixed_corner  = false;
+    bool                     check         = false;
+    unsigned int             halvings      = 0;
     unsigned int             first_halving = 1;
-    bool                     all_peaks    = false;
-    bool                     all_ends     = false;
+    bool                     all_peaks     = false;
+    bool                     all_ends      = false;
     std::vector<std::string> overrides;
   };
 
@@ -77,11 +78,12 @@ namespace
   {
     if (argc < 6)
       {
-        std::fprintf(stderr,
-                     "usage: %s <scene.prm> <h_c mm> <g> <h_j mm> <steps> "
-                     "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--from-halving K] [--all-peaks] [--all-ends] [--set "
-                     "\"Section/Name=value\"]...\n",
-                     argv[0]);
+        std::fprintf(
+          stderr,
+          "usage: %s <scene.prm> <h_c mm> <g> <h_j mm> <steps> "
+          "[--fixed-growth] [--fixed-corner] [--check] [--halvings N] [--from-halving K] [--all-peaks] [--all-ends] [--set "
+          "\"Section/Name=value\"]...\n",
+          argv[0]);
         std::exit(2);
       }
     Options options;
@@ -184,12 +186,16 @@ namespace
              const double                line_size,
              const Pipeline::FemOutcome &outcome,
              const std::string          &face,
-             const double               wall_time)
+             const double                wall_time)
   {
     const Contact::JointReport *joint = face_joint(outcome, face);
     std::printf("%4d %10.4g %8.4g %10.4g %9u %8.1f %9s %16.4f %14.4f %12.1f\n",
-                step, corner_size * 1e3, growth_rate, line_size * 1e3,
-                static_cast<unsigned int>(outcome.result.n_dofs), wall_time,
+                step,
+                corner_size * 1e3,
+                growth_rate,
+                line_size * 1e3,
+                static_cast<unsigned int>(outcome.result.n_dofs),
+                wall_time,
                 outcome.converged ? "yes" : "no",
                 joint ? joint->closed_length * 1e3 : 0.,
                 joint ? joint->closed_length_uncertainty * 1e3 : 0.,
@@ -202,34 +208,36 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const Options options = parse(argc, argv);
-  const auto    scene =
+  const Options                            options = parse(argc, argv);
+  const auto                               scene =
     Parameters::read_scenario(options.scene_file, options.overrides);
   const std::string face = Compare::face_joint_name(scene.geometry.n_blocks);
   const std::filesystem::path folder =
     std::filesystem::temp_directory_path() /
     ("floorblock_graded_zone_sequence_" + std::to_string(::getpid()));
 
-  Pipeline::AdaptiveLevels levels(
-    scene, Pipeline::bounded_refinement({}, scene), 0.);
+  Pipeline::AdaptiveLevels levels(scene,
+                                  Pipeline::bounded_refinement({}, scene),
+                                  0.);
   std::printf("step  h_c (mm)        g   h_j (mm)      DoFs  solve_s converged "
               "contact_length_mm uncertainty_mm  Q_kN_per_m\n");
   dealii::Timer        timer;
   Pipeline::FemOutcome outcome =
-    levels.solve_next(Output::ResultFolder((folder / "step_0").string()), false);
+    levels.solve_next(Output::ResultFolder((folder / "step_0").string()),
+                      false);
   print_step(0, 0., 0., 0., outcome, face, timer.wall_time());
   for (int step = 1; step <= options.steps && outcome.converged; ++step)
     {
       const Contact::JointReport *joint = face_joint(outcome, face);
       if (joint == nullptr)
         break;
-      const double halving     = std::exp2(-double(step - 1));
+      const double halving = std::exp2(-double(step - 1));
       const double corner_size =
         options.corner_size * (options.fixed_corner ? 1. : halving);
-      const double growth_rate =
-        options.fixed_growth ? options.growth_rate :
-                               1. + (options.growth_rate - 1.) * halving;
-      const double line_size = options.line_size * halving;
+      const double                     growth_rate = options.fixed_growth ?
+                                                       options.growth_rate :
+                                                       1. + (options.growth_rate - 1.) * halving;
+      const double                     line_size = options.line_size * halving;
       std::vector<Geometry::LocalSize> requests =
         zone_requests(*joint, corner_size, line_size);
       if (options.all_peaks)
@@ -241,29 +249,36 @@ main(int argc, char **argv)
         for (const auto &other : outcome.result.increments.back().joints)
           if (!other.profile.empty())
             {
-              const auto [first, last] = std::minmax_element(
-                other.profile.begin(), other.profile.end(),
-                [](const auto &a, const auto &b) {
-                  return a.arc_position < b.arc_position;
-                });
+              const auto [first, last] =
+                std::minmax_element(other.profile.begin(),
+                                    other.profile.end(),
+                                    [](const auto &a, const auto &b) {
+                                      return a.arc_position < b.arc_position;
+                                    });
               for (const auto *end : {&*first, &*last})
                 requests.push_back(
                   {{end->position[0], end->position[1]}, corner_size});
             }
       timer.restart();
       outcome = levels.solve_refined_toward(
-        requests, growth_rate,
-        Output::ResultFolder((folder / ("step_" + std::to_string(step)))
-                               .string()),
+        requests,
+        growth_rate,
+        Output::ResultFolder(
+          (folder / ("step_" + std::to_string(step))).string()),
         false);
-      print_step(step, corner_size, growth_rate, line_size, outcome, face,
+      print_step(step,
+                 corner_size,
+                 growth_rate,
+                 line_size,
+                 outcome,
+                 face,
                  timer.wall_time());
     }
   if (options.check && outcome.converged)
     {
       timer.restart();
-      const Pipeline::FemOutcome halved = levels.solve_halved(
-        Output::ResultFolder((folder / "check").string()));
+      const Pipeline::FemOutcome halved =
+        levels.solve_halved(Output::ResultFolder((folder / "check").string()));
       print_step(-1, 0., 0., 0., halved, face, timer.wall_time());
       const Output::FemErrorEstimate estimate =
         Pipeline::refined_solve_error(outcome, halved);
@@ -273,7 +288,8 @@ main(int argc, char **argv)
             estimate.joints.at(face).contact_length;
           std::printf("check: contact length %.4f mm +- %.4f mm (%.3g %%), "
                       "halved %.4f mm\n",
-                      length.value * 1e3, length.absolute_error * 1e3,
+                      length.value * 1e3,
+                      length.absolute_error * 1e3,
                       100. * length.relative_error.value_or(0.),
                       length.refined_value * 1e3);
         }
@@ -288,11 +304,11 @@ main(int argc, char **argv)
     {
       timer.restart();
       const Pipeline::FemOutcome halved = levels.solve_halved(
-        Output::ResultFolder((folder / ("halved_" + std::to_string(times)))
-                               .string()),
+        Output::ResultFolder(
+          (folder / ("halved_" + std::to_string(times))).string()),
         times);
-      print_step(-static_cast<int>(times), 0., 0., 0., halved, face,
-                 timer.wall_time());
+      print_step(
+        -static_cast<int>(times), 0., 0., 0., halved, face, timer.wall_time());
     }
   std::printf("files: %s\n", folder.c_str());
   return outcome.converged ? 0 : 1;

@@ -19,9 +19,9 @@ namespace FloorBlock::Benchmark
         const auto path_start = line.find('/');
         if (path_start == std::string::npos)
           continue;
-        const std::string path = line.substr(path_start);
-        const std::string file = path.substr(path.rfind('/') + 1);
-        const bool is_blas = file.find("blas") != std::string::npos ||
+        const std::string path    = line.substr(path_start);
+        const std::string file    = path.substr(path.rfind('/') + 1);
+        const bool        is_blas = file.find("blas") != std::string::npos ||
                              file.find("lapack") != std::string::npos;
         // libgslcblas (GSL) and libCombBLAS (graph algorithms) are not the
         // BLAS that Trilinos calls.
@@ -33,16 +33,20 @@ namespace FloorBlock::Benchmark
           blas.libraries.push_back(path);
       }
     const bool openblas =
-      std::any_of(blas.libraries.begin(), blas.libraries.end(),
+      std::any_of(blas.libraries.begin(),
+                  blas.libraries.end(),
                   [](const std::string &path) {
                     return path.find("openblas") != std::string::npos;
                   });
     const bool reference =
-      std::any_of(blas.libraries.begin(), blas.libraries.end(),
+      std::any_of(blas.libraries.begin(),
+                  blas.libraries.end(),
                   [](const std::string &path) {
                     return path.find("/blas/libblas") != std::string::npos;
                   });
-    blas.name = openblas ? "OpenBLAS" : reference ? "reference BLAS" : "unknown";
+    blas.name = openblas  ? "OpenBLAS" :
+                reference ? "reference BLAS" :
+                            "unknown";
 
     using SetThreads = void (*)(int);
     if (const auto set_threads = reinterpret_cast<SetThreads>(

@@ -3,12 +3,6 @@
 // contact solve on refined meshes, and the Hertz verification, through the
 // project's own library code; prints Google Benchmark's table, then a
 // markdown summary (tables, fitted exponents, cost ratios). Not a test.
-#include "benchmark_options.h"
-#include "loaded_blas.h"
-#include "measurements.h"
-#include "scene_benchmarks.h"
-#include "summary_report.h"
-
 #include <common/input_error.h>
 
 #include <deal.II/base/mpi.h>
@@ -20,13 +14,19 @@
 #include <string>
 #include <thread>
 
+#include "benchmark_options.h"
+#include "loaded_blas.h"
+#include "measurements.h"
+#include "scene_benchmarks.h"
+#include "summary_report.h"
+
 int
 main(int argc, char **argv)
 {
   using namespace FloorBlock::Benchmark;
   // One thread: the numbers are per core, and the machine is shared.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  RunContext context;
+  RunContext                               context;
   context.blas        = inspect_and_limit_blas();
   context.load_before = load_average();
   context.n_cores     = std::thread::hardware_concurrency();
@@ -34,10 +34,8 @@ main(int argc, char **argv)
   BenchmarkOptions options;
   try
     {
-      options = parse_options(argc,
-                              argv,
-                              std::string(FLOORBLOCK_SOURCE_DIR) +
-                                "/params/default.prm");
+      options = parse_options(
+        argc, argv, std::string(FLOORBLOCK_SOURCE_DIR) + "/params/default.prm");
     }
   catch (const FloorBlock::InputError &error)
     {

@@ -38,10 +38,10 @@ namespace FloorBlock::Benchmark
     bool         converged = false;
     std::string  failure;
     StageTime    time; ///< ContactSolver construction + run()
-    unsigned int n_dofs               = 0;
-    unsigned int n_increments         = 0;
-    unsigned int n_newton_iterations  = 0;
-    unsigned int n_cutbacks           = 0;
+    unsigned int n_dofs              = 0;
+    unsigned int n_increments        = 0;
+    unsigned int n_newton_iterations = 0;
+    unsigned int n_cutbacks          = 0;
     /** Closed length of the face joint at the end of the loading path (m). */
     double face_contact_length = 0.;
     /** The solver's TimerOutput sections (wall, s). */
@@ -51,22 +51,22 @@ namespace FloorBlock::Benchmark
   /** @brief Everything measured on one mesh of the default scene. */
   struct LevelRecord
   {
-    double       refinement = 1.; ///< mesh sizes divided by this
-    unsigned int n_cells    = 0;
-    unsigned int n_dofs     = 0;
+    double       refinement      = 1.; ///< mesh sizes divided by this
+    unsigned int n_cells         = 0;
+    unsigned int n_dofs          = 0;
     unsigned int n_contact_pairs = 0;
     bool         direct_solver   = true;
-    std::map<std::string, StageTime>          stages;   ///< by stage name
+    std::map<std::string, StageTime> stages; ///< by stage name
     /** CPU time (s) per phase, per direct solver ("KLU", "UMFPACK"). */
     std::map<std::string, std::map<std::string, double>> direct_phases;
-    std::map<std::string, ContactSolveRecord> solves;   ///< by joint law
+    std::map<std::string, ContactSolveRecord> solves; ///< by joint law
   };
 
   /** @brief One Hertz verification run. */
   struct HertzRecord
   {
     unsigned int cells_per_half_width = 0;
-    unsigned int n_dofs     = 0;
+    unsigned int n_dofs               = 0;
     unsigned int n_newton_iterations  = 0;
     StageTime    time;
     double       half_width_error    = 0.; ///< relative (-)

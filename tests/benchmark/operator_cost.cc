@@ -109,11 +109,8 @@ namespace
     void
     vmult(Vector &dst, const Vector &src) const
     {
-      matrix_free.cell_loop(&MatrixFreeElasticity::apply_cells,
-                            this,
-                            dst,
-                            src,
-                            true);
+      matrix_free.cell_loop(
+        &MatrixFreeElasticity::apply_cells, this, dst, src, true);
     }
 
     std::size_t
@@ -180,7 +177,7 @@ namespace
     Triangulation<dim> mesh;
     make_distorted_box(mesh, cells_per_edge);
     const FloorBlock::Fem::FeSpace<dim> space(mesh, degree);
-    AffineConstraints<double> constraints; // none: the products alone
+    AffineConstraints<double>           constraints; // none: the products alone
     constraints.close();
     const double n_dofs = space.dof_handler().n_dofs();
 
@@ -210,8 +207,8 @@ namespace
     op.initialize_vector(y);
     for (unsigned int i = 0; i < x.locally_owned_size(); ++i)
       x.local_element(i) = std::sin(0.001 * i);
-    const double mf_s = best_time_s([&] { op.vmult(y, x); }, repeats);
-    double largest = 0., difference = 0.;
+    const double mf_s    = best_time_s([&] { op.vmult(y, x); }, repeats);
+    double       largest = 0., difference = 0.;
     for (unsigned int i = 0; i < n_dofs; ++i)
       {
         largest    = std::max(largest, std::abs(crs_product[i]));

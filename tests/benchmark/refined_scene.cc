@@ -82,9 +82,12 @@ namespace FloorBlock::Benchmark
           std::make_unique<Contact::CoulombJoint<2>>(joint.parameters));
         const auto joint_nodes =
           joint.against_rigid_plane ?
-            Contact::pair_nodes_with_plane(
-              space, joint.side_a, joint.plane_point, joint.plane_normal,
-              joint.obstacle_curvature, j) :
+            Contact::pair_nodes_with_plane(space,
+                                           joint.side_a,
+                                           joint.plane_point,
+                                           joint.plane_normal,
+                                           joint.obstacle_curvature,
+                                           j) :
             Contact::pair_joint_nodes(space, joint.side_a, joint.side_b, j);
         for (const auto &node : joint_nodes)
           {
@@ -124,8 +127,10 @@ namespace FloorBlock::Benchmark
   LinearElasticSystem::reuse_bulk()
   {
     if (!stored_bulk)
-      stored_bulk = std::make_unique<Fem::StoredElasticSystem<2>>(
-        space, scene.model, constraints, pattern);
+      stored_bulk = std::make_unique<Fem::StoredElasticSystem<2>>(space,
+                                                                  scene.model,
+                                                                  constraints,
+                                                                  pattern);
     matrix.copy_from(stored_bulk->condensed_stiffness());
     stored_bulk->residual(solution, 1., 1., residual);
   }
@@ -135,7 +140,8 @@ namespace FloorBlock::Benchmark
   {
     const auto responses =
       Contact::evaluate_contact(nodes, pair_laws, histories, solution);
-    Contact::assemble_contact(nodes, responses, constraints, &matrix, &residual);
+    Contact::assemble_contact(
+      nodes, responses, constraints, &matrix, &residual);
   }
 
   bool
@@ -143,7 +149,7 @@ namespace FloorBlock::Benchmark
   {
     dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
     right_hand_side *= -1.;
-    update = 0.;
+    update                             = 0.;
     const Solver::LinearSolveInfo info = Solver::solve_linear_system(
       settings.linear, matrix, right_hand_side, null_space, update);
     constraints.distribute(update);
@@ -159,7 +165,8 @@ namespace FloorBlock::Benchmark
     const auto responses =
       Contact::evaluate_contact(nodes, pair_laws, histories, solution);
     reuse_bulk();
-    Contact::assemble_contact(nodes, responses, constraints, &matrix, &residual);
+    Contact::assemble_contact(
+      nodes, responses, constraints, &matrix, &residual);
     return solve();
   }
 

@@ -1,14 +1,14 @@
 #pragma once
 
 #include <contact/contact_node.h>
-#include <contact/joint_law.h>
 #include <contact/contact_problem.h>
+#include <contact/joint_law.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
-#include <solver/near_null_space.h>
 #include <fem/stored_elastic_system.h>
 #include <geometry/assembly_mesher.h>
 #include <parameters/scenario_parameters.h>
+#include <solver/near_null_space.h>
 
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -108,21 +108,21 @@ namespace FloorBlock::Benchmark
 
   private:
     const Contact::ContactProblem<2>     scene;
-    const Contact::ContactSolverSettings  settings;
-    const Fem::FeSpace<2>                 space;
+    const Contact::ContactSolverSettings settings;
+    const Fem::FeSpace<2>                space;
     /** ML's near-null space, for the solves that go iterative. */
-    const Solver::NearNullSpace           null_space;
-    dealii::AffineConstraints<double>     constraints;
-    std::vector<Contact::ContactNode<2>>  nodes;
+    const Solver::NearNullSpace                            null_space;
+    dealii::AffineConstraints<double>                      constraints;
+    std::vector<Contact::ContactNode<2>>                   nodes;
     std::vector<std::unique_ptr<Contact::CoulombJoint<2>>> joint_laws;
     std::vector<const Contact::CoulombJoint<2> *>          pair_laws;
-    std::vector<Contact::JointHistory<2>> histories;
-    Fem::CellMatrixCache                  warm_cache;
-    dealii::TrilinosWrappers::SparsityPattern pattern;
-    dealii::TrilinosWrappers::SparseMatrix    matrix;
-    std::unique_ptr<Fem::StoredElasticSystem<2>> stored_bulk;
-    dealii::TrilinosWrappers::MPI::Vector     solution;
-    dealii::TrilinosWrappers::MPI::Vector     residual;
-    dealii::TrilinosWrappers::MPI::Vector     update;
+    std::vector<Contact::JointHistory<2>>                  histories;
+    Fem::CellMatrixCache                                   warm_cache;
+    dealii::TrilinosWrappers::SparsityPattern              pattern;
+    dealii::TrilinosWrappers::SparseMatrix                 matrix;
+    std::unique_ptr<Fem::StoredElasticSystem<2>>           stored_bulk;
+    dealii::TrilinosWrappers::MPI::Vector                  solution;
+    dealii::TrilinosWrappers::MPI::Vector                  residual;
+    dealii::TrilinosWrappers::MPI::Vector                  update;
   };
 } // namespace FloorBlock::Benchmark

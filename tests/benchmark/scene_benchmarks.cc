@@ -1,9 +1,5 @@
 #include "scene_benchmarks.h"
 
-#include "direct_solver_phases.h"
-#include "measurements.h"
-#include "refined_scene.h"
-
 #include <contact/contact_solver.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
@@ -15,6 +11,10 @@
 #include <memory>
 #include <sstream>
 
+#include "direct_solver_phases.h"
+#include "measurements.h"
+#include "refined_scene.h"
+
 namespace FloorBlock::Benchmark
 {
   namespace
@@ -25,10 +25,10 @@ namespace FloorBlock::Benchmark
      */
     struct LevelFixture
     {
-      double                                refinement = 0.;
-      Parameters::ScenarioParameters        scene;
-      dealii::Triangulation<2>              triangulation;
-      std::unique_ptr<LinearElasticSystem>  system;
+      double                               refinement = 0.;
+      Parameters::ScenarioParameters       scene;
+      dealii::Triangulation<2>             triangulation;
+      std::unique_ptr<LinearElasticSystem> system;
     };
 
     std::string
@@ -64,9 +64,10 @@ namespace FloorBlock::Benchmark
           current.reset();
           current             = std::make_unique<LevelFixture>();
           current->refinement = refinement;
-          current->scene =
-            refined_parameters(options.scene_path, options.overrides,
-                               refinement, "compliant");
+          current->scene      = refined_parameters(options.scene_path,
+                                              options.overrides,
+                                              refinement,
+                                              "compliant");
           mesh_scene(current->scene,
                      msh_path(options, refinement),
                      current->triangulation);
@@ -82,8 +83,9 @@ namespace FloorBlock::Benchmark
       LevelFixture &level = fixture(options, refinement);
       if (!level.system)
         {
-          level.system = std::make_unique<LinearElasticSystem>(
-            level.scene, level.triangulation);
+          level.system =
+            std::make_unique<LinearElasticSystem>(level.scene,
+                                                  level.triangulation);
           LevelRecord &record    = level_record(refinement);
           record.n_dofs          = level.system->n_dofs();
           record.n_contact_pairs = level.system->n_contact_pairs();
@@ -95,10 +97,10 @@ namespace FloorBlock::Benchmark
     /** Runs @p work once per benchmark iteration; records its mean time. */
     template <typename Work>
     void
-    time_stage(benchmark::State &state,
-               const double      refinement,
+    time_stage(benchmark::State  &state,
+               const double       refinement,
                const std::string &stage,
-               const Work       &work)
+               const Work        &work)
     {
       double wall = 0., cpu = 0.;
       for (auto _ : state)
@@ -123,9 +125,10 @@ namespace FloorBlock::Benchmark
                    const BenchmarkOptions &options,
                    const double            refinement)
     {
-      const auto scene =
-        refined_parameters(options.scene_path, options.overrides,
-                           refinement, "compliant");
+      const auto               scene = refined_parameters(options.scene_path,
+                                            options.overrides,
+                                            refinement,
+                                            "compliant");
       dealii::Triangulation<2> triangulation;
       time_stage(state, refinement, "mesh", [&]() {
         mesh_scene(scene, msh_path(options, refinement), triangulation);
@@ -142,7 +145,7 @@ namespace FloorBlock::Benchmark
                        const bool              warm)
     {
       LinearElasticSystem &system = linear_system(options, refinement);
-      Fem::CellMatrixCache  cache;
+      Fem::CellMatrixCache cache;
       system.assemble_bulk(&cache);
       time_stage(state,
                  refinement,
@@ -194,8 +197,7 @@ namespace FloorBlock::Benchmark
       const auto package =
         Scene::contact_solver_settings(fixture(options, refinement).scene, "")
           .linear.direct_package;
-      auto &phases =
-        level_record(refinement).direct_phases[direct_solver];
+      auto &phases = level_record(refinement).direct_phases[direct_solver];
       for (auto _ : state)
         phases = direct_solver == "KLU" ?
                    amesos_phase_times(system.system_matrix(),
@@ -277,9 +279,11 @@ namespace FloorBlock::Benchmark
           return;
         }
       const LevelFixture &level = fixture(options, refinement);
-      const auto scene = refined_parameters(
-        options.scene_path, options.overrides, refinement, law);
-      ContactSolveRecord record;
+      const auto          scene = refined_parameters(options.scene_path,
+                                            options.overrides,
+                                            refinement,
+                                            law);
+      ContactSolveRecord  record;
       for (auto _ : state)
         {
           record = ContactSolveRecord();
@@ -288,7 +292,8 @@ namespace FloorBlock::Benchmark
             {
               Contact::ContactSolver<2> solver(
                 level.triangulation,
-                Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
+                Scene::make_floor_contact_problem(
+                  Scene::floor_problem_settings(scene)),
                 Scene::contact_solver_settings(scene, ""));
               fill_solve_record(solver.run(), scene.geometry.n_blocks, record);
               record.converged = true;
@@ -304,9 +309,9 @@ namespace FloorBlock::Benchmark
       level_data.solves[law]  = record;
       if (level_data.n_dofs == 0)
         level_data.n_dofs = record.n_dofs;
-      state.counters["dofs"]       = level_data.n_dofs;
-      state.counters["increments"] = record.n_increments;
-      state.counters["newton"]     = record.n_newton_iterations;
+      state.counters["dofs"]            = level_data.n_dofs;
+      state.counters["increments"]      = record.n_increments;
+      state.counters["newton"]          = record.n_newton_iterations;
       state.counters["face_contact_mm"] = 1e3 * record.face_contact_length;
     }
 
@@ -324,10 +329,10 @@ namespace FloorBlock::Benchmark
             {
               const Verification::HertzResult result =
                 Verification::run_hertz_verification(settings);
-              record.n_dofs               = result.n_dofs;
-              record.n_newton_iterations  = result.n_newton_iterations;
-              record.half_width_error     = result.half_width_error();
-              record.peak_pressure_error  = result.peak_pressure_error();
+              record.n_dofs              = result.n_dofs;
+              record.n_newton_iterations = result.n_newton_iterations;
+              record.half_width_error    = result.half_width_error();
+              record.peak_pressure_error = result.peak_pressure_error();
             }
           catch (const Contact::ContactSolveFailure &failure)
             {
@@ -336,9 +341,9 @@ namespace FloorBlock::Benchmark
             }
           record.time = {clock.wall_seconds(), clock.cpu_seconds()};
         }
-      records().hertz[cells] = record;
-      state.counters["dofs"]   = record.n_dofs;
-      state.counters["newton"] = record.n_newton_iterations;
+      records().hertz[cells]                 = record;
+      state.counters["dofs"]                 = record.n_dofs;
+      state.counters["newton"]               = record.n_newton_iterations;
       state.counters["half_width_error_pct"] = 100. * record.half_width_error;
       state.counters["peak_pressure_error_pct"] =
         100. * record.peak_pressure_error;
@@ -354,8 +359,7 @@ namespace FloorBlock::Benchmark
       {
         const std::string prefix = "default/r" + number_text(r) + "/";
         const auto        add    = [&](const std::string &name, auto function) {
-          return benchmark::RegisterBenchmark((prefix + name).c_str(),
-                                              function)
+          return benchmark::RegisterBenchmark((prefix + name).c_str(), function)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime()
             ->MeasureProcessCPUTime();
@@ -385,9 +389,12 @@ namespace FloorBlock::Benchmark
           newton_iteration_benchmark(state, options, r);
         });
         for (const std::string &law : options.joint_laws)
-          add("contact_solve/" + law, [=](benchmark::State &state) {
-            contact_solve_benchmark(state, options, r, law);
-          })->Iterations(1)->Unit(benchmark::kSecond);
+          add("contact_solve/" + law,
+              [=](benchmark::State &state) {
+                contact_solve_benchmark(state, options, r, law);
+              })
+            ->Iterations(1)
+            ->Unit(benchmark::kSecond);
       }
   }
 

@@ -18,12 +18,17 @@ namespace FloorBlock::Benchmark
     pair_text(const StageTime &time, const double scale, const int digits)
     {
       return fmt::format("{:.{}f} / {:.{}f}",
-                         scale * time.wall, digits, scale * time.cpu, digits);
+                         scale * time.wall,
+                         digits,
+                         scale * time.cpu,
+                         digits);
     }
 
     std::string
-    stage_cell(const LevelRecord &level, const std::string &stage,
-               const double scale, const int digits)
+    stage_cell(const LevelRecord &level,
+               const std::string &stage,
+               const double       scale,
+               const int          digits)
     {
       const auto found = level.stages.find(stage);
       return found == level.stages.end() ?
@@ -49,8 +54,11 @@ namespace FloorBlock::Benchmark
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const auto &[r, level] : all.levels)
         text += fmt::format(
-          "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r,
-          level.n_cells, level.n_dofs, level.n_contact_pairs,
+          "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+          r,
+          level.n_cells,
+          level.n_dofs,
+          level.n_contact_pairs,
           level.n_contact_pairs == 0 ? "-" :
           level.direct_solver        ? "KLU" :
                                        "GMRES+ML",
@@ -79,13 +87,19 @@ namespace FloorBlock::Benchmark
             if (phases == level.direct_phases.end())
               continue;
             const auto ms = [&](const std::string &phase) {
-              return fmt::format("{:.1f}", milliseconds_per_second *
-                                             phases->second.at(phase));
+              return fmt::format("{:.1f}",
+                                 milliseconds_per_second *
+                                   phases->second.at(phase));
             };
             text += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                                solver, r, level.n_dofs, ms("symbolic"),
-                                ms("numeric"), ms("solve"),
-                                ms("numeric again"), ms("solve again"));
+                                solver,
+                                r,
+                                level.n_dofs,
+                                ms("symbolic"),
+                                ms("numeric"),
+                                ms("solve"),
+                                ms("numeric again"),
+                                ms("solve again"));
           }
       return text;
     }
@@ -118,22 +132,27 @@ namespace FloorBlock::Benchmark
             if (found == level.solves.end())
               continue;
             const ContactSolveRecord &solve = found->second;
-            const auto linear = level.stages.find("linear_solve");
+            const auto linear               = level.stages.find("linear_solve");
             const auto section = solve.sections.find("Contact: linear solve");
             text += fmt::format(
               "| {} | {} | {} | {} | {:.2f} | {:.2f} | {} | {} | {} | "
               "{:.1f} | {} | {} |\n",
-              law, r, level.n_dofs,
+              law,
+              r,
+              level.n_dofs,
               solve.converged ? "converged" : "failed: " + solve.failure,
-              solve.time.wall, solve.time.cpu, solve.n_increments,
-              solve.n_newton_iterations, solve.n_cutbacks,
+              solve.time.wall,
+              solve.time.cpu,
+              solve.n_increments,
+              solve.n_newton_iterations,
+              solve.n_cutbacks,
               millimetres_per_metre * solve.face_contact_length,
               section == solve.sections.end() ||
                   solve.n_newton_iterations == 0 ?
                 "-" :
-                fmt::format("{:.1f}", milliseconds_per_second *
-                                        section->second /
-                                        solve.n_newton_iterations),
+                fmt::format("{:.1f}",
+                            milliseconds_per_second * section->second /
+                              solve.n_newton_iterations),
               linear == level.stages.end() ?
                 "-" :
                 fmt::format("{:.0f}", solve.time.cpu / linear->second.cpu));
@@ -204,8 +223,9 @@ namespace FloorBlock::Benchmark
         {
           const auto found = level.solves.find(law);
           if (found != level.solves.end() && found->second.converged)
-            points.emplace_back(level.n_dofs, cpu ? found->second.time.cpu :
-                                                    found->second.time.wall);
+            points.emplace_back(level.n_dofs,
+                                cpu ? found->second.time.cpu :
+                                      found->second.time.wall);
         }
       return points;
     }
@@ -218,10 +238,12 @@ namespace FloorBlock::Benchmark
         "log-log over all measured levels)\n\n"
         "| quantity | levels | p (CPU) | p (wall) |\n|---|---|---|---|\n";
       const auto row = [&](const std::string &name, const auto &points_of) {
-        text += fmt::format("| {} | {} | {} | {} |\n", name,
-                            points_of(true).size(),
-                            exponent_text(power_law_exponent(points_of(true))),
-                            exponent_text(power_law_exponent(points_of(false))));
+        text +=
+          fmt::format("| {} | {} | {} | {} |\n",
+                      name,
+                      points_of(true).size(),
+                      exponent_text(power_law_exponent(points_of(true))),
+                      exponent_text(power_law_exponent(points_of(false))));
       };
       for (const std::string &law : laws_of(all))
         row("whole contact solve, " + law,
@@ -251,7 +273,8 @@ namespace FloorBlock::Benchmark
             "level (r = {})\n\n"
             "| r | DoFs | contact (mm) | difference to finest (%) | mesh + "
             "solve (wall / CPU, s) |\n|---|---|---|---|---|\n",
-            law, finest->refinement);
+            law,
+            finest->refinement);
           for (const auto &[r, level] : all.levels)
             {
               const auto found = level.solves.find(law);
@@ -264,13 +287,16 @@ namespace FloorBlock::Benchmark
                   total.wall += level.stages.at("mesh").wall;
                   total.cpu += level.stages.at("mesh").cpu;
                 }
-              text += fmt::format(
-                "| {} | {} | {:.1f} | {} | {} |\n", r, level.n_dofs,
-                millimetres_per_metre * length,
-                reference > 0. ?
-                  fmt::format("{:+.1f}", 100. * (length / reference - 1.)) :
-                  "-",
-                pair_text(total, 1., 2));
+              text +=
+                fmt::format("| {} | {} | {:.1f} | {} | {} |\n",
+                            r,
+                            level.n_dofs,
+                            millimetres_per_metre * length,
+                            reference > 0. ?
+                              fmt::format("{:+.1f}",
+                                          100. * (length / reference - 1.)) :
+                              "-",
+                            pair_text(total, 1., 2));
             }
         }
       return text;
@@ -290,9 +316,12 @@ namespace FloorBlock::Benchmark
         text += hertz.failure.empty() ?
                   fmt::format("| {} | {} | {} | {:.2f} | {:.2f} | "
                               "{:+.2f} | {:+.2f} |\n",
-                              cells, hertz.n_dofs, hertz.n_newton_iterations,
+                              cells,
+                              hertz.n_dofs,
+                              hertz.n_newton_iterations,
                               hertz.time.wall,
-                              hertz.time.cpu, 100. * hertz.half_width_error,
+                              hertz.time.cpu,
+                              100. * hertz.half_width_error,
                               100. * hertz.peak_pressure_error) :
                   fmt::format("| {} | failed: {} |\n", cells, hertz.failure);
       return text;
@@ -341,11 +370,14 @@ namespace FloorBlock::Benchmark
       "- BLAS: {} ({}){}\n"
       "- one thread (deal.II thread limit 1, OpenBLAS 1 thread); times are "
       "wall / process CPU\n\n",
-      context.n_cores, context.load_before, context.load_after,
-      context.blas.name, blas_files,
+      context.n_cores,
+      context.load_before,
+      context.load_after,
+      context.blas.name,
+      blas_files,
       context.blas.limited_to_one_thread ? ", limited to one thread" : "");
-    return text + stage_table(all) + direct_phase_table(all) + solve_table(all) +
-           section_table(all) + fit_table(all) + contact_length_table(all) +
-           hertz_table(all);
+    return text + stage_table(all) + direct_phase_table(all) +
+           solve_table(all) + section_table(all) + fit_table(all) +
+           contact_length_table(all) + hertz_table(all);
   }
 } // namespace FloorBlock::Benchmark

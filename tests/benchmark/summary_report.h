@@ -1,11 +1,11 @@
 #pragma once
 
-#include "loaded_blas.h"
-#include "measurements.h"
-
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "loaded_blas.h"
+#include "measurements.h"
 
 namespace FloorBlock::Benchmark
 {
@@ -20,9 +20,9 @@ namespace FloorBlock::Benchmark
   /** @brief What the process saw around the measurements. */
   struct RunContext
   {
-    LoadedBlas  blas;
-    std::string load_before; ///< /proc/loadavg at start
-    std::string load_after;  ///< /proc/loadavg at the end
+    LoadedBlas   blas;
+    std::string  load_before; ///< /proc/loadavg at start
+    std::string  load_after;  ///< /proc/loadavg at the end
     unsigned int n_cores = 0;
   };
 
@@ -32,8 +32,8 @@ namespace FloorBlock::Benchmark
 
   /**
    * @brief Markdown tables of everything in @p all: per level the stage
-   * times, direct-solver phases, whole contact solves with their TimerOutput sections
-   * and whole/linear cost ratio, the fitted exponents, the face-joint
+   * times, direct-solver phases, whole contact solves with their TimerOutput
+   * sections and whole/linear cost ratio, the fitted exponents, the face-joint
    * contact length against the finest level, and the Hertz runs.
    */
   std::string

@@ -1,13 +1,12 @@
-#include "direct_solver_phases.h"
-
-#include "measurements.h"
-
 #include <solver/umfpack_factors.h>
 
 #include <Epetra_CrsMatrix.h>
 
 #include <stdexcept>
 #include <vector>
+
+#include "direct_solver_phases.h"
+#include "measurements.h"
 
 namespace FloorBlock::Benchmark
 {

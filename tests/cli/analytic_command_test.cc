@@ -1,11 +1,10 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -16,8 +15,9 @@ namespace
   analytic_for(const std::string &name, const std::string &overrides)
   {
     const std::string output = fresh_output_folder(name);
-    const auto result = run_floorblock("analytic params/default.prm " +
-                                       overrides + " --output " + shell_quoted(output));
+    const auto        result =
+      run_floorblock("analytic params/default.prm " + overrides + " --output " +
+                     shell_quoted(output));
     EXPECT_EQ(result.exit_code, 0) << result.output;
     auto json = read_json(output + "/analytic.json");
     std::filesystem::remove_all(output);
@@ -38,20 +38,22 @@ TEST(AnalyticCommand, WritesDocumentedKeysForEveryCase)
         EXPECT_TRUE(entry.contains(key)) << name << "." << key;
       for (const char *key :
            {"Q_N", "y_m", "A_m2", "sigma_avg_Pa", "sigma_max_Pa", "status"})
-        EXPECT_TRUE(entry["contact"].contains(key)) << name << ".contact." << key;
+        EXPECT_TRUE(entry["contact"].contains(key))
+          << name << ".contact." << key;
       const auto &q = entry["Q_N_per_m"];
       EXPECT_TRUE(q.empty() || q.size() == 6u) << name;
     }
-  EXPECT_NE(json["numbering"].get<std::string>().find("block 1 at the free end"),
+  EXPECT_NE(json["numbering"].get<std::string>().find(
+              "block 1 at the free end"),
             std::string::npos);
 }
 
 // The tool shall let a --set override change the computed result.
 TEST(AnalyticCommand, OverrideChangesTheResult)
 {
-  const auto base  = analytic_for("base", "");
-  const auto lower = analytic_for(
-    "lower", "--set 'Joints/Bedding friction angle=15'");
+  const auto base = analytic_for("base", "");
+  const auto lower =
+    analytic_for("lower", "--set 'Joints/Bedding friction angle=15'");
   const double q_base =
     base["cases"]["no_rotation"]["Q_N_per_m"].back().get<double>();
   const double q_lower =

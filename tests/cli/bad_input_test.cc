@@ -1,9 +1,9 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -17,11 +17,11 @@ namespace
   struct BadInput
   {
     std::string name;
-    std::string scene_text;     ///< empty: params/default.prm
+    std::string scene_text; ///< empty: params/default.prm
     std::string scene_extension;
-    std::string arguments;      ///< extra command-line arguments
+    std::string arguments; ///< extra command-line arguments
     std::string must_mention;
-    std::string command = "";   ///< empty: analytic on the scene
+    std::string command = ""; ///< empty: analytic on the scene
   };
 
   std::ostream &
@@ -31,104 +31,207 @@ namespace
   }
 
   const BadInput bad_inputs[] = {
-    {"friction_95_deg", "", "", "--set 'Joints/Bedding friction angle=95'",
+    {"friction_95_deg",
+     "",
+     "",
+     "--set 'Joints/Bedding friction angle=95'",
      "Joints/Bedding friction angle"},
-    {"friction_exactly_90_deg", "", "",
-     "--set 'Joints/Vertical friction angle=90'", "89.9"},
-    {"negative_block_width", "", "", "--set 'Geometry/Block width=-1'",
+    {"friction_exactly_90_deg",
+     "",
+     "",
+     "--set 'Joints/Vertical friction angle=90'",
+     "89.9"},
+    {"negative_block_width",
+     "",
+     "",
+     "--set 'Geometry/Block width=-1'",
      "Geometry/Block width"},
-    {"zero_block_height", "", "", "--set 'Geometry/Block height=0'",
+    {"zero_block_height",
+     "",
+     "",
+     "--set 'Geometry/Block height=0'",
      "Geometry/Block height"},
-    {"zero_blocks", "", "", "--set 'Geometry/Number of blocks=0'",
+    {"zero_blocks",
+     "",
+     "",
+     "--set 'Geometry/Number of blocks=0'",
      "Number of blocks"},
-    {"too_many_blocks", "", "", "--set 'Geometry/Number of blocks=100'",
+    {"too_many_blocks",
+     "",
+     "",
+     "--set 'Geometry/Number of blocks=100'",
      "Number of blocks"},
-    {"unknown_entry_override", "", "", "--set 'Joints/Friction=20'",
+    {"unknown_entry_override",
+     "",
+     "",
+     "--set 'Joints/Friction=20'",
      "Friction"},
-    {"unknown_subsection_override", "", "", "--set 'Rock/Density=20'",
+    {"unknown_subsection_override",
+     "",
+     "",
+     "--set 'Rock/Density=20'",
      "Density"},
-    {"override_without_equals", "", "", "--set 'Joints/Cohesion'",
+    {"override_without_equals",
+     "",
+     "",
+     "--set 'Joints/Cohesion'",
      "Subsection/Entry name=value"},
     {"not_a_number", "", "", "--set 'Material/Density=heavy'", "heavy"},
-    {"zero_target_error", "", "", "--set 'Mesh/Target relative error=0'",
+    {"zero_target_error",
+     "",
+     "",
+     "--set 'Mesh/Target relative error=0'",
      "Mesh/Target relative error"},
-    {"unknown_target_figure", "", "", "--set 'Mesh/Target figures=area'",
+    {"unknown_target_figure",
+     "",
+     "",
+     "--set 'Mesh/Target figures=area'",
      "Target figures"},
-    {"solve_3d_with_global_refinements", "", "",
+    {"solve_3d_with_global_refinements",
+     "",
+     "",
      "--set 'Geometry/Dimension=3' --set 'Mesh/Global refinements=1'",
-     "Mesh/Global refinements", "solve params/default.prm"},
-    {"solve_3d_with_rigid_blocks", "", "",
-     "--set 'Geometry/Dimension=3' --set 'Model/Blocks=rigid'",
-     "Model/Blocks", "solve params/default.prm"},
-    {"run_in_three_dimensions", "", "", "--set 'Geometry/Dimension=3'",
-     "Geometry/Dimension", "run params/default.prm"},
-    {"unknown_dimension", "", "", "--set 'Geometry/Dimension=4'",
-     "Dimension"},
-    {"footprint_in_two_dimensions", "", "",
-     "--set 'Loading/Footprint length=1.5'", "Loading/Footprint length",
+     "Mesh/Global refinements",
      "solve params/default.prm"},
-    {"footprint_longer_than_face", "", "",
-     "--set 'Loading/Footprint length=5'", "Geometry/Face length = 4.5",
+    {"solve_3d_with_rigid_blocks",
+     "",
+     "",
+     "--set 'Geometry/Dimension=3' --set 'Model/Blocks=rigid'",
+     "Model/Blocks",
+     "solve params/default.prm"},
+    {"run_in_three_dimensions",
+     "",
+     "",
+     "--set 'Geometry/Dimension=3'",
+     "Geometry/Dimension",
+     "run params/default.prm"},
+    {"unknown_dimension", "", "", "--set 'Geometry/Dimension=4'", "Dimension"},
+    {"footprint_in_two_dimensions",
+     "",
+     "",
+     "--set 'Loading/Footprint length=1.5'",
+     "Loading/Footprint length",
+     "solve params/default.prm"},
+    {"footprint_longer_than_face",
+     "",
+     "",
+     "--set 'Loading/Footprint length=5'",
+     "Geometry/Face length = 4.5",
      "solve params/footprint_3d.prm"},
-    {"negative_footprint_length", "", "",
-     "--set 'Loading/Footprint length=-1'", "Footprint length",
+    {"negative_footprint_length",
+     "",
+     "",
+     "--set 'Loading/Footprint length=-1'",
+     "Footprint length",
      "solve params/footprint_3d.prm"},
-    {"footprint_beyond_face_end", "", "",
-     "--set 'Loading/Footprint offset=3.5'", "Loading/Footprint offset",
+    {"footprint_beyond_face_end",
+     "",
+     "",
+     "--set 'Loading/Footprint offset=3.5'",
+     "Loading/Footprint offset",
      "solve params/footprint_3d.prm"},
-    {"footprint_offset_below_zero", "", "",
-     "--set 'Loading/Footprint offset=-0.2'", "Loading/Footprint offset",
+    {"footprint_offset_below_zero",
+     "",
+     "",
+     "--set 'Loading/Footprint offset=-0.2'",
+     "Loading/Footprint offset",
      "solve params/footprint_3d.prm"},
-    {"footprint_offset_without_footprint", "", "",
+    {"footprint_offset_without_footprint",
+     "",
+     "",
      "--set 'Geometry/Dimension=3' --set 'Loading/Footprint offset=1'",
-     "Loading/Footprint offset", "solve params/default.prm"},
-    {"negative_support_load", "", "", "--set 'Loading/Support load=-5'",
+     "Loading/Footprint offset",
+     "solve params/default.prm"},
+    {"negative_support_load",
+     "",
+     "",
+     "--set 'Loading/Support load=-5'",
      "Support load"},
-    {"negative_bulk_modulus", "", "", "--set 'Material/Bulk modulus=-9e9'",
+    {"negative_bulk_modulus",
+     "",
+     "",
+     "--set 'Material/Bulk modulus=-9e9'",
      "Bulk modulus"},
-    {"unknown_bedding_shape", "", "", "--set 'Bedding/Shape=curved'",
-     "curved"},
-    {"malformed_loaded_list", "", "", "--set 'Loading/Loaded blocks=4,x'",
+    {"unknown_bedding_shape", "", "", "--set 'Bedding/Shape=curved'", "curved"},
+    {"malformed_loaded_list",
+     "",
+     "",
+     "--set 'Loading/Loaded blocks=4,x'",
      "Loaded blocks"},
-    {"loaded_block_beyond_n", "", "",
+    {"loaded_block_beyond_n",
+     "",
+     "",
      "--set 'Geometry/Number of blocks=3' --set 'Loading/Loaded blocks=4'",
      "Loading/Loaded blocks"},
-    {"duplicate_loaded_block", "", "", "--set 'Loading/Loaded blocks=2,2'",
+    {"duplicate_loaded_block",
+     "",
+     "",
+     "--set 'Loading/Loaded blocks=2,2'",
      "only once"},
-    {"corner_radius_too_large", "", "",
-     "--set 'Geometry/Corner rounding radius=0.4'", "Corner rounding radius"},
-    {"tensile_strength_with_rounded_corners", "", "",
-     "--set 'Joints/Tensile strength=1e6'", "Joints/Tensile strength"},
-    {"unknown_verification_case", "", "", "", "available: hertz",
+    {"corner_radius_too_large",
+     "",
+     "",
+     "--set 'Geometry/Corner rounding radius=0.4'",
+     "Corner rounding radius"},
+    {"tensile_strength_with_rounded_corners",
+     "",
+     "",
+     "--set 'Joints/Tensile strength=1e6'",
+     "Joints/Tensile strength"},
+    {"unknown_verification_case",
+     "",
+     "",
+     "",
+     "available: hertz",
      "verify sphere"},
-    {"frictionless_incline_verification", "", "",
-     "--set 'Joints/Bedding friction angle=0'", "Joints/Bedding friction angle",
+    {"frictionless_incline_verification",
+     "",
+     "",
+     "--set 'Joints/Bedding friction angle=0'",
+     "Joints/Bedding friction angle",
      "verify incline"},
-    {"corner_size_above_far_size", "", "",
-     "--set 'Mesh/Corner size=0.5' --set 'Mesh/Far size=0.3'", "Corner size"},
+    {"corner_size_above_far_size",
+     "",
+     "",
+     "--set 'Mesh/Corner size=0.5' --set 'Mesh/Far size=0.3'",
+     "Corner size"},
     {"unknown_entry_in_file",
-     "subsection Joints\n  set Bedding fricton angle = 20\nend\n", ".prm", "",
+     "subsection Joints\n  set Bedding fricton angle = 20\nend\n",
+     ".prm",
+     "",
      "Bedding fricton angle"},
-    {"unknown_subsection_in_file", "subsection Jonts\nend\n", ".prm", "",
+    {"unknown_subsection_in_file",
+     "subsection Jonts\nend\n",
+     ".prm",
+     "",
      "Jonts"},
     {"out_of_range_in_file_names_line",
-     "\nsubsection Geometry\n  set Block width = -2\nend\n", ".prm", "",
+     "\nsubsection Geometry\n  set Block width = -2\nend\n",
+     ".prm",
+     "",
      "Line <3>"},
-    {"unbalanced_subsection_in_file", "subsection Geometry\n", ".prm", "",
+    {"unbalanced_subsection_in_file",
+     "subsection Geometry\n",
+     ".prm",
+     "",
      "subsection"},
     {"malformed_json", "{\"Geometry\": {", ".json", "", ".json"},
     // The reduced fuzz input that tripped a Boost assertion in deal.II's
     // JSON reader (an array: nodes without a name).
     {"json_array", "[[]]", ".json", "", "without a name"},
     {"json_member_without_name",
-     "{\"Geometry\": {\"\": {\"value\": \"3\"}}}", ".json", "",
+     "{\"Geometry\": {\"\": {\"value\": \"3\"}}}",
+     ".json",
+     "",
      "'Geometry'"},
     // deal.II's demangle aborts (debug) or reads past the name (release).
-    {"json_name_with_invalid_escape", "{\"a_\": \"1\"}", ".json", "",
-     "escape"},
+    {"json_name_with_invalid_escape", "{\"a_\": \"1\"}", ".json", "", "escape"},
     // Boost's recursive parsers overflow the stack on very deep nesting.
-    {"json_nested_too_deep", std::string(1000, '[') + std::string(1000, ']'),
-     ".json", "", "1000 levels deep"},
+    {"json_nested_too_deep",
+     std::string(1000, '[') + std::string(1000, ']'),
+     ".json",
+     "",
+     "1000 levels deep"},
     {"missing_scene_file", "", "", "", "does not exist"},
     {"unknown_command_line_option", "", "", "--frobnicate", "frobnicate"},
   };
@@ -141,7 +244,7 @@ namespace
 // what is wrong, and no results folder.
 TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
 {
-  const BadInput &input  = GetParam();
+  const BadInput   &input  = GetParam();
   const std::string output = fresh_output_folder(input.name);
 
   std::string scene = "params/default.prm";
@@ -160,15 +263,17 @@ TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
 
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find(input.must_mention), std::string::npos)
-    << "message does not mention '" << input.must_mention
-    << "':\n" << result.output;
-  EXPECT_FALSE(std::filesystem::exists(output)) << "a results folder was written";
+    << "message does not mention '" << input.must_mention << "':\n"
+    << result.output;
+  EXPECT_FALSE(std::filesystem::exists(output))
+    << "a results folder was written";
   if (!input.scene_text.empty())
     std::filesystem::remove(scene);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-  EveryDocumentedCase,
-  BadInputTest,
-  ::testing::ValuesIn(bad_inputs),
-  [](const ::testing::TestParamInfo<BadInput> &info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(EveryDocumentedCase,
+                         BadInputTest,
+                         ::testing::ValuesIn(bad_inputs),
+                         [](const ::testing::TestParamInfo<BadInput> &info) {
+                           return info.param.name;
+                         });

@@ -3,10 +3,7 @@
 // test machine), and the adaptive ladder on rounded corners. CTest runs
 // every TEST in its own process, so the study's checks share one TEST and
 // one run.
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -14,12 +11,15 @@
 #include <fstream>
 #include <iterator>
 
+#include "process.h"
+
 using namespace FloorBlockTest;
 using nlohmann::json;
 
 namespace
 {
-  const std::vector<std::string> ladder_modes = {"uniform", "adaptive",
+  const std::vector<std::string> ladder_modes = {"uniform",
+                                                 "adaptive",
                                                  "remesh"};
 
   // The tool shall record every level of all three ladders with its mesh, cost,
@@ -27,24 +27,42 @@ namespace
   void
   check_every_level_and_column(const std::string &output)
   {
-    for (const char *name : {"convergence.csv", "convergence.json",
-                             "error_vs_wall_time.png", "summary.json",
+    for (const char *name : {"convergence.csv",
+                             "convergence.json",
+                             "error_vs_wall_time.png",
+                             "summary.json",
                              "uniform/level_2/fem.json",
                              "adaptive/level_2/mesh.msh",
                              "remesh/level_2/mesh.msh"})
       EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
 
     const CsvTable table = read_csv(output + "/convergence.csv");
-    for (const char *column :
-         {"mode", "level", "status", "converged", "n_cells", "n_dofs",
-          "n_increments", "newton_iterations", "force_balance_relative_error",
-          "wall_time_mesh_s", "wall_time_assemble_s", "wall_time_linear_solve_s",
-          "wall_time_s", "cost_wall_time_s", "Q_1_N_per_m", "Q_2_N_per_m",
-          "Q_face_N_per_m", "Q_face_error_N_per_m", "Q_face_relative_error",
-          "Q_face_error_method", "contact_length_face_m",
-          "contact_length_face_error_m", "sigma_max_face_Pa",
-          "sigma_max_averaged_face_Pa", "sigma_max_averaged_face_error_Pa",
-          "status_text"})
+    for (const char *column : {"mode",
+                               "level",
+                               "status",
+                               "converged",
+                               "n_cells",
+                               "n_dofs",
+                               "n_increments",
+                               "newton_iterations",
+                               "force_balance_relative_error",
+                               "wall_time_mesh_s",
+                               "wall_time_assemble_s",
+                               "wall_time_linear_solve_s",
+                               "wall_time_s",
+                               "cost_wall_time_s",
+                               "Q_1_N_per_m",
+                               "Q_2_N_per_m",
+                               "Q_face_N_per_m",
+                               "Q_face_error_N_per_m",
+                               "Q_face_relative_error",
+                               "Q_face_error_method",
+                               "contact_length_face_m",
+                               "contact_length_face_error_m",
+                               "sigma_max_face_Pa",
+                               "sigma_max_averaged_face_Pa",
+                               "sigma_max_averaged_face_error_Pa",
+                               "status_text"})
       EXPECT_NE(std::find(table.columns.begin(), table.columns.end(), column),
                 table.columns.end())
         << column;
@@ -57,8 +75,7 @@ namespace
         EXPECT_EQ(row.at("level"), std::to_string(k % 3));
         EXPECT_EQ(row.at("status"), "converged") << row.at("status_text");
         for (const auto &[column, value] : row)
-          EXPECT_FALSE(has_non_finite_value(value))
-            << column << " = " << value;
+          EXPECT_FALSE(has_non_finite_value(value)) << column << " = " << value;
       }
     // All ladders start from the same mesh.
     EXPECT_EQ(table.rows[0].at("n_dofs"), table.rows[3].at("n_dofs"));
@@ -141,7 +158,8 @@ namespace
           EXPECT_FALSE(estimate["reason"].get<std::string>().empty());
           EXPECT_EQ(estimate["observed_orders"].size(), 3u);
         }
-    // Q_1, Q_2, Q_face + 3 face figures, adaptive and remesh each against uniform.
+    // Q_1, Q_2, Q_face + 3 face figures, adaptive and remesh each against
+    // uniform.
     ASSERT_EQ(report["equal_error_comparison"].size(), 12u);
     EXPECT_EQ(report["equal_error_comparison"][0]["mode"], "adaptive");
     EXPECT_EQ(report["equal_error_comparison"][6]["mode"], "remesh");
@@ -158,7 +176,7 @@ TEST(ConvergeCommand, StudyOfTheThreeBlockScene)
   const std::string folder = fresh_output_folder("converge_three_blocks");
   const auto        result = run_floorblock(
     "converge tests/scenarios/three_blocks.prm --levels 3 --mode all "
-    "--output " +
+           "--output " +
     shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   check_every_level_and_column(folder);
@@ -178,7 +196,8 @@ TEST(ConvergeCommand, AdaptiveLadderOnRoundedCorners)
   const std::string folder = fresh_output_folder("converge_rounded");
   const auto        result = run_floorblock(
     "converge tests/scenarios/hard_rounded_corners.prm --levels 3 --mode "
-    "adaptive --output " + shell_quoted(folder));
+           "adaptive --output " +
+    shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const CsvTable table = read_csv(folder + "/convergence.csv");
   ASSERT_EQ(table.rows.size(), 3u);
@@ -197,7 +216,8 @@ TEST(ConvergeCommand, AdaptiveLadderOnRoundedCorners)
           // as on the uniform ladder of the three-block study (0.5 % at
           // the first halving); a broken pairing or load moves it more.
           EXPECT_LT(std::abs(number_in(row, "Q_face_N_per_m") /
-                               number_in(table.rows[0], "Q_face_N_per_m") - 1.),
+                               number_in(table.rows[0], "Q_face_N_per_m") -
+                             1.),
                     0.01);
         }
     }
@@ -212,13 +232,14 @@ TEST(ConvergeCommand, StopsBeforeALevelBeyondTheBudget)
   // A forecast of 4 times the DoFs of level 0 is above 1000 DoFs.
   const auto result = run_floorblock(
     "converge tests/scenarios/three_blocks.prm --levels 3 --mode uniform "
-    "--max-dofs 1000 --output " + shell_quoted(folder));
+    "--max-dofs 1000 --output " +
+    shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("stopped before level 1"), std::string::npos)
     << result.output;
   const CsvTable table = read_csv(folder + "/convergence.csv");
   EXPECT_EQ(table.rows.size(), 1u);
-  std::ifstream json(folder + "/convergence.json");
+  std::ifstream     json(folder + "/convergence.json");
   const std::string text((std::istreambuf_iterator<char>(json)),
                          std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("above --max-dofs 1000"), std::string::npos);
@@ -256,7 +277,8 @@ TEST(ConvergeCommand, BothDegreesSideBySide)
   const std::string folder = fresh_output_folder("converge_degrees");
   const auto        result = run_floorblock(
     "converge tests/scenarios/three_blocks.prm --levels 2 --mode uniform "
-    "--degrees 1,2 --output " + shell_quoted(folder));
+           "--degrees 1,2 --output " +
+    shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 0) << result.output;
   const CsvTable table = read_csv(folder + "/convergence.csv");
   ASSERT_EQ(table.rows.size(), 4u);

@@ -1,12 +1,11 @@
 // `floorblock corner` end to end (issue 15): a coarse zoom on the 3-block
 // scene with 5 cm fillets, its outputs, and the inputs it refuses.
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -28,20 +27,27 @@ namespace
 // and plots beside it, and reuse the scene's own radius' zoom in the study.
 TEST(CornerCommand, ReportsStateTheoryFitLevelsAndTheRoundingStudy)
 {
-  const std::string output = fresh_output_folder("corner_coarse");
+  const std::string   output = fresh_output_folder("corner_coarse");
   const ProcessResult process =
-    corner(output, "--set Joints/Law=rigid --set \"Corner/Zoom levels=3\" "
-                   "--set \"Corner/Rounding radii=0.05, 0.02\"");
+    corner(output,
+           "--set Joints/Law=rigid --set \"Corner/Zoom levels=3\" "
+           "--set \"Corner/Rounding radii=0.05, 0.02\"");
   ASSERT_EQ(process.exit_code, 0) << process.output;
-  for (const char *name :
-       {"corner.json", "corner_traction.csv", "corner_levels.csv",
-        "corner_mean_pressure.csv",
-        "rounding_study.csv", "corner_traction.png", "rounding_study.png",
-        "summary.json", "zoom/level_3/fem.json",
-        "rounding/radius_0.02_m/level_0/fem.json"})
+  for (const char *name : {"corner.json",
+                           "corner_traction.csv",
+                           "corner_levels.csv",
+                           "corner_mean_pressure.csv",
+                           "rounding_study.csv",
+                           "corner_traction.png",
+                           "rounding_study.png",
+                           "summary.json",
+                           "zoom/level_3/fem.json",
+                           "rounding/radius_0.02_m/level_0/fem.json"})
     EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
-  for (const char *name : {"corner.json", "corner_traction.csv",
-                           "corner_levels.csv", "corner_mean_pressure.csv",
+  for (const char *name : {"corner.json",
+                           "corner_traction.csv",
+                           "corner_levels.csv",
+                           "corner_mean_pressure.csv",
                            "rounding_study.csv"})
     EXPECT_FALSE(has_non_finite_value(read_text(output + "/" + name))) << name;
 
@@ -113,7 +119,9 @@ TEST(CornerCommand, RefusesBadInputBeforeWritingAnything)
       EXPECT_EQ(process.exit_code, 2) << settings << "\n" << process.output;
       EXPECT_NE(process.output.find(parameter), std::string::npos)
         << process.output;
-      EXPECT_FALSE(std::filesystem::exists(output + "/corner.json")) << settings;
-      EXPECT_FALSE(std::filesystem::exists(output + "/summary.json")) << settings;
+      EXPECT_FALSE(std::filesystem::exists(output + "/corner.json"))
+        << settings;
+      EXPECT_FALSE(std::filesystem::exists(output + "/summary.json"))
+        << settings;
     }
 }

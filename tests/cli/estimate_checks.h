@@ -3,7 +3,6 @@
 // Checks of run's error estimates (summary.json's fem_error_estimate)
 // against converged values, shared by the CLI and scenario tests.
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -22,8 +21,8 @@ namespace FloorBlockTest
    * value: |value - converged| <= absolute_error.
    */
   inline void
-  expect_estimates_bracket(const nlohmann::json                &joint,
-                           const std::vector<ConvergedFigure>  &converged)
+  expect_estimates_bracket(const nlohmann::json               &joint,
+                           const std::vector<ConvergedFigure> &converged)
   {
     for (const auto &[figure, reference] : converged)
       {

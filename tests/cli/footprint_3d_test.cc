@@ -1,12 +1,11 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -73,7 +72,8 @@ TEST(Footprint3d, FootprintCarriesTheWholeSupportLoad)
 {
   const auto fem = solved(short_footprint_scene, "footprint_load");
   ASSERT_EQ(fem.at("status"), "converged");
-  EXPECT_NEAR(fem.at("applied_load_N").get<double>(), support_load,
+  EXPECT_NEAR(fem.at("applied_load_N").get<double>(),
+              support_load,
               load_tolerance * support_load);
   EXPECT_EQ(fem.at("support_load_N").get<double>(), support_load);
   // Three loaded blocks, each top's straight part 1 m - 2 x 0.01 m wide,
@@ -95,20 +95,22 @@ TEST(Footprint3d, CentredFootprintIsSymmetricAlongTheFace)
     {
       const auto &sections = joint.at("along_face");
       ASSERT_EQ(sections.size(), 4u) << joint.at("name");
-      for (const std::string figure :
-           {"normal_force_N_per_m", "shear_force_N_per_m", "contact_length_m",
-            "sigma_max_Pa"})
+      for (const std::string figure : {"normal_force_N_per_m",
+                                       "shear_force_N_per_m",
+                                       "contact_length_m",
+                                       "sigma_max_Pa"})
         {
           double largest = 0.;
           for (const auto &section : sections)
-            largest = std::max(largest,
-                               std::abs(section.at(figure).get<double>()));
+            largest =
+              std::max(largest, std::abs(section.at(figure).get<double>()));
           for (std::size_t k = 0; k < sections.size(); ++k)
             {
               const auto &mirror = sections[sections.size() - 1 - k];
               EXPECT_NEAR(sections[k].at("z_m").get<double>() +
                             mirror.at("z_m").get<double>(),
-                          1.5, 1e-12);
+                          1.5,
+                          1e-12);
               EXPECT_NEAR(sections[k].at(figure).get<double>(),
                           mirror.at(figure).get<double>(),
                           symmetry_tolerance * largest)
@@ -126,14 +128,15 @@ TEST(Footprint3d, WholeFaceFootprintIsTheUniformLoad)
   const std::string scene = "solve params/plane_strain_3d.prm" + coarse_mesh +
                             " --set 'Geometry/Support width=0.5'";
   const auto uniform = solved(scene, "footprint_uniform");
-  const auto whole   = solved(
-    scene + " --set 'Loading/Footprint length=0.5'", "footprint_whole_face");
+  const auto whole   = solved(scene + " --set 'Loading/Footprint length=0.5'",
+                            "footprint_whole_face");
   ASSERT_EQ(uniform.at("status"), "converged");
   ASSERT_EQ(whole.at("status"), "converged");
   EXPECT_TRUE(uniform.at("support_footprint").at("length_m").is_null());
   EXPECT_EQ(whole.at("support_footprint").at("length_m").get<double>(), 0.5);
   // Support load over b = 0.5 m per metre, on 0.5 m of face.
-  EXPECT_NEAR(uniform.at("applied_load_N").get<double>(), support_load,
+  EXPECT_NEAR(uniform.at("applied_load_N").get<double>(),
+              support_load,
               load_tolerance * support_load);
   EXPECT_NEAR(whole.at("applied_load_N").get<double>(),
               uniform.at("applied_load_N").get<double>(),
@@ -142,12 +145,15 @@ TEST(Footprint3d, WholeFaceFootprintIsTheUniformLoad)
   const auto &joints_whole   = whole.at("joints");
   ASSERT_EQ(joints_whole.size(), joints_uniform.size());
   for (std::size_t j = 0; j < joints_uniform.size(); ++j)
-    for (const std::string figure :
-         {"normal_force_N_per_m", "shear_force_N_per_m", "contact_length_m",
-          "sigma_max_Pa", "sigma_max_averaged_Pa"})
+    for (const std::string figure : {"normal_force_N_per_m",
+                                     "shear_force_N_per_m",
+                                     "contact_length_m",
+                                     "sigma_max_Pa",
+                                     "sigma_max_averaged_Pa"})
       {
         const double expected = joints_uniform[j].at(figure).get<double>();
-        EXPECT_NEAR(joints_whole[j].at(figure).get<double>(), expected,
+        EXPECT_NEAR(joints_whole[j].at(figure).get<double>(),
+                    expected,
                     same_problem_tolerance * std::max(1., std::abs(expected)))
           << joints_uniform[j].at("name") << " " << figure;
       }

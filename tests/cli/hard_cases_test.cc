@@ -23,10 +23,7 @@
 // checked to 1e-8 of the largest block load or force (measured: at most
 // 8e-11 over all cases, the soft joints whose increments stop at the
 // round-off floor; 3e-11 for the others).
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -37,6 +34,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -128,14 +127,14 @@ namespace
   run_case(const std::string &command, const std::string &name)
   {
     CaseOutcome outcome;
-    outcome.folder = fresh_output_folder("hard_" + name);
+    outcome.folder   = fresh_output_folder("hard_" + name);
     const auto start = std::chrono::steady_clock::now();
-    outcome.process  = run_floorblock(command + " tests/scenarios/hard_" +
-                                     name + ".prm --output " +
-                                     shell_quoted(outcome.folder));
-    outcome.wall_time_s = std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - start)
-                            .count();
+    outcome.process =
+      run_floorblock(command + " tests/scenarios/hard_" + name +
+                     ".prm --output " + shell_quoted(outcome.folder));
+    outcome.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
     std::cout << "hard_" << name << ": exit " << outcome.process.exit_code
               << ", " << outcome.wall_time_s << " s" << std::endl;
     return outcome;
@@ -225,8 +224,7 @@ namespace
         EXPECT_LE(std::abs(shear_force(joint)),
                   friction * normal_force(joint) * (1. + balance_tolerance))
           << name << ": outside Coulomb";
-        const double side =
-          bedding ? scene.block_width : scene.block_height;
+        const double side = bedding ? scene.block_width : scene.block_height;
         EXPECT_GE(joint["contact_length_m"].get<double>(), 0.) << name;
         EXPECT_LE(joint["contact_length_m"].get<double>(), side * (1. + 1e-12))
           << name;
@@ -239,16 +237,22 @@ namespace
         const json       &bedding = joints["bedding " + number];
         const json       &joint   = joints["vertical " + number];
         const double      previous_q =
-          block > 1 ? normal_force(joints["vertical " + std::to_string(block - 1)]) : 0.;
+          block > 1 ?
+                 normal_force(joints["vertical " + std::to_string(block - 1)]) :
+                 0.;
         const double previous_shear =
-          block > 1 ? shear_force(joints["vertical " + std::to_string(block - 1)]) : 0.;
-        const double scale = std::max(scene.block_load(block),
-                                      std::abs(normal_force(joint)));
+          block > 1 ?
+            shear_force(joints["vertical " + std::to_string(block - 1)]) :
+            0.;
+        const double scale =
+          std::max(scene.block_load(block), std::abs(normal_force(joint)));
         EXPECT_NEAR(normal_force(bedding),
-                    scene.block_load(block) + shear_force(joint) - previous_shear,
+                    scene.block_load(block) + shear_force(joint) -
+                      previous_shear,
                     balance_tolerance * scale)
           << "vertical balance of block " << block;
-        EXPECT_NEAR(normal_force(joint) - previous_q + shear_force(bedding), 0.,
+        EXPECT_NEAR(normal_force(joint) - previous_q + shear_force(bedding),
+                    0.,
                     balance_tolerance * scale)
           << "horizontal balance of block " << block;
 
@@ -257,8 +261,9 @@ namespace
         const double bound = scene.all_slip_force(block);
         EXPECT_LE(normal_force(joint), bound * (1. + balance_tolerance))
           << "Q_" << block << " above the all-slip chain value";
-        all_beddings_slide = all_beddings_slide && (bedding["state"] == "slip" ||
-                                                    bedding["state"] == "open");
+        all_beddings_slide =
+          all_beddings_slide &&
+          (bedding["state"] == "slip" || bedding["state"] == "open");
         if (all_beddings_slide && joint["state"] == "slip")
           EXPECT_NEAR(normal_force(joint), bound, balance_tolerance * bound)
             << "every joint up to " << block << " slips, yet Q_" << block
@@ -268,7 +273,7 @@ namespace
 
   /** Converged and physical, or a named failure with exit code 1. */
   void
-  expect_physical_answer_or_named_failure(const CaseOutcome &outcome,
+  expect_physical_answer_or_named_failure(const CaseOutcome  &outcome,
                                           const SceneNumbers &scene)
   {
     expect_finite_outputs(outcome.folder);
@@ -291,7 +296,7 @@ namespace
   {
     std::size_t count = 0;
     for (std::size_t at = text.find(word); at != std::string::npos;
-         at = text.find(word, at + word.size()))
+         at             = text.find(word, at + word.size()))
       ++count;
     return count;
   }
@@ -383,13 +388,14 @@ TEST(HardCases, FrictionNearSelfLocking)
 // lifts.
 TEST(HardCases, TinyFloorLiftKeepsTheSupportStageForces)
 {
-  const ConvergedCase outcome = solve_converging_case("small_lift", SceneNumbers{});
+  const ConvergedCase outcome =
+    solve_converging_case("small_lift", SceneNumbers{});
   const json &fem = outcome.fem;
 
   // No joint changes state during the uplift (same counts in every uplift
   // increment as at the end of the support stage), so the response to the
   // lift is linear: equal Q increments per equal lift step.
-  const json &increments = fem["increments"];
+  const json       &increments = fem["increments"];
   std::vector<json> uplift;
   json              support_end;
   for (const auto &increment : increments)
@@ -416,8 +422,7 @@ TEST(HardCases, TinyFloorLiftKeepsTheSupportStageForces)
         q.push_back(std::stod(row.at("normal_force_N_per_m")));
       const std::size_t first_uplift = rows.size() - uplift.size();
       const double      q_support    = q[first_uplift - 1];
-      EXPECT_LE(std::abs(q.back() - q_support), youngs_modulus * lift)
-        << joint;
+      EXPECT_LE(std::abs(q.back() - q_support), youngs_modulus * lift) << joint;
       // joints.csv keeps 10 significant digits: 1e-9 |Q| per value.
       const double step = q[first_uplift] - q_support;
       for (std::size_t k = first_uplift + 1; k < q.size(); ++k)
@@ -429,9 +434,9 @@ TEST(HardCases, TinyFloorLiftKeepsTheSupportStageForces)
 // The tool shall converge and stay in balance at a large floor lift.
 TEST(HardCases, LargeFloorLift)
 {
-  SceneNumbers      scene;
+  SceneNumbers        scene;
   const ConvergedCase outcome = solve_converging_case("large_lift", scene);
-  const json &fem = outcome.fem;
+  const json         &fem     = outcome.fem;
   // At 4.4 times the scene's lift friction is mobilised almost everywhere:
   // measured 98.8 % of the all-slip value at the face (the scene's own lift:
   // 98.2 %; 1e-6 m: 0 %). 5 % leaves room for the mesh, not for a stuck joint.
@@ -452,9 +457,9 @@ TEST(HardCases, VeryHighSupportLoad)
 TEST(HardCases, NoSupportLoadGivesQFromTheWeightAlone)
 {
   SceneNumbers scene;
-  scene.support_load_t = 0.;
+  scene.support_load_t        = 0.;
   const ConvergedCase outcome = solve_converging_case("no_support", scene);
-  const json &fem = outcome.fem;
+  const json         &fem     = outcome.fem;
   // Every joint slips, so Q_n = n W tan(phi_h) / (1 - tan(phi_h) tan(phi_v))
   // (Eq. 6.23 at alpha = 0): proportional to the weight.
   auto joints = joints_by_name(fem);
@@ -462,7 +467,8 @@ TEST(HardCases, NoSupportLoadGivesQFromTheWeightAlone)
     EXPECT_EQ(joint["state"], "slip") << name;
   const double expected = 3. * scene.weight() * tan_degrees(30.) /
                           (1. - tan_degrees(30.) * tan_degrees(30.));
-  EXPECT_NEAR(normal_force(joints["vertical 3"]), expected,
+  EXPECT_NEAR(normal_force(joints["vertical 3"]),
+              expected,
               balance_tolerance * expected);
 }
 
@@ -470,9 +476,9 @@ TEST(HardCases, NoSupportLoadGivesQFromTheWeightAlone)
 TEST(HardCases, SlenderBlocks)
 {
   SceneNumbers scene;
-  scene.block_height = 5.;
+  scene.block_height          = 5.;
   const ConvergedCase outcome = solve_converging_case("slender", scene);
-  const json &fem = outcome.fem;
+  const json         &fem     = outcome.fem;
   // Measured: every joint slips, so the bound above is met with equality
   // at every joint (checked there); here only that this stays so.
   for (const auto &joint : fem["joints"])
@@ -483,9 +489,9 @@ TEST(HardCases, SlenderBlocks)
 TEST(HardCases, SquatBlocks)
 {
   SceneNumbers scene;
-  scene.block_height = 0.5;
+  scene.block_height          = 0.5;
   const ConvergedCase outcome = solve_converging_case("squat", scene);
-  const json &fem = outcome.fem;
+  const json         &fem     = outcome.fem;
   // Eq. 6.25 puts Q above the top of every squat block (they would
   // rotate); the FEM keeps them seated (HARD_CASES.md). Only the chain
   // checks above are asserted: the seating is a measurement, not a law.
@@ -496,8 +502,8 @@ TEST(HardCases, SquatBlocks)
 TEST(HardCases, OneBlockMatchesItsClosedForm)
 {
   SceneNumbers scene;
-  scene.n_blocks         = 1;
-  scene.loaded_from_face = {1};
+  scene.n_blocks            = 1;
+  scene.loaded_from_face    = {1};
   const CaseOutcome outcome = run_case("run", "one_block");
   EXPECT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
   expect_finite_outputs(outcome.folder);
@@ -508,8 +514,8 @@ TEST(HardCases, OneBlockMatchesItsClosedForm)
   // (Eq. 6.12, one block, alpha = 0: the FEM's lifted bed is level).
   const json   summary = read_json(outcome.folder + "/summary.json");
   const json  &blocks  = summary["analytic"]["blocks"];
-  const double load    = blocks["W_N_per_m"][0].get<double>() +
-                      blocks["P_N_per_m"][0].get<double>();
+  const double load =
+    blocks["W_N_per_m"][0].get<double>() + blocks["P_N_per_m"][0].get<double>();
   EXPECT_NEAR(load, scene.block_load(1), 1e-12 * load);
   const double q_fem = summary["comparison"]["final"][0]["Q_fem_N_per_m"];
   const double phi_h = blocks["phi_h_rad"], phi_v = blocks["phi_v_rad"];
@@ -529,7 +535,8 @@ TEST(HardCases, OneBlockMatchesItsClosedForm)
     summary["comparison"]["final"][0]["Q_closed_form"]["no_rotation"]
            ["Q_N_per_m"];
   EXPECT_NEAR(q_closed_form, closed_form(alpha), 1e-12 * q_closed_form);
-  EXPECT_NEAR(q_fem / q_closed_form, closed_form(0.) / closed_form(alpha),
+  EXPECT_NEAR(q_fem / q_closed_form,
+              closed_form(0.) / closed_form(alpha),
               balance_tolerance);
 }
 
@@ -575,16 +582,17 @@ TEST(HardCases, RoundedCornersBalanceEveryBlock)
   const CaseOutcome outcome = run_case("solve", "rounded_corners");
   ASSERT_EQ(outcome.process.exit_code, 0) << outcome.process.output;
   expect_finite_outputs(outcome.folder);
-  const json fem    = read_json(outcome.folder + "/fem.json");
-  auto       joints = joints_by_name(fem);
+  const json   fem    = read_json(outcome.folder + "/fem.json");
+  auto         joints = joints_by_name(fem);
   const double q_face = normal_force(joints["vertical 3"]);
   ASSERT_GT(q_face, 0.);
   for (unsigned int block = 1; block <= 3; ++block)
     {
       const std::string number = std::to_string(block);
       const double      previous_q =
-        block > 1 ? normal_force(joints["vertical " + std::to_string(block - 1)]) :
-                    0.;
+        block > 1 ?
+               normal_force(joints["vertical " + std::to_string(block - 1)]) :
+               0.;
       EXPECT_NEAR(normal_force(joints["vertical " + number]) - previous_q +
                     shear_force(joints["bedding " + number]),
                   0.,
@@ -617,18 +625,19 @@ TEST(HardCases, VeryStiffJoints)
 // The tool shall solve the scene with rigid joints.
 TEST(HardCases, RigidJointLaw)
 {
-  const ConvergedCase rigid = solve_converging_case("rigid_law", SceneNumbers{});
+  const ConvergedCase rigid =
+    solve_converging_case("rigid_law", SceneNumbers{});
   const json &fem = rigid.fem;
 
   // Q is set by friction, not by the joint stiffness: the compliant law
   // (kn = 9 GPa/m) gives nearly the same face Q. Measured -2.2 % on this
   // 0.1 m mesh (-0.4 % on the default scene, HARD_CASES.md Table 2).
   const std::string compliant = fresh_output_folder("hard_rigid_compliant");
-  const auto        result    = run_floorblock(
-    "solve tests/scenarios/three_blocks.prm --output " +
-    shell_quoted(compliant));
+  const auto        result =
+    run_floorblock("solve tests/scenarios/three_blocks.prm --output " +
+                   shell_quoted(compliant));
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const double q_rigid = normal_force(joints_by_name(fem)["vertical 3"]);
+  const double q_rigid     = normal_force(joints_by_name(fem)["vertical 3"]);
   const double q_compliant = normal_force(
     joints_by_name(read_json(compliant + "/fem.json"))["vertical 3"]);
   EXPECT_NEAR(q_rigid, q_compliant, 0.05 * q_compliant);
@@ -649,9 +658,9 @@ TEST(HardCases, RigidLawRetriesWithASmallerComplementarityParameter)
     "solve tests/scenarios/three_blocks.prm --set Joints/Law=rigid "
     "--set \"Solver/Error estimate=none\" --output ";
   const std::string cycling = fresh_output_folder("hard_rigid_factor_100");
-  const auto        retried = run_floorblock(
-    scene + shell_quoted(cycling) +
-    " --set \"Solver/Complementarity factor=100\"");
+  const auto        retried =
+    run_floorblock(scene + shell_quoted(cycling) +
+                   " --set \"Solver/Complementarity factor=100\"");
   ASSERT_EQ(retried.exit_code, 0) << retried.output;
   expect_finite_outputs(cycling);
 
@@ -737,11 +746,12 @@ TEST(HardCases, RigidLawDefaultSceneAtFortyFiveDegrees)
   // (bedding 1 slips, the others open), so by the horizontal balances every
   // vertical joint carries bedding 1's friction force N_bed,1 tan(45 deg):
   // Q_i = N_bed,1 for every i.
-  auto joints = joints_by_name(outcome.fem);
+  auto         joints    = joints_by_name(outcome.fem);
   const double bedding_1 = normal_force(joints["bedding 1"]);
   for (unsigned int joint = 1; joint <= 6; ++joint)
     EXPECT_NEAR(normal_force(joints["vertical " + std::to_string(joint)]),
-                bedding_1, balance_tolerance * bedding_1)
+                bedding_1,
+                balance_tolerance * bedding_1)
       << "vertical " << joint;
 }
 
@@ -772,7 +782,7 @@ TEST(HardCases, JointThatLosesContactEntirely)
 
   // The comparison with the closed forms: Q_fem = 0 is compared (-100 %),
   // the contact estimate has no answer and says why.
-  const json summary = read_json(outcome.folder + "/summary.json");
+  const json  summary         = read_json(outcome.folder + "/summary.json");
   const json &face_comparison = summary["comparison"]["final"][2];
   EXPECT_EQ(face_comparison["Q_fem_N_per_m"], 0.);
   EXPECT_NE(face_comparison["contact"]["status"], "ok");
@@ -795,7 +805,7 @@ TEST(HardCases, WeightlessUnloadedBlocks)
   // The product calls forces below 1e-10 E |u| round-off
   // (Compare::round_off_force_fraction); no force may exceed that.
   const double round_off_force = 1e-10 * youngs_modulus * 0.0225;
-  const json   fem = read_json(outcome.folder + "/fem.json");
+  const json   fem             = read_json(outcome.folder + "/fem.json");
   EXPECT_EQ(fem["status"], "converged");
   EXPECT_EQ(fem["force_balance_status"], "no load")
     << fem["force_balance_status_text"];
@@ -809,8 +819,7 @@ TEST(HardCases, WeightlessUnloadedBlocks)
     {
       EXPECT_LT(std::abs(normal_force(joint)), round_off_force)
         << joint["name"];
-      EXPECT_LT(std::abs(shear_force(joint)), round_off_force)
-        << joint["name"];
+      EXPECT_LT(std::abs(shear_force(joint)), round_off_force) << joint["name"];
     }
   EXPECT_NE(outcome.process.output.find("no load"), std::string::npos)
     << outcome.process.output;
@@ -834,9 +843,9 @@ TEST(HardCases, WeightlessUnloadedBlocks)
 // The tool shall follow a block that starts to rotate on its bed.
 TEST(HardCases, BlockStartsToRotate)
 {
-  SceneNumbers      scene;
+  SceneNumbers        scene;
   const ConvergedCase outcome = solve_converging_case("rotation", scene);
-  const json &fem = outcome.fem;
+  const json         &fem     = outcome.fem;
 
   // Block 1's bedding: whole base at the end of the support stage, then the
   // heel lifts as the bed bends (measured 1.0 -> 0.905 -> 0.729 -> 0.604
@@ -870,11 +879,12 @@ TEST(HardCases, BlockStartsToRotate)
 TEST(HardCases, NonMatchingJointsAreRefused)
 {
   const std::string folder = fresh_output_folder("hard_non_matching");
-  const auto        result = run_floorblock(
-    "solve tests/scenarios/hard_non_matching.prm --output " +
-    shell_quoted(folder));
+  const auto        result =
+    run_floorblock("solve tests/scenarios/hard_non_matching.prm --output " +
+                   shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 2) << result.output;
   EXPECT_NE(result.output.find("Mesh/Matching joints"), std::string::npos)
     << result.output;
-  EXPECT_FALSE(std::filesystem::exists(folder)) << "a results folder was written";
+  EXPECT_FALSE(std::filesystem::exists(folder))
+    << "a results folder was written";
 }

@@ -2,14 +2,13 @@
 // modelled Q force approximates the calculated force from Equation 6.23"
 // (no rotation, slip along all fractures). Checked with the exact (rigid)
 // joint law on the like-for-like scene tests/scenarios/low_friction_rigid.prm.
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -17,9 +16,9 @@ using nlohmann::json;
 TEST(LowFriction, RigidJointsMatchNoRotationClosedFormAtTheFace)
 {
   const std::string folder = fresh_output_folder("low_friction_rigid");
-  const auto        result = run_floorblock(
-    "run tests/scenarios/low_friction_rigid.prm --output " +
-    shell_quoted(folder));
+  const auto        result =
+    run_floorblock("run tests/scenarios/low_friction_rigid.prm --output " +
+                   shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   std::ifstream in(folder + "/summary.json");
@@ -32,7 +31,7 @@ TEST(LowFriction, RigidJointsMatchNoRotationClosedFormAtTheFace)
         record["joint"].get<unsigned>() > (*face)["joint"].get<unsigned>())
       face = &record;
   ASSERT_NE(face, nullptr);
-  const double q_fem    = (*face)["Q_fem_N_per_m"].get<double>();
+  const double q_fem = (*face)["Q_fem_N_per_m"].get<double>();
   const double q_closed =
     (*face)["Q_closed_form"]["no_rotation"]["Q_N_per_m"].get<double>();
   // The issue's criterion: within 10 % at phi = 10 deg. Measured 2026-11-21:

@@ -1,10 +1,10 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <regex>
 #include <string>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -31,7 +31,7 @@ TEST(MeshCommand, ThreeDimensionalSceneIsTheSectionSweptAlongTheFace)
   const auto        result = run_floorblock(
     "mesh params/default.prm --output " + shell_quoted(folder) +
     " --set 'Geometry/Dimension=3' --set 'Geometry/Face length=1'"
-    " --set 'Mesh/Slice size=0.25'");
+           " --set 'Mesh/Slice size=0.25'");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const unsigned long n_quadrilaterals =
     count_before(result.output, "quadrilaterals");

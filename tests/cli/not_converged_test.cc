@@ -3,13 +3,12 @@
 // code 1, and never writes NaN or inf. Forced here by allowing the uplift
 // stage one increment, no cutback and 6 Newton iterations (the gravity and
 // support-load stages converge within 6 on this scene; the uplift does not).
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -24,9 +23,9 @@ namespace
 TEST(NotConverged, RunKeepsLastConvergedIncrementAndSaysWhy)
 {
   const std::string folder = fresh_output_folder("run_not_converged");
-  const auto        result = run_floorblock(
-    "run tests/scenarios/three_blocks.prm" + starved_uplift + " --output " +
-    shell_quoted(folder));
+  const auto        result =
+    run_floorblock("run tests/scenarios/three_blocks.prm" + starved_uplift +
+                   " --output " + shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 1) << result.output;
 
   ASSERT_TRUE(std::filesystem::exists(folder + "/summary.json"));
@@ -72,12 +71,13 @@ TEST(NotConverged, NothingConvergedStillWritesAnHonestSummary)
   const std::string folder = fresh_output_folder("run_nothing_converged");
   const auto        result = run_floorblock(
     "run tests/scenarios/three_blocks.prm --set \"Solver/Max cutbacks=0\""
-    " --set \"Solver/Max Newton iterations=2\" --output " +
+           " --set \"Solver/Max Newton iterations=2\" --output " +
     shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_EQ(result.output.find("wrote " + folder + "/report.md"),
             std::string::npos)
-    << "claims a report that was not written:\n" << result.output;
+    << "claims a report that was not written:\n"
+    << result.output;
   const json summary = json::parse(read_text(folder + "/summary.json"));
   EXPECT_EQ(summary["status"], "not converged");
   EXPECT_EQ(summary["fem"]["n_increments"], 0);

@@ -1,14 +1,14 @@
 #include "process.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace FloorBlockTest
 {
@@ -90,7 +90,7 @@ namespace FloorBlockTest
     ProcessResult
     run_shell(const std::string &command)
     {
-      FILE *pipe = ::popen(command.c_str(), "r");
+      FILE                  *pipe = ::popen(command.c_str(), "r");
       std::string            output;
       std::array<char, 4096> buffer;
       while (const std::size_t n =
@@ -123,8 +123,8 @@ namespace FloorBlockTest
     return run_shell(
       std::string("cd ") + FLOORBLOCK_SOURCE_DIR +
       " && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
-      time_limit + FLOORBLOCK_MPIEXEC + " " + FLOORBLOCK_MPIEXEC_NUMPROC_FLAG + " " +
-      std::to_string(n_processes) + " --oversubscribe " +
+      time_limit + FLOORBLOCK_MPIEXEC + " " + FLOORBLOCK_MPIEXEC_NUMPROC_FLAG +
+      " " + std::to_string(n_processes) + " --oversubscribe " +
       FLOORBLOCK_EXECUTABLE + " " + arguments + " 2>&1");
   }
 #endif
@@ -156,9 +156,9 @@ namespace FloorBlockTest
   std::string
   fresh_output_folder(const std::string &name)
   {
-    const auto folder = std::filesystem::temp_directory_path() /
-                        ("floorblock_cli_" + std::to_string(::getpid()) + "_" +
-                         name);
+    const auto folder =
+      std::filesystem::temp_directory_path() /
+      ("floorblock_cli_" + std::to_string(::getpid()) + "_" + name);
     std::filesystem::remove_all(folder);
     return folder.string();
   }

@@ -3,16 +3,15 @@
 // summary.json) as the elastic FEM, says which model produced the numbers,
 // and maps its failures to "not converged".
 
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -62,21 +61,24 @@ namespace
 TEST(RigidRun, SameOutputsAndForcesAsElastic)
 {
   const std::string rigid_folder = fresh_output_folder("rigid_three_blocks");
-  const auto rigid = run_floorblock(
+  const auto        rigid        = run_floorblock(
     "run tests/scenarios/three_blocks.prm --set \"Model/Blocks=rigid\" "
-    "--output " +
+                  "--output " +
     shell_quoted(rigid_folder));
   ASSERT_EQ(rigid.exit_code, 0) << rigid.output;
   const std::string elastic_folder =
     fresh_output_folder("elastic_three_blocks");
-  const auto elastic = run_floorblock(
-    "run tests/scenarios/three_blocks.prm --output " +
-    shell_quoted(elastic_folder));
+  const auto elastic =
+    run_floorblock("run tests/scenarios/three_blocks.prm --output " +
+                   shell_quoted(elastic_folder));
   ASSERT_EQ(elastic.exit_code, 0) << elastic.output;
 
-  for (const char *name :
-       {"fem.json", "joints.csv", "summary.json", "report.md",
-        "q_per_joint.png", "face_joint_vs_lift.png"})
+  for (const char *name : {"fem.json",
+                           "joints.csv",
+                           "summary.json",
+                           "report.md",
+                           "q_per_joint.png",
+                           "face_joint_vs_lift.png"})
     EXPECT_TRUE(std::filesystem::exists(rigid_folder + "/" + name)) << name;
   EXPECT_FALSE(std::filesystem::exists(rigid_folder + "/mesh.msh"));
   EXPECT_FALSE(std::filesystem::exists(rigid_folder + "/vtu"));
@@ -118,9 +120,9 @@ TEST(RigidRun, SameOutputsAndForcesAsElastic)
 
   // The comparison records carry the rigid numbers (same doubles).
   for (const auto &record : summary["comparison"]["final"])
-    EXPECT_DOUBLE_EQ(
-      record["Q_fem_N_per_m"].get<double>(),
-      rigid_q.at("vertical " + std::to_string(record["joint"].get<int>())));
+    EXPECT_DOUBLE_EQ(record["Q_fem_N_per_m"].get<double>(),
+                     rigid_q.at("vertical " +
+                                std::to_string(record["joint"].get<int>())));
 }
 
 // The tool shall report a rigid-block solve without equilibrium (blocks on
@@ -129,13 +131,13 @@ TEST(RigidRun, SameOutputsAndForcesAsElastic)
 TEST(RigidRun, NoEquilibriumIsNotConverged)
 {
   const std::string folder = fresh_output_folder("rigid_no_equilibrium");
-  const auto result = run_floorblock(
+  const auto        result = run_floorblock(
     "solve tests/scenarios/three_blocks.prm --set \"Model/Blocks=rigid\" "
-    "--set \"Bedding/Shape=planar\" "
-    "--set \"Bedding/Floor uplift reading=inclined\" "
-    "--set \"Bedding/Inclination=-25\" "
-    "--set \"Joints/Bedding friction angle=20\" "
-    "--set \"Solver/Max cutbacks=0\" --output " +
+           "--set \"Bedding/Shape=planar\" "
+           "--set \"Bedding/Floor uplift reading=inclined\" "
+           "--set \"Bedding/Inclination=-25\" "
+           "--set \"Joints/Bedding friction angle=20\" "
+           "--set \"Solver/Max cutbacks=0\" --output " +
     shell_quoted(folder));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   const json fem = read_json(folder + "/fem.json");

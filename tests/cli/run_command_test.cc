@@ -1,13 +1,12 @@
-#include "estimate_checks.h"
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+
+#include "estimate_checks.h"
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -21,8 +20,9 @@ namespace
   {
     static const std::string output = [] {
       const std::string folder = fresh_output_folder("run_three_blocks");
-      const auto result = run_floorblock(
-        "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder));
+      const auto        result =
+        run_floorblock("run tests/scenarios/three_blocks.prm --output " +
+                       shell_quoted(folder));
       EXPECT_EQ(result.exit_code, 0) << result.output;
       return folder;
     }();
@@ -31,8 +31,11 @@ namespace
 
   // E, b, L, H of the scene as the comparison records carry them.
   double
-  corner_sigma_max(const double q_over_b, const double lift, const double e,
-                   const double b, const double l)
+  corner_sigma_max(const double q_over_b,
+                   const double lift,
+                   const double e,
+                   const double b,
+                   const double l)
   {
     // Eq. 6.53 recomputed here independently of the library.
     return std::sqrt(2. * lift * e * q_over_b / (b * l * l));
@@ -43,11 +46,18 @@ namespace
 TEST(RunCommand, WritesEveryFile)
 {
   const std::string &output = three_block_run();
-  for (const char *name :
-       {"original.prm", "parameters.prm", "analytic.json", "analytic.csv",
-        "fem.json", "joints.csv", "summary.json", "report.md",
-        "q_per_joint.png", "face_joint_vs_lift.png",
-        "face_joint_traction.png", "mesh.msh"})
+  for (const char *name : {"original.prm",
+                           "parameters.prm",
+                           "analytic.json",
+                           "analytic.csv",
+                           "fem.json",
+                           "joints.csv",
+                           "summary.json",
+                           "report.md",
+                           "q_per_joint.png",
+                           "face_joint_vs_lift.png",
+                           "face_joint_traction.png",
+                           "mesh.msh"})
     EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
   const auto summary_time =
     std::filesystem::last_write_time(output + "/summary.json");
@@ -67,15 +77,27 @@ TEST(RunCommand, SummaryHasDocumentedKeys)
   const auto &joints = summary["fem"]["joints"];
   ASSERT_EQ(joints.size(), 6u); // 3 vertical + 3 bedding joints
   for (const auto &joint : joints)
-    for (const char *key :
-         {"name", "kind", "blocks", "normal_force_N_per_m",
-          "shear_force_N_per_m", "contact_length_m", "contact_area_m2",
-          "sigma_max_Pa", "sigma_max_averaged_Pa", "state"})
+    for (const char *key : {"name",
+                            "kind",
+                            "blocks",
+                            "normal_force_N_per_m",
+                            "shear_force_N_per_m",
+                            "contact_length_m",
+                            "contact_area_m2",
+                            "sigma_max_Pa",
+                            "sigma_max_averaged_Pa",
+                            "state"})
       EXPECT_TRUE(joint.contains(key)) << key;
   const auto &final = summary["comparison"]["final"];
   ASSERT_EQ(final.size(), 3u);
-  for (const char *key : {"Q_contact_N", "y_m", "E_Pa", "b_m", "L_m",
-                          "A_6_51_m2", "sigma_max_6_53_Pa", "A_fem_m2"})
+  for (const char *key : {"Q_contact_N",
+                          "y_m",
+                          "E_Pa",
+                          "b_m",
+                          "L_m",
+                          "A_6_51_m2",
+                          "sigma_max_6_53_Pa",
+                          "A_fem_m2"})
     EXPECT_TRUE(final.back()["contact"].contains(key)) << key;
   EXPECT_FALSE(summary["comparison"]["lift_history"].empty());
 }
@@ -87,7 +109,7 @@ TEST(RunCommand, FaceJointFiguresCarryErrorAndTime)
   const std::string &output  = three_block_run();
   const json         fem     = read_json(output + "/fem.json");
   const json         summary = read_json(output + "/summary.json");
-  json face;
+  json               face;
   for (const auto &joint : fem["joints"])
     if (joint["name"] == "vertical 3")
       face = joint;
@@ -96,7 +118,8 @@ TEST(RunCommand, FaceJointFiguresCarryErrorAndTime)
   for (const auto &figure : figures)
     {
       const std::string field = figure["field"].get<std::string>();
-      EXPECT_DOUBLE_EQ(figure["value"].get<double>(), face[field].get<double>());
+      EXPECT_DOUBLE_EQ(figure["value"].get<double>(),
+                       face[field].get<double>());
       EXPECT_GT(figure["wall_time_s"].get<double>(), 0.);
       // The scene asks for no estimate: the error is null and says why.
       EXPECT_TRUE(figure["relative_error"].is_null());
@@ -117,9 +140,8 @@ TEST(RunCommand, DefaultSceneErrorEstimatesBracketTheFinestLevel)
   const auto        result =
     run_floorblock("run params/default.prm --output " + shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
-  const json summary = read_json(folder + "/summary.json");
-  const json &face =
-    summary["fem_error_estimate"]["joints"]["vertical 6"];
+  const json  summary = read_json(folder + "/summary.json");
+  const json &face    = summary["fem_error_estimate"]["joints"]["vertical 6"];
   expect_estimates_bracket(face,
                            {{"normal_force_N_per_m", 2.728901898e+06},
                             {"contact_length_m", 3.477503582e-01},
@@ -148,7 +170,7 @@ TEST(RunCommand, ComparisonEqualsRecomputedValues)
     {
       const unsigned int joint = record["joint"].get<unsigned int>();
       const std::string  name  = "vertical " + std::to_string(joint);
-      json fem_joint;
+      json               fem_joint;
       for (const auto &candidate : fem["joints"])
         if (candidate["name"] == name)
           fem_joint = candidate;
@@ -167,14 +189,16 @@ TEST(RunCommand, ComparisonEqualsRecomputedValues)
           const double q_closed = list[joint - 1].get<double>();
           EXPECT_DOUBLE_EQ(value["Q_N_per_m"].get<double>(), q_closed);
           EXPECT_NEAR(value["relative_difference"].get<double>(),
-                      (q_fem - q_closed) / std::abs(q_closed), 1e-12);
+                      (q_fem - q_closed) / std::abs(q_closed),
+                      1e-12);
         }
 
       const auto &contact = record["contact"];
       EXPECT_DOUBLE_EQ(contact["Q_contact_N"].get<double>(),
                        std::max(q_fem, 0.) * b);
       EXPECT_NEAR(contact["A_fem_m2"].get<double>(),
-                  fem_joint["contact_length_m"].get<double>() * b, 1e-15);
+                  fem_joint["contact_length_m"].get<double>() * b,
+                  1e-15);
       if (contact["sigma_max_6_53_Pa"].is_number())
         EXPECT_NEAR(contact["sigma_max_6_53_Pa"].get<double>(),
                     corner_sigma_max(contact["Q_contact_N"].get<double>(),
@@ -203,11 +227,11 @@ TEST(RunCommand, AccuracyLoopThatRunsOutReportsTheLastCheck)
   const auto        result = run_floorblock(
     "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder) +
     " --set 'Solver/Error estimate=refined solve'"
-    " --set 'Solver/FE degree=1'"
-    " --set 'Mesh/Maximum refinement levels=3'");
+           " --set 'Solver/FE degree=1'"
+           " --set 'Mesh/Maximum refinement levels=3'");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("NOT met"), std::string::npos) << result.output;
-  const json summary = read_json(folder + "/summary.json");
+  const json  summary  = read_json(folder + "/summary.json");
   const json &estimate = summary["fem_error_estimate"];
   const json &target   = estimate["target"];
   EXPECT_FALSE(target["met"].get<bool>());
@@ -225,7 +249,7 @@ TEST(RunCommand, AccuracyLoopThatRunsOutReportsTheLastCheck)
   // Checked levels have both estimates; the others only an indicator.
   for (const unsigned int level : {0u, 2u})
     {
-      const json &record = target["levels"][level];
+      const json  &record = target["levels"][level];
       const double coarse = record["worst_target_relative_error"].get<double>();
       const double check =
         record["halved_worst_target_relative_error"].get<double>();

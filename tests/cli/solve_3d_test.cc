@@ -1,13 +1,12 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -35,7 +34,8 @@ namespace
   /** Face length of params/plane_strain_3d.prm (m). */
   constexpr double face_length = 0.5;
 
-  /** A `solve` of params/plane_strain_3d.prm: its output folder and fem.json. */
+  /** A `solve` of params/plane_strain_3d.prm: its output folder and fem.json.
+   */
   struct Solved
   {
     std::string    folder;
@@ -52,9 +52,9 @@ namespace
   solve_plane_strain_scene(const std::string &name, const std::string &options)
   {
     Solved     result{fresh_output_folder(name), nlohmann::json::object()};
-    const auto solved = run_floorblock("solve params/plane_strain_3d.prm" +
-                                       options + " --output " +
-                                       shell_quoted(result.folder));
+    const auto solved =
+      run_floorblock("solve params/plane_strain_3d.prm" + options +
+                     " --output " + shell_quoted(result.folder));
     EXPECT_EQ(solved.exit_code, 0) << solved.output;
     if (solved.exit_code == 0)
       result.fem = read_json(result.folder + "/fem.json");
@@ -66,7 +66,8 @@ namespace
                        const double       actual,
                        const std::string &what)
   {
-    EXPECT_NEAR(actual, expected,
+    EXPECT_NEAR(actual,
+                expected,
                 plane_strain_tolerance * std::max(1., std::abs(expected)))
       << what;
   }
@@ -85,9 +86,11 @@ namespace
         const auto       &joint_2d = joints_2d[j];
         const std::string name     = joint_2d.at("name");
         ASSERT_EQ(joint_3d.at("name"), name);
-        for (const std::string figure :
-             {"normal_force_N_per_m", "shear_force_N_per_m", "contact_length_m",
-              "sigma_max_Pa", "sigma_max_averaged_Pa"})
+        for (const std::string figure : {"normal_force_N_per_m",
+                                         "shear_force_N_per_m",
+                                         "contact_length_m",
+                                         "sigma_max_Pa",
+                                         "sigma_max_averaged_Pa"})
           expect_relative_near(joint_2d.at(figure).get<double>(),
                                joint_3d.at(figure).get<double>(),
                                name + " " + figure);
@@ -120,10 +123,9 @@ namespace
 TEST(Solve3d, PlaneStrainSceneGivesTheTwoDimensionalAnswerPerMetre)
 {
   const auto fem_3d = solve_plane_strain_scene("solve_plane_strain_3d", "").fem;
-  const auto fem_2d =
-    solve_plane_strain_scene("solve_plane_strain_2d",
-                             " --set 'Geometry/Dimension=2'")
-      .fem;
+  const auto fem_2d = solve_plane_strain_scene("solve_plane_strain_2d",
+                                               " --set 'Geometry/Dimension=2'")
+                        .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
   // Two slices: three copies of every 2D node, three components each.
   EXPECT_EQ(fem_3d.at("n_dofs").get<unsigned int>(),
@@ -131,7 +133,8 @@ TEST(Solve3d, PlaneStrainSceneGivesTheTwoDimensionalAnswerPerMetre)
   expect_two_dimensional_answer(fem_3d, fem_2d);
   // The face joint carries load and has a contact zone: the comparison
   // above is not one of zeros.
-  EXPECT_GT(fem_2d.at("joints")[5].at("normal_force_N_per_m").get<double>(), 2e6);
+  EXPECT_GT(fem_2d.at("joints")[5].at("normal_force_N_per_m").get<double>(),
+            2e6);
   EXPECT_GT(fem_2d.at("joints")[5].at("contact_length_m").get<double>(), 0.1);
 }
 
@@ -165,8 +168,9 @@ TEST(Solve3d, FreeEndFacesAreNotPlaneStrain)
 // Free end faces, so that the sections differ.
 TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
 {
-  const auto solved = solve_plane_strain_scene(
-    "solve_contact_area_3d", " --set 'Geometry/End faces=free'" + coarse_mesh);
+  const auto solved =
+    solve_plane_strain_scene("solve_contact_area_3d",
+                             " --set 'Geometry/End faces=free'" + coarse_mesh);
   ASSERT_FALSE(solved.fem.empty());
   const std::string &folder = solved.folder;
   EXPECT_GT(std::filesystem::file_size(folder + "/face_contact_area.png"),
@@ -177,19 +181,19 @@ TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
   ASSERT_EQ(face.at("name"), "vertical 6");
   for (const auto &section : face.at("along_face"))
     {
-      const double z = section.at("z_m").get<double>();
+      const double                z = section.at("z_m").get<double>();
       std::vector<const CsvRow *> rows;
       for (const CsvRow &row : table.rows)
         if (std::abs(number_in(row, "z_m") - z) < 1e-9)
           rows.push_back(&row);
       ASSERT_GT(rows.size(), 2u) << "z = " << z;
-      double closed = 0.;
+      double closed  = 0.;
       double at_ends = 0.;
       for (std::size_t k = 0; k < rows.size(); ++k)
         {
-          const bool is_closed = rows[k]->at("state") != "open";
-          const double patch = number_in(*rows[k], "arc_to_m") -
-                               number_in(*rows[k], "arc_from_m");
+          const bool   is_closed = rows[k]->at("state") != "open";
+          const double patch =
+            number_in(*rows[k], "arc_to_m") - number_in(*rows[k], "arc_from_m");
           EXPECT_GE(patch, 0.);
           if (!is_closed)
             continue;
@@ -215,8 +219,7 @@ TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
 TEST(Solve3d, ExactLawPlaneStrainGivesTheTwoDimensionalAnswer)
 {
   const std::string exact =
-    coarse_mesh +
-    " --set 'Joints/Law=rigid' --set 'Mesh/Global refinements=0'";
+    coarse_mesh + " --set 'Joints/Law=rigid' --set 'Mesh/Global refinements=0'";
   const auto fem_3d = solve_plane_strain_scene("solve_exact_3d", exact).fem;
   const auto fem_2d =
     solve_plane_strain_scene("solve_exact_2d",
@@ -247,11 +250,11 @@ TEST(Solve3d, IterativeSolverGivesTheDirectAnswer)
                              " --set 'Solver/Linear solver=iterative'" +
                                coarse_mesh)
       .fem;
-  const auto fem_2d = solve_plane_strain_scene(
-                        "solve_iterative_2d",
-                        " --set 'Geometry/Dimension=2'" + coarse_mesh +
-                          " --set 'Solver/Linear solver=direct'")
-                        .fem;
+  const auto fem_2d =
+    solve_plane_strain_scene("solve_iterative_2d",
+                             " --set 'Geometry/Dimension=2'" + coarse_mesh +
+                               " --set 'Solver/Linear solver=direct'")
+      .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
   EXPECT_GT(fem_3d.at("amg_setups").get<unsigned int>(), 0u);
   EXPECT_GT(fem_3d.at("krylov_iterations_with_amg").get<unsigned int>(), 0u);
@@ -260,9 +263,11 @@ TEST(Solve3d, IterativeSolverGivesTheDirectAnswer)
   const auto &joints_3d = fem_3d.at("joints");
   const auto &joints_2d = fem_2d.at("joints");
   ASSERT_EQ(joints_3d.size(), joints_2d.size());
-  for (const std::string figure :
-       {"normal_force_N_per_m", "shear_force_N_per_m", "contact_length_m",
-        "sigma_max_Pa", "sigma_max_averaged_Pa"})
+  for (const std::string figure : {"normal_force_N_per_m",
+                                   "shear_force_N_per_m",
+                                   "contact_length_m",
+                                   "sigma_max_Pa",
+                                   "sigma_max_averaged_Pa"})
     {
       double largest = 0.;
       for (const auto &joint : joints_2d)

@@ -1,13 +1,12 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -47,11 +46,13 @@ namespace
       {
         ASSERT_EQ(actual.size(), expected.size()) << path;
         for (std::size_t k = 0; k < expected.size(); ++k)
-          expect_same_numbers(expected[k], actual[k],
+          expect_same_numbers(expected[k],
+                              actual[k],
                               path + "[" + std::to_string(k) + "]");
       }
     else if (expected.is_number())
-      EXPECT_NEAR(actual.get<double>(), expected.get<double>(),
+      EXPECT_NEAR(actual.get<double>(),
+                  expected.get<double>(),
                   process_tolerance *
                     std::max(1., std::abs(expected.get<double>())))
         << path;
@@ -77,8 +78,9 @@ namespace
       run_floorblock(command + " --output " + shell_quoted(folder_1));
     EXPECT_EQ(one.exit_code, 0) << one.output;
     const std::string folder_2 = fresh_output_folder(name + "_two");
-    const auto        two = run_floorblock_on_processes(
-      2, command + " --output " + shell_quoted(folder_2));
+    const auto        two      = run_floorblock_on_processes(2,
+                                                 command + " --output " +
+                                                   shell_quoted(folder_2));
     EXPECT_EQ(two.exit_code, 0) << two.output;
     return {folder_1,
             folder_2,
@@ -122,7 +124,7 @@ TEST(SolveMpi, TwoProcessesGiveTheOneProcessAnswer)
   EXPECT_GT(fem_1.at("joints")[5].at("normal_force_N_per_m").get<double>(),
             2e6);
   // One piece per process and increment, one record per increment.
-  const std::string vtu = folder_2 + "/vtu";
+  const std::string vtu       = folder_2 + "/vtu";
   const std::size_t n_records = count_files_ending(vtu, ".pvtu");
   EXPECT_GT(n_records, 0u);
   EXPECT_EQ(count_files_ending(vtu, ".vtu"), 2 * n_records);
@@ -170,7 +172,7 @@ TEST(SolveMpi, FootprintOnTwoProcessesGivesTheOneProcessAnswer)
 TEST(SolveMpi, TwoProcessesRefuseTwoDimensionalScenesAndTheExactLaw)
 {
   const std::string folder_2d = fresh_output_folder("solve_mpi_2d");
-  const auto two_d = run_floorblock_on_processes(
+  const auto        two_d     = run_floorblock_on_processes(
     2, "solve params/default.prm --output " + shell_quoted(folder_2d));
   EXPECT_EQ(two_d.exit_code, 2) << two_d.output;
   EXPECT_NE(two_d.output.find("Geometry/Dimension"), std::string::npos)
@@ -178,12 +180,13 @@ TEST(SolveMpi, TwoProcessesRefuseTwoDimensionalScenesAndTheExactLaw)
   EXPECT_FALSE(std::filesystem::exists(folder_2d));
 
   const std::string folder_exact = fresh_output_folder("solve_mpi_exact");
-  const auto exact = run_floorblock_on_processes(
-    2, coarse_plane_strain + " --set 'Joints/Law=rigid' --output " +
-         shell_quoted(folder_exact));
+  const auto        exact =
+    run_floorblock_on_processes(2,
+                                coarse_plane_strain +
+                                  " --set 'Joints/Law=rigid' --output " +
+                                  shell_quoted(folder_exact));
   EXPECT_EQ(exact.exit_code, 2) << exact.output;
-  EXPECT_NE(exact.output.find("Joints/Law"), std::string::npos)
-    << exact.output;
+  EXPECT_NE(exact.output.find("Joints/Law"), std::string::npos) << exact.output;
   EXPECT_FALSE(std::filesystem::exists(folder_exact));
 }
 
@@ -199,8 +202,7 @@ TEST(SolveMpi, OneProcessCommandsRefuseSeveral)
       const auto        two    = run_floorblock_on_processes(
         2, command + " --output " + shell_quoted(folder), 120);
       EXPECT_EQ(two.exit_code, 2) << command << ": " << two.output;
-      EXPECT_NE(two.output.find("mpirun -np"), std::string::npos)
-        << two.output;
+      EXPECT_NE(two.output.find("mpirun -np"), std::string::npos) << two.output;
       EXPECT_FALSE(std::filesystem::exists(folder)) << command;
     }
 }
@@ -216,9 +218,11 @@ TEST(SolveMpi, AFailureOnTheFirstProcessEndsAll)
     std::ofstream file(blocker);
     file << "a file where the output folder's parent should be\n";
   }
-  const auto two = run_floorblock_on_processes(
-    2, coarse_plane_strain + " --output " + shell_quoted(blocker + "/out"),
-    120);
+  const auto two =
+    run_floorblock_on_processes(2,
+                                coarse_plane_strain + " --output " +
+                                  shell_quoted(blocker + "/out"),
+                                120);
   EXPECT_EQ(two.exit_code, 1) << two.output;
   EXPECT_NE(two.output.find("floorblock: failed:"), std::string::npos)
     << two.output;

@@ -4,23 +4,23 @@
 // dividing by L applied (L - 2r)/L of P). Checked through equilibrium at the
 // end of the support stage on the lifted (level) bed: the bedding joints
 // carry every block's weight and support load, the face joint no shear yet.
-#include "process.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
 TEST(SupportLoad, RoundedBlocksReceiveTheWholeSupportLoad)
 {
   const std::string folder = fresh_output_folder("support_load_rounded");
-  const auto        result = run_floorblock(
-    "solve tests/scenarios/three_blocks.prm"
-    " --set \"Geometry/Corner rounding radius=0.05\""
-    " --set \"Mesh/Corner size=0.05\" --output " +
-    shell_quoted(folder));
+  const auto        result =
+    run_floorblock("solve tests/scenarios/three_blocks.prm"
+                   " --set \"Geometry/Corner rounding radius=0.05\""
+                   " --set \"Mesh/Corner size=0.05\" --output " +
+                   shell_quoted(folder));
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
   // Sum the bedding normal forces and the face-joint shear of the last
@@ -40,9 +40,9 @@ TEST(SupportLoad, RoundedBlocksReceiveTheWholeSupportLoad)
   // Scene: 3 blocks 1 m x 2 m, rho 2500 kg/m^3, g 9.81 m/s^2, four fillets
   // of r = 0.05 m per block (each removes (1 - pi/4) r^2), 650 t over b =
   // 1.5 m shared by the loaded blocks.
-  const double r      = 0.05;
-  const double area   = 1. * 2. - 4. * (1. - M_PI / 4.) * r * r;
-  const double weight = 3. * 2500. * 9.81 * area;
+  const double r       = 0.05;
+  const double area    = 1. * 2. - 4. * (1. - M_PI / 4.) * r * r;
+  const double weight  = 3. * 2500. * 9.81 * area;
   const double support = 650. * 1000. * 9.80665 / 1.5;
   // Tolerance: the fillet arcs are meshed by straight-edged cells, which
   // lose a few 1e-6 of the weight (measured 3e-6); the former shortfall

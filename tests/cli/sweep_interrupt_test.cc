@@ -1,7 +1,4 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -11,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -58,17 +57,19 @@ namespace
 TEST(SweepInterrupt, ResumesWithOnlyTheMissingCases)
 {
   const std::string reference = fresh_output_folder("sweep_reference");
-  const auto        full = run_floorblock(sweep_arguments + " --output " +
-                                   shell_quoted(reference));
+  const auto        full =
+    run_floorblock(sweep_arguments + " --output " + shell_quoted(reference));
   ASSERT_EQ(full.exit_code, 0) << full.output;
   ASSERT_EQ(count_case_files(reference), 4u);
 
   const std::string interrupted = fresh_output_folder("sweep_interrupted");
   const std::string log         = interrupted + ".log";
-  const int         process     = start_floorblock(
-    sweep_arguments + " --output " + shell_quoted(interrupted), log);
+  const int         process =
+    start_floorblock(sweep_arguments + " --output " + shell_quoted(interrupted),
+                     log);
   // Interrupt as soon as two cases are finished (bounded wait: 5 minutes).
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  const auto give_up =
+    std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (count_case_files(interrupted) < 2 &&
          std::chrono::steady_clock::now() < give_up)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -83,8 +84,8 @@ TEST(SweepInterrupt, ResumesWithOnlyTheMissingCases)
     EXPECT_EQ(file.extension(), ".json") << "partial file left: " << file;
   EXPECT_FALSE(std::filesystem::exists(interrupted + "/sweep_fem_fig6_5.csv"));
 
-  const auto resumed = run_floorblock(sweep_arguments + " --output " +
-                                      shell_quoted(interrupted));
+  const auto resumed =
+    run_floorblock(sweep_arguments + " --output " + shell_quoted(interrupted));
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   // Each computed case prints one progress line naming how many were reused.
   std::size_t computed = 0;

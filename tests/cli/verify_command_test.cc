@@ -1,10 +1,9 @@
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 
@@ -20,7 +19,7 @@ namespace
   verify(const std::string &name)
   {
     const std::string output = fresh_output_folder("verify_" + name);
-    const auto result =
+    const auto        result =
       run_floorblock("verify " + name + " --output " + shell_quoted(output));
     EXPECT_EQ(result.exit_code, 0) << result.output;
     nlohmann::json json = read_json(output + "/verify.json");
@@ -29,7 +28,8 @@ namespace
   }
 
   void
-  expect_passed(const nlohmann::json &json, const std::string &name,
+  expect_passed(const nlohmann::json           &json,
+                const std::string              &name,
                 const std::vector<std::string> &quantities)
   {
     EXPECT_EQ(json["case"].get<std::string>(), name);
@@ -53,9 +53,12 @@ namespace
 TEST(VerifyCommand, PatchTransmitsUniformPressure)
 {
   const auto json = verify("patch");
-  expect_passed(json, "patch",
-                {"joint_normal_force", "lowest_normal_traction",
-                 "highest_normal_traction", "joint_shear_force_over_normal"});
+  expect_passed(json,
+                "patch",
+                {"joint_normal_force",
+                 "lowest_normal_traction",
+                 "highest_normal_traction",
+                 "joint_shear_force_over_normal"});
   EXPECT_EQ(json["quantities"]["joint_normal_force"]["tolerance"].get<double>(),
             1e-8);
 }
@@ -65,13 +68,16 @@ TEST(VerifyCommand, PatchTransmitsUniformPressure)
 TEST(VerifyCommand, InclineSlipsOnlyAboveTheFrictionAngle)
 {
   const auto json = verify("incline");
-  expect_passed(json, "incline",
-                {"slips_below_threshold", "slips_above_threshold",
-                 "joint_shear_force", "joint_normal_force"});
-  EXPECT_EQ(json["quantities"]["slips_above_threshold"]["computed"].get<double>(),
-            1.);
-  EXPECT_EQ(json["quantities"]["slips_below_threshold"]["computed"].get<double>(),
-            0.);
+  expect_passed(json,
+                "incline",
+                {"slips_below_threshold",
+                 "slips_above_threshold",
+                 "joint_shear_force",
+                 "joint_normal_force"});
+  EXPECT_EQ(
+    json["quantities"]["slips_above_threshold"]["computed"].get<double>(), 1.);
+  EXPECT_EQ(
+    json["quantities"]["slips_below_threshold"]["computed"].get<double>(), 0.);
 }
 
 // The tool shall verify two blocks: joint force = applied lateral load.
@@ -91,13 +97,16 @@ TEST(VerifyCommand, TwoBlocksJointForceEqualsLateralLoad)
 TEST(VerifyCommand, PunchCornerExponentsMatchTheEigenSolver)
 {
   const auto json = verify("punch");
-  expect_passed(json, "punch",
+  expect_passed(json,
+                "punch",
                 {"stuck_corner_exponent", "frictionless_corner_exponent"});
   const auto &q = json["quantities"];
   EXPECT_NEAR(q["stuck_corner_exponent"]["closed_form"].get<double>(),
-              0.544484, 1e-6);
+              0.544484,
+              1e-6);
   EXPECT_NEAR(q["frictionless_corner_exponent"]["closed_form"].get<double>(),
-              0.774013, 1e-6);
+              0.774013,
+              1e-6);
   for (const char *state : {"stuck", "frictionless"})
     {
       const std::string prefix(state);

@@ -13,7 +13,7 @@ namespace FloorBlock::Fuzz
       const char *text = std::getenv(variable);
       if (text == nullptr || *text == '\0')
         return fallback;
-      char *end = nullptr;
+      char                    *end   = nullptr;
       const unsigned long long value = std::strtoull(text, &end, 10);
       if (*end != '\0')
         throw std::invalid_argument(std::string(variable) +

@@ -5,12 +5,13 @@
 // anything else = .prm); the rest is the scene text. Lines after a line
 // "--set" are command-line overrides, one per line.
 
-#include "scene_pipeline.h"
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
-#include <unistd.h>
+
+#include "scene_pipeline.h"
 
 namespace
 {
@@ -20,8 +21,9 @@ namespace
   work_directory()
   {
     static const std::filesystem::path path = [] {
-      const auto folder = std::filesystem::temp_directory_path() /
-                          ("floorblock_libfuzzer_" + std::to_string(::getpid()));
+      const auto folder =
+        std::filesystem::temp_directory_path() /
+        ("floorblock_libfuzzer_" + std::to_string(::getpid()));
       std::filesystem::create_directories(folder);
       return folder;
     }();
@@ -40,10 +42,10 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 {
   if (size == 0)
     return 0;
-  const std::string input(reinterpret_cast<const char *>(data), size);
-  std::string       text = input.substr(1);
+  const std::string        input(reinterpret_cast<const char *>(data), size);
+  std::string              text = input.substr(1);
   std::vector<std::string> overrides;
-  const auto marker = text.find(override_marker);
+  const auto               marker = text.find(override_marker);
   if (marker != std::string::npos)
     {
       std::string rest = text.substr(marker + override_marker.size());
@@ -58,8 +60,10 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
 
   // Anything but InputError escapes and terminates: libFuzzer records a crash.
   const FloorBlock::Fuzz::PipelineResult result =
-    FloorBlock::Fuzz::run_scene_pipeline(text, extension_for(input[0]),
-                                         overrides, work_directory());
+    FloorBlock::Fuzz::run_scene_pipeline(text,
+                                         extension_for(input[0]),
+                                         overrides,
+                                         work_directory());
   if (!result.defects.empty())
     {
       for (const std::string &defect : result.defects)

@@ -37,13 +37,13 @@ namespace FloorBlock::Fuzz
     ends_with(const std::string &text, const std::string &suffix)
     {
       return text.size() >= suffix.size() &&
-             text.compare(text.size() - suffix.size(), suffix.size(),
-                          suffix) == 0;
+             text.compare(text.size() - suffix.size(), suffix.size(), suffix) ==
+               0;
     }
 
     void
-    collect_json_defects(const nlohmann::json &     node,
-                         const std::string &        path,
+    collect_json_defects(const nlohmann::json     &node,
+                         const std::string        &path,
                          std::vector<std::string> &defects)
     {
       if (node.is_null())
@@ -63,7 +63,8 @@ namespace FloorBlock::Fuzz
           }
       else if (node.is_array())
         for (std::size_t i = 0; i < node.size(); ++i)
-          collect_json_defects(node[i], path + "[" + std::to_string(i) + "]",
+          collect_json_defects(node[i],
+                               path + "[" + std::to_string(i) + "]",
                                defects);
     }
 
@@ -90,27 +91,27 @@ namespace FloorBlock::Fuzz
 
     void
     check_finite(const std::vector<double> &values,
-                 const std::string &        name,
-                 std::vector<std::string> & defects)
+                 const std::string         &name,
+                 std::vector<std::string>  &defects)
     {
       for (std::size_t i = 0; i < values.size(); ++i)
         if (!std::isfinite(values[i]))
-          defects.push_back(name + "[" + std::to_string(i) + "] = " +
-                            std::to_string(values[i]));
+          defects.push_back(name + "[" + std::to_string(i) +
+                            "] = " + std::to_string(values[i]));
     }
 
     void
-    check_finite(const double               value,
-                 const std::string &        name,
-                 std::vector<std::string> & defects)
+    check_finite(const double              value,
+                 const std::string        &name,
+                 std::vector<std::string> &defects)
     {
       check_finite(std::vector<double>{value}, name, defects);
     }
 
     void
-    check_status(const Analytic::Status     status,
-                 const std::string &        name,
-                 std::vector<std::string> & defects)
+    check_status(const Analytic::Status    status,
+                 const std::string        &name,
+                 std::vector<std::string> &defects)
     {
       if (!is_known_status(Analytic::to_string(status)))
         defects.push_back(name + " has no known status value");
@@ -180,17 +181,15 @@ namespace FloorBlock::Fuzz
   {
     // fmt prints non-finite doubles as nan / inf, possibly signed; words
     // such as "infinite" in the status sentences must not match.
-    static const std::regex non_finite("(^|[^A-Za-z_])[-+]?(nan|inf)([^A-Za-z_]|$)",
-                                       std::regex::icase);
+    static const std::regex non_finite(
+      "(^|[^A-Za-z_])[-+]?(nan|inf)([^A-Za-z_]|$)", std::regex::icase);
     std::vector<std::string> defects;
     std::smatch              match;
     if (std::regex_search(table, match, non_finite))
-      defects.push_back("table prints a non-finite number near '" +
-                        table.substr(match.position(0) > 40 ?
-                                       match.position(0) - 40 :
-                                       0,
-                                     80) +
-                        "'");
+      defects.push_back(
+        "table prints a non-finite number near '" +
+        table.substr(match.position(0) > 40 ? match.position(0) - 40 : 0, 80) +
+        "'");
     return defects;
   }
 
@@ -198,7 +197,7 @@ namespace FloorBlock::Fuzz
   closed_form_defects(const Scene::ClosedForms &closed_forms)
   {
     std::vector<std::string> defects;
-    const auto &             chain = closed_forms.chain;
+    const auto              &chain = closed_forms.chain;
     check_finite(chain.weight, "chain.weight", defects);
     check_finite(chain.support_load, "chain.support_load", defects);
     check_finite(chain.inclination, "chain.inclination", defects);
@@ -206,8 +205,8 @@ namespace FloorBlock::Fuzz
     check_finite(closed_forms.youngs_modulus, "youngs_modulus", defects);
     for (const auto &entry : closed_forms.mechanisms)
       {
-        const std::string name = Scene::to_string(entry.mechanism);
-        const auto &      forces = entry.forces;
+        const std::string name   = Scene::to_string(entry.mechanism);
+        const auto       &forces = entry.forces;
         check_status(forces.status, name + ".status", defects);
         check_status(entry.contact.status, name + ".contact.status", defects);
         check_finite(forces.lateral_force, name + ".Q", defects);
@@ -217,7 +216,9 @@ namespace FloorBlock::Fuzz
         check_finite(entry.face_force_over_width, name + ".Q_over_b", defects);
         check_finite(entry.contact.contact_area, name + ".A", defects);
         check_finite(entry.contact.contact_length, name + ".c", defects);
-        check_finite(entry.contact.average_stress, name + ".sigma_avg", defects);
+        check_finite(entry.contact.average_stress,
+                     name + ".sigma_avg",
+                     defects);
         check_finite(entry.contact.max_stress, name + ".sigma_max", defects);
       }
     const auto &heights = closed_forms.no_rotation_heights;

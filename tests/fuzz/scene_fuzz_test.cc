@@ -1,25 +1,25 @@
 // Randomized robustness test of scene reading, validation and the closed
 // forms: every input must end in InputError or in finite, well-formed output.
 
-#include "fuzz_settings.h"
-#include "output_checks.h"
-#include "scene_pipeline.h"
-#include "scene_text_generator.h"
-
 #include <deal.II/base/exceptions.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
-#include <iostream>
-#include <map>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <typeinfo>
-#include <unistd.h>
+
+#include "fuzz_settings.h"
+#include "output_checks.h"
+#include "scene_pipeline.h"
+#include "scene_text_generator.h"
 
 using namespace FloorBlock::Fuzz;
 
@@ -35,7 +35,7 @@ namespace
   std::string
   default_scene_text()
   {
-    std::ifstream      file(std::string(FLOORBLOCK_SOURCE_DIR) +
+    std::ifstream     file(std::string(FLOORBLOCK_SOURCE_DIR) +
                        "/params/default.prm");
     std::stringstream text;
     text << file.rdbuf();
@@ -130,26 +130,29 @@ namespace
   rejection_reason(const std::string &message)
   {
     constexpr std::size_t longest_reason = 90;
-    std::string           reason = message;
+    std::string           reason         = message;
     if (!reason.empty() && reason.front() == '/')
       reason.erase(0, reason.find(": ") + 2);
-    return reason.substr(0, std::min(reason.find_first_of("0123456789"),
-                                     longest_reason));
+    return reason.substr(0,
+                         std::min(reason.find_first_of("0123456789"),
+                                  longest_reason));
   }
 
   /** Runs one input; returns "" or what went wrong, in one paragraph. */
   std::string
-  failure_of(const SceneInput &                    input,
-             const WorkDirectory &                 work,
-             bool &                                accepted,
+  failure_of(const SceneInput                     &input,
+             const WorkDirectory                  &work,
+             bool                                 &accepted,
              std::map<std::string, std::uint64_t> &n_by_reason)
   {
     std::string problem;
     try
       {
-        const PipelineResult result = run_scene_pipeline(
-          input.text, input.extension, input.overrides, work.path);
-        accepted = result.accepted;
+        const PipelineResult result = run_scene_pipeline(input.text,
+                                                         input.extension,
+                                                         input.overrides,
+                                                         work.path);
+        accepted                    = result.accepted;
         if (!accepted)
           ++n_by_reason[rejection_reason(result.error_message)];
         for (const std::string &defect : result.defects)
@@ -193,10 +196,11 @@ TEST(SceneFuzz, IncludeStatementsAreRejected)
 {
   WorkDirectory     work;
   const std::string self = (work.path / "scene.prm").string();
-  for (const std::string &statement :
-       {"include " + self, std::string("include /dev/zero"),
-        std::string("INCLUDE /tmp"), std::string("  include   /dev/null # x"),
-        std::string("incl\\\nude /dev/zero")})
+  for (const std::string &statement : {"include " + self,
+                                       std::string("include /dev/zero"),
+                                       std::string("INCLUDE /tmp"),
+                                       std::string("  include   /dev/null # x"),
+                                       std::string("incl\\\nude /dev/zero")})
     {
       const PipelineResult result = run_scene_pipeline(
         default_scene_text() + statement + "\n", ".prm", {}, work.path);
@@ -232,7 +236,7 @@ TEST(SceneFuzz, ChecksDetectNonFiniteOutput)
 // exception, no NaN/inf in analytic.json, analytic.csv or the table.
 TEST(SceneFuzz, RandomScenesGiveInputErrorOrFiniteOutput)
 {
-  const FuzzSettings       settings = fuzz_settings(default_seed, default_n_inputs);
+  const FuzzSettings settings = fuzz_settings(default_seed, default_n_inputs);
   const SceneTextGenerator generator(default_scene_text());
   RandomEngine             engine(settings.seed);
   WorkDirectory            work;
@@ -245,19 +249,20 @@ TEST(SceneFuzz, RandomScenesGiveInputErrorOrFiniteOutput)
     {
       const SceneInput input = generator.next(engine);
       in_progress.save(input);
-      bool accepted = false;
-      const std::string problem = failure_of(input, work, accepted, n_by_reason);
-      const auto        kind    = static_cast<unsigned int>(input.kind);
+      bool              accepted = false;
+      const std::string problem =
+        failure_of(input, work, accepted, n_by_reason);
+      const auto kind = static_cast<unsigned int>(input.kind);
       ++(accepted ? n_accepted : n_rejected)[kind];
       if (problem.empty())
         continue;
       if (++n_failures <= n_failures_shown)
         ADD_FAILURE() << "seed " << settings.seed << " input " << index << " ("
                       << to_string(input.kind) << "), saved as "
-                      << save_reproducer(input, "seed" +
-                                                  std::to_string(settings.seed) +
-                                                  "_input" +
-                                                  std::to_string(index))
+                      << save_reproducer(input,
+                                         "seed" +
+                                           std::to_string(settings.seed) +
+                                           "_input" + std::to_string(index))
                       << problem;
     }
   EXPECT_EQ(n_failures, 0u);
@@ -277,8 +282,8 @@ TEST(SceneFuzz, RandomScenesGiveInputErrorOrFiniteOutput)
   std::sort(reasons.rbegin(), reasons.rend());
   constexpr std::size_t n_reasons_shown = 12;
   for (std::size_t i = 0; i < std::min(reasons.size(), n_reasons_shown); ++i)
-    std::cout << "[fuzz] rejected " << reasons[i].first << " x: "
-              << reasons[i].second << '\n';
+    std::cout << "[fuzz] rejected " << reasons[i].first
+              << " x: " << reasons[i].second << '\n';
   std::cout << "[fuzz] seed " << settings.seed << ": " << settings.n_inputs
             << " scene inputs tried, " << total_accepted << " accepted, "
             << n_failures << " failures\n";

@@ -1,13 +1,13 @@
 #include "scene_pipeline.h"
 
-#include "output_checks.h"
-
 #include <common/input_error.h>
 #include <output/analytic_report.h>
 #include <parameters/scenario_parameters.h>
 #include <scene/closed_forms.h>
 
 #include <fstream>
+
+#include "output_checks.h"
 
 namespace FloorBlock::Fuzz
 {
@@ -21,9 +21,9 @@ namespace FloorBlock::Fuzz
     }
 
     void
-    append(std::vector<std::string> &      defects,
+    append(std::vector<std::string>       &defects,
            const std::vector<std::string> &more,
-           const std::string &             prefix)
+           const std::string              &prefix)
     {
       for (const std::string &defect : more)
         defects.push_back(prefix + defect);
@@ -32,7 +32,7 @@ namespace FloorBlock::Fuzz
     /** The scene's analytic.json, checking every output on the way. */
     nlohmann::json
     checked_report(const Parameters::ScenarioParameters &scene,
-                   std::vector<std::string> &            defects)
+                   std::vector<std::string>             &defects)
     {
       const Scene::ClosedForms closed_forms =
         Scene::evaluate_closed_forms(scene);
@@ -41,21 +41,23 @@ namespace FloorBlock::Fuzz
       append(defects, json_defects(report), "analytic.json: ");
       // dump() throws on invalid UTF-8; a result file must always serialize.
       report.dump(2);
-      append(defects, csv_defects(Output::analytic_csv(closed_forms)),
+      append(defects,
+             csv_defects(Output::analytic_csv(closed_forms)),
              "analytic.csv: ");
-      append(defects, table_defects(Output::analytic_table(closed_forms)),
+      append(defects,
+             table_defects(Output::analytic_table(closed_forms)),
              "table: ");
       return report;
     }
   } // namespace
 
   PipelineResult
-  run_scene_pipeline(const std::string &             text,
-                     const std::string &             extension,
+  run_scene_pipeline(const std::string              &text,
+                     const std::string              &extension,
                      const std::vector<std::string> &overrides,
-                     const std::filesystem::path &   work_directory)
+                     const std::filesystem::path    &work_directory)
   {
-    PipelineResult result;
+    PipelineResult                 result;
     Parameters::ScenarioParameters scene;
     try
       {
@@ -70,7 +72,7 @@ namespace FloorBlock::Fuzz
           result.defects.push_back("InputError with an empty message");
         return result;
       }
-    result.accepted = true;
+    result.accepted             = true;
     const nlohmann::json report = checked_report(scene, result.defects);
 
     // results/<scene>/parameters.prm must reproduce the run it documents.

@@ -32,8 +32,8 @@ namespace FloorBlock::Fuzz
    * input that is itself a defect, and the caller reports it.
    */
   PipelineResult
-  run_scene_pipeline(const std::string &             text,
-                     const std::string &             extension,
+  run_scene_pipeline(const std::string              &text,
+                     const std::string              &extension,
                      const std::vector<std::string> &overrides,
-                     const std::filesystem::path &   work_directory);
+                     const std::filesystem::path    &work_directory);
 } // namespace FloorBlock::Fuzz

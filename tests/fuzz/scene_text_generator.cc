@@ -18,8 +18,8 @@ namespace FloorBlock::Fuzz
     // Mix of input kinds, in InputKind order: mostly inputs close to a valid
     // scene (they reach the closed forms), some far from it (they exercise
     // the parser's error paths).
-    constexpr std::array<double, n_input_kinds> kind_weights = {{
-      1., 30., 30., 15., 8., 8., 8.}};
+    constexpr std::array<double, n_input_kinds> kind_weights = {
+      {1., 30., 30., 15., 8., 8., 8.}};
 
     // Deeper than any real scene (two levels), shallow enough to stay far
     // below the stack limits of the recursive JSON/XML readers.
@@ -94,7 +94,7 @@ namespace FloorBlock::Fuzz
     }
 
     std::string
-    nested_text(RandomEngine &engine,
+    nested_text(RandomEngine      &engine,
                 const std::string &open,
                 const std::string &close)
     {
@@ -124,8 +124,9 @@ namespace FloorBlock::Fuzz
         lowest > 0. ? lowest : highest * decades_below_top_for_zero;
       if (lowest < 0. || !(highest > bottom))
         return std::uniform_real_distribution<double>(lowest, highest)(engine);
-      return std::exp(std::uniform_real_distribution<double>(
-        std::log(bottom), std::log(highest))(engine));
+      return std::exp(
+        std::uniform_real_distribution<double>(std::log(bottom),
+                                               std::log(highest))(engine));
     }
   } // namespace
 
@@ -137,31 +138,34 @@ namespace FloorBlock::Fuzz
     static const std::regex selection(R"(^\[Selection ([^ ]*) \]$)");
     static const std::regex integer_list(
       R"(^\[List of <\[Integer range ([0-9]+)\.\.\.([0-9]+) .*> of length ([0-9]+)\.\.\.([0-9]+) )");
-    std::smatch match;
+    std::smatch        match;
     std::ostringstream value;
     value.precision(17);
     if (std::regex_search(parameter.pattern, match, integer_list))
       {
         // A few distinct entries: real scenes load a handful of blocks.
-        const double lowest = std::stod(match[1]), highest = std::stod(match[2]);
-        const std::size_t length = std::stoul(match[3]) +
-                                   random_index(engine, 4);
+        const double lowest  = std::stod(match[1]),
+                     highest = std::stod(match[2]);
+        const std::size_t length =
+          std::stoul(match[3]) + random_index(engine, 4);
         for (std::size_t i = 0; i < length; ++i)
           value << (i > 0 ? "," : "")
                 << std::lround(log_uniform(engine, lowest, highest));
       }
     else if (std::regex_search(parameter.pattern, match, number_range))
       {
-        const double lowest = std::stod(match[2]), highest = std::stod(match[3]);
-        const bool   integer = match[1] == "Integer range";
-        double       number;
+        const double lowest  = std::stod(match[2]),
+                     highest = std::stod(match[3]);
+        const bool integer   = match[1] == "Integer range";
+        double     number;
         // Range ends exactly; a zero lower end often (a sharp corner, no
         // cohesion: values the cross-parameter checks always allow).
         if (random_chance(engine, lowest == 0. ? 0.3 : 0.1))
-          number = random_chance(engine, lowest == 0. ? 0.8 : 0.5) ? lowest :
-                                                                    highest;
+          number =
+            random_chance(engine, lowest == 0. ? 0.8 : 0.5) ? lowest : highest;
         else if (random_chance(engine, 0.5))
-          number = std::uniform_real_distribution<double>(lowest, highest)(engine);
+          number =
+            std::uniform_real_distribution<double>(lowest, highest)(engine);
         else
           number = log_uniform(engine, lowest, highest);
         if (integer)
@@ -187,8 +191,8 @@ namespace FloorBlock::Fuzz
   std::vector<DeclaredParameter>
   declared_parameters()
   {
-    const auto tree = nlohmann::json::parse(
-      printed_parameters(dealii::ParameterHandler::JSON));
+    const auto tree =
+      nlohmann::json::parse(printed_parameters(dealii::ParameterHandler::JSON));
     std::vector<DeclaredParameter> parameters;
     for (const auto &[subsection, entries] : tree.items())
       for (const auto &[name, entry] : entries.items())
@@ -203,9 +207,13 @@ namespace FloorBlock::Fuzz
   std::string
   to_string(const InputKind kind)
   {
-    const std::array<const char *, n_input_kinds> names = {
-      {"default_scene", "replaced_values", "every_parameter", "byte_mutation",
-       "random_structure", "json_scene", "xml_scene"}};
+    const std::array<const char *, n_input_kinds> names = {{"default_scene",
+                                                            "replaced_values",
+                                                            "every_parameter",
+                                                            "byte_mutation",
+                                                            "random_structure",
+                                                            "json_scene",
+                                                            "xml_scene"}};
     return names[static_cast<unsigned int>(kind)];
   }
 
@@ -220,7 +228,7 @@ namespace FloorBlock::Fuzz
   {
     std::discrete_distribution<unsigned int> kinds(kind_weights.begin(),
                                                    kind_weights.end());
-    SceneInput input;
+    SceneInput                               input;
     input.kind      = static_cast<InputKind>(kinds(engine));
     input.extension = ".prm";
     switch (input.kind)
@@ -255,7 +263,7 @@ namespace FloorBlock::Fuzz
   }
 
   std::string
-  SceneTextGenerator::value_for(RandomEngine &           engine,
+  SceneTextGenerator::value_for(RandomEngine            &engine,
                                 const DeclaredParameter &parameter) const
   {
     // Half valid by pattern (such scenes reach the closed forms), the rest
@@ -271,13 +279,15 @@ namespace FloorBlock::Fuzz
   {
     // One to three entries of the valid scene get hostile values; the rest
     // stays valid, so the scene often reaches the closed forms.
-    std::string text = valid_text;
+    std::string       text           = valid_text;
     const std::size_t n_replacements = 1 + random_index(engine, 3);
     for (std::size_t i = 0; i < n_replacements; ++i)
       {
-        const auto &parameter = parameters[random_index(engine, parameters.size())];
+        const auto &parameter =
+          parameters[random_index(engine, parameters.size())];
         text += "subsection " + parameter.subsection + "\n" +
-                set_line(parameter.name, value_for(engine, parameter)) + "end\n";
+                set_line(parameter.name, value_for(engine, parameter)) +
+                "end\n";
       }
     return text;
   }
@@ -297,18 +307,19 @@ namespace FloorBlock::Fuzz
           }
         // Mostly valid random values: most scenes pass the patterns and
         // probe the closed forms over the whole declared ranges.
-        text += set_line(parameter.name, random_chance(engine, 0.97) ?
-                                           in_range_value(engine, parameter) :
-                                           value_for(engine, parameter));
+        text += set_line(parameter.name,
+                         random_chance(engine, 0.97) ?
+                           in_range_value(engine, parameter) :
+                           value_for(engine, parameter));
       }
     return text + "end\n";
   }
 
   std::string
-  SceneTextGenerator::byte_mutation(RandomEngine &     engine,
+  SceneTextGenerator::byte_mutation(RandomEngine      &engine,
                                     const std::string &text) const
   {
-    std::string mutated = text;
+    std::string       mutated = text;
     const std::size_t n_edits = 1 + random_index(engine, 8);
     for (std::size_t edit = 0; edit < n_edits; ++edit)
       {
@@ -327,12 +338,13 @@ namespace FloorBlock::Fuzz
               break;
             case 3:
               if (at < mutated.size())
-                mutated[at] = static_cast<char>(
-                  mutated[at] ^ (1 << random_index(engine, 8)));
+                mutated[at] = static_cast<char>(mutated[at] ^
+                                                (1 << random_index(engine, 8)));
               break;
             default:
-              mutated.insert(at, valid_lines[random_index(
-                                   engine, valid_lines.size())] + "\n");
+              mutated.insert(
+                at,
+                valid_lines[random_index(engine, valid_lines.size())] + "\n");
           }
       }
     return mutated;
@@ -347,17 +359,18 @@ namespace FloorBlock::Fuzz
     const std::size_t n_lines = random_index(engine, 60);
     for (std::size_t line = 0; line < n_lines; ++line)
       {
-        const auto &parameter = parameters[random_index(engine, parameters.size())];
+        const auto &parameter =
+          parameters[random_index(engine, parameters.size())];
         switch (random_index(engine, 8))
           {
             case 7:
               // Harmless targets only: the dangerous ones (the scene itself,
               // /dev/zero) are SceneFuzz.IncludeStatementsAreRejected.
-              text += std::string(random_chance(engine, 0.5) ? "include " :
-                                                               "INCLUDE ") +
-                      (random_chance(engine, 0.5) ? "/nonexistent.prm" :
-                                                    "/tmp") +
-                      "\n";
+              text +=
+                std::string(random_chance(engine, 0.5) ? "include " :
+                                                         "INCLUDE ") +
+                (random_chance(engine, 0.5) ? "/nonexistent.prm" : "/tmp") +
+                "\n";
               break;
             case 0:
               text += "subsection " + parameter.subsection + "\n";
@@ -390,7 +403,7 @@ namespace FloorBlock::Fuzz
         case 0:
           return nested_text(engine, "[", "]");
         case 1:
-          return nested_text(engine, "{\"a\":", "}") ;
+          return nested_text(engine, "{\"a\":", "}");
         default:
           break;
       }
@@ -400,14 +413,15 @@ namespace FloorBlock::Fuzz
     for (const auto &parameter : parameters)
       tree[parameter.subsection][parameter.name]["value"] =
         random_chance(engine, 0.97) ? in_range_value(engine, parameter) :
-                                     value_for(engine, parameter);
+                                      value_for(engine, parameter);
     if (random_chance(engine, 0.3))
       randomize_json(engine, tree);
     // Invalid UTF-8 from random values is dropped here; byte edits below
     // bring raw bytes back.
-    const std::string text =
-      tree.dump(random_chance(engine, 0.5) ? 2 : -1, ' ', false,
-                nlohmann::json::error_handler_t::ignore);
+    const std::string text = tree.dump(random_chance(engine, 0.5) ? 2 : -1,
+                                       ' ',
+                                       false,
+                                       nlohmann::json::error_handler_t::ignore);
     return random_chance(engine, 0.4) ? byte_mutation(engine, text) : text;
   }
 
@@ -421,11 +435,12 @@ namespace FloorBlock::Fuzz
     std::string       text = printed_parameters(dealii::ParameterHandler::XML);
     const std::string open = "<value>", close = "</value>";
     for (std::size_t start = text.find(open); start != std::string::npos;
-         start = text.find(open, start + 1))
+         start             = text.find(open, start + 1))
       {
-        const std::size_t end = text.find(close, start);
-        if (end != std::string::npos && random_chance(engine, 0.1))
-          text.replace(start + open.size(), end - start - open.size(),
+                    const std::size_t end = text.find(close, start);
+                    if (end != std::string::npos && random_chance(engine, 0.1))
+          text.replace(start + open.size(),
+                       end - start - open.size(),
                        random_value(engine));
       }
     return random_chance(engine, 0.4) ? byte_mutation(engine, text) : text;
@@ -435,10 +450,11 @@ namespace FloorBlock::Fuzz
   SceneTextGenerator::overrides(RandomEngine &engine) const
   {
     std::vector<std::string> assignments;
-    const std::size_t n_assignments = 1 + random_index(engine, 3);
+    const std::size_t        n_assignments = 1 + random_index(engine, 3);
     for (std::size_t i = 0; i < n_assignments; ++i)
       {
-        const auto &parameter = parameters[random_index(engine, parameters.size())];
+        const auto &parameter =
+          parameters[random_index(engine, parameters.size())];
         switch (random_index(engine, 4))
           {
             case 0:

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "random_values.h"
-
 #include <string>
 #include <vector>
+
+#include "random_values.h"
 
 namespace FloorBlock::Fuzz
 {

@@ -3,14 +3,13 @@
 // are estimated within 1 %, and the estimate must bracket the converged
 // value. Release only (scenario label): about 30 s, 124k DoFs in the last
 // check, too slow under the sanitizers' debug deal.II.
-#include "estimate_checks.h"
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+
+#include "estimate_checks.h"
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -50,16 +49,18 @@ TEST(AccuracyTarget, ThreeBlocksMeetOnePercentWithAnEstimateThatBrackets)
   const double degree_1_time = degree_1["wall_time_s"].get<double>();
   const double degree_2_time = target["wall_time_s"].get<double>();
   EXPECT_GT(degree_1_time, 0.);
-  const json  &last          = degree_1["levels"].back();
+  const json &last = degree_1["levels"].back();
   EXPECT_LE(degree_1_time - last["wall_time_s"].get<double>() -
               last["halved_wall_time_s"].get<double>(),
             degree_2_time);
   // Confirmed by the next adaptive level of degree 2.
-  const unsigned int confirming = target["confirming_level"].get<unsigned int>();
+  const unsigned int confirming =
+    target["confirming_level"].get<unsigned int>();
   EXPECT_EQ(confirming, target["reported_level"].get<unsigned int>() + 1);
   EXPECT_EQ(target["levels"].size(), confirming + 1);
   // The reported files are degree 2's: fem.json has the reported DoFs.
-  const json &reported = target["levels"][target["reported_level"].get<unsigned int>()];
+  const json &reported =
+    target["levels"][target["reported_level"].get<unsigned int>()];
   EXPECT_EQ(read_json(folder + "/fem.json")["n_dofs"].get<unsigned int>(),
             target["reported_solve"].get<std::string>() == "refined" ?
               reported["halved_n_dofs"].get<unsigned int>() :
@@ -89,8 +90,8 @@ TEST(AccuracyTarget, ThreeBlocksMeetTwoPercentWithLevelZerosCheck)
   const auto        result = run_floorblock(
     "run tests/scenarios/three_blocks.prm --output " + shell_quoted(folder) +
     " --set 'Solver/Error estimate=refined solve'"
-    " --set 'Solver/FE degree=1'"
-    " --set 'Mesh/Target relative error=0.02'");
+           " --set 'Solver/FE degree=1'"
+           " --set 'Mesh/Target relative error=0.02'");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const json  summary  = read_json(folder + "/summary.json");
   const json &estimate = summary["fem_error_estimate"];

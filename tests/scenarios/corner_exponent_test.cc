@@ -5,13 +5,12 @@
 // of 1.5 um, too slow under the sanitizers' debug deal.II. Further scenes
 // (2 cm fillets and 20 deg friction, the default scene) are measured in
 // README.md, "Corner stress": each takes 1-3 minutes.
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -29,8 +28,10 @@ namespace
     const std::string folder = fresh_output_folder("corner_exponent");
     const auto        result = run_floorblock(
       "corner tests/scenarios/hard_rounded_corners.prm --output " +
-      shell_quoted(folder) + " --set Joints/Law=rigid --set "
-      "'Corner/Rounding radii=' " + settings);
+      shell_quoted(folder) +
+      " --set Joints/Law=rigid --set "
+             "'Corner/Rounding radii=' " +
+      settings);
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const json report = read_json(folder + "/corner.json");
     ASSERT_TRUE(report["converged"].get<bool>()) << report["stop_reason"];
@@ -44,11 +45,13 @@ namespace
     EXPECT_GE(fit["range_to_m"].get<double>(),
               10. * fit["range_from_m"].get<double>());
     EXPECT_NEAR(fit["exponent"].get<double>(),
-                report["theory"]["exponent"].get<double>(), exponent_tolerance)
+                report["theory"]["exponent"].get<double>(),
+                exponent_tolerance)
       << fit;
     // The mean pressure's own fit (a constant under the edge's terms).
     EXPECT_NEAR(report["invariant_fit"]["exponent"].get<double>(),
-                report["theory"]["exponent"].get<double>(), exponent_tolerance)
+                report["theory"]["exponent"].get<double>(),
+                exponent_tolerance)
       << report["invariant_fit"];
     const json &last = report["levels"].back();
     EXPECT_LE(last["K1_change"].get<double>(), intensity_tolerance);

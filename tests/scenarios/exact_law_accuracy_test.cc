@@ -10,14 +10,13 @@
 // its last two levels; a degree-2 box at 1.08 M DoFs gave 98.44 mm); at
 // vertical friction 60 deg the Richardson limits of two such ladders,
 // 190.41 and 190.45 mm (finest levels 190.52 and 190.55 mm, still falling).
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <string>
+
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -29,11 +28,12 @@ namespace
   face_length_estimate(const std::string &name, const std::string &settings)
   {
     const std::string folder = fresh_output_folder(name);
-    const auto        result = run_floorblock(
-      "run params/default.prm --output " + shell_quoted(folder) +
-      " --set Joints/Law=rigid " + settings);
+    const auto        result =
+      run_floorblock("run params/default.prm --output " + shell_quoted(folder) +
+                     " --set Joints/Law=rigid " + settings);
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    const json estimate = read_json(folder + "/summary.json")["fem_error_estimate"];
+    const json estimate =
+      read_json(folder + "/summary.json")["fem_error_estimate"];
     EXPECT_TRUE(estimate["target"]["met"].get<bool>()) << estimate["target"];
     return estimate["joints"]["vertical 6"]["contact_length_m"];
   }
@@ -58,7 +58,8 @@ namespace
 // DoFs), after about 610 s on an idle 2-core machine.
 TEST(ExactLawAccuracy, DefaultSceneMeetsOnePercentAndBracketsTheConvergedLength)
 {
-  expect_brackets(face_length_estimate("exact_law_default", ""), 0.09839,
+  expect_brackets(face_length_estimate("exact_law_default", ""),
+                  0.09839,
                   0.09845);
 }
 
@@ -70,5 +71,6 @@ TEST(ExactLawAccuracy, VerticalFrictionSixtyBracketsTheRichardsonLimits)
   expect_brackets(face_length_estimate("exact_law_friction_60",
                                        "--set 'Joints/Vertical friction "
                                        "angle=60'"),
-                  0.19041, 0.19045);
+                  0.19041,
+                  0.19045);
 }

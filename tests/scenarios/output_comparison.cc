@@ -1,7 +1,5 @@
 #include "output_comparison.h"
 
-#include "process.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +8,8 @@
 #include <set>
 #include <sstream>
 #include <vector>
+
+#include "process.h"
 
 namespace FloorBlockTest
 {

@@ -40,7 +40,7 @@ namespace FloorBlockTest
      * Fields (JSON keys, CSV columns) this case does not compare; the case
      * says why next to the list.
      */
-    std::vector<std::string>    skipped_fields;
+    std::vector<std::string> skipped_fields;
   };
 
   /**

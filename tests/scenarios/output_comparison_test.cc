@@ -2,16 +2,14 @@
 // accepted changed numbers or missing keys, every scenario test would pass
 // vacuously. Each test changes one thing in a small record and checks that
 // the change is caught (or, for a timing field, ignored).
-#include "output_comparison.h"
-
-#include "process.h"
-
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
+
+#include "output_comparison.h"
+#include "process.h"
 
 using namespace FloorBlockTest;
 using nlohmann::json;
@@ -157,7 +155,7 @@ TEST(OutputComparison, CostCountersAndRoundOffResidualsFollowTheMachine)
   const json reference = {{"force_balance_absolute_error_N_per_m", 1.2e-6},
                           {"force_balance_relative_error", 3e-14},
                           {"normal_force_N_per_m", 1.2e-6}};
-  json other = reference;
+  json       other     = reference;
   other["force_balance_absolute_error_N_per_m"] = 5e-7;
   other["force_balance_relative_error"]         = 1e-14;
   EXPECT_TRUE(compare_json(reference, other, "fem.json").empty());
@@ -175,8 +173,8 @@ TEST(OutputComparison, CaseSkippedFieldIsNotCompared)
 {
   const ScratchFolder scratch;
   ComparisonSettings  settings;
-  settings.skipped_fields = {"status"};
-  const std::string a = scratch.written("skip_a.csv", table);
+  settings.skipped_fields         = {"status"};
+  const std::string a             = scratch.written("skip_a.csv", table);
   std::string       changed_table = table;
   changed_table.replace(changed_table.find(",ok,"), 4, ",slip,");
   const std::string b = scratch.written("skip_b.csv", changed_table);

@@ -44,10 +44,6 @@
 // references first, timings left out); review that list and
 // `git diff tests/scenarios` before committing them. A failing case keeps its
 // output folder (printed) for inspection.
-#include "output_comparison.h"
-
-#include "process.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,6 +54,9 @@
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "output_comparison.h"
+#include "process.h"
 
 using namespace FloorBlockTest;
 namespace fs = std::filesystem;
@@ -191,7 +190,8 @@ TEST(ScenarioReference, RunDefaultScene)
   ComparisonSettings settings;
   settings.looser_fields = {
     {"absolute_error", {1e-3, 1e-8}, "difference of two converged forces"},
-    {"relative_error", {1e-8, 1e-8},
+    {"relative_error",
+     {1e-8, 1e-8},
      "difference of two converged forces, over the force"}};
   check_against_references(
     {"run_default", "run params/default.prm", 0, settings});
@@ -217,10 +217,9 @@ TEST(ScenarioReference, SolveSixBlockBenchmark)
   // changed label, every force within tolerance). Their labels and the
   // counts made of them are not compared; the forces are.
   ComparisonSettings settings;
-  settings.looser_fields = {
-    {"n_open", {2., 0.}, "labels of zero-force nodes"},
-    {"n_stick", {2., 0.}, "labels of zero-force nodes"},
-    {"n_slip", {2., 0.}, "labels of zero-force nodes"}};
+  settings.looser_fields  = {{"n_open", {2., 0.}, "labels of zero-force nodes"},
+                             {"n_stick", {2., 0.}, "labels of zero-force nodes"},
+                             {"n_slip", {2., 0.}, "labels of zero-force nodes"}};
   settings.skipped_fields = {"state"};
   check_against_references({"solve_s6", "solve params/s6.prm", 0, settings});
 }
@@ -267,8 +266,7 @@ TEST(ScenarioReference, VerifyPatch)
   // The shear over normal force of a frictionless patch is zero up to
   // round-off (6e-10 and 1.3e-10 on two machines).
   ComparisonSettings settings;
-  settings.looser_fields = {
-    {"computed", {1e-8, 1e-8}, "zero up to round-off"}};
+  settings.looser_fields = {{"computed", {1e-8, 1e-8}, "zero up to round-off"}};
   check_against_references({"verify_patch", "verify patch", 0, settings});
 }
 

@@ -12,7 +12,9 @@ namespace
 {
   /** p = K1 r^(l1-1) + K2 r^(l2-1) at 30 distances from 1e-4 to 3e-2 m. */
   std::vector<RadialSample>
-  two_term_samples(const double l1, const double k1, const double l2,
+  two_term_samples(const double l1,
+                   const double k1,
+                   const double l2,
                    const double k2)
   {
     std::vector<RadialSample> samples;
@@ -48,7 +50,8 @@ TEST(TwoTermFit, RecoversTheFirstExponentWhereTheOneTermFitIsBiased)
   EXPECT_LT(fit.rms_relative_residual, 1e-8);
   // |K2/K1| r^0.364 = 0.1 at r = (0.1 / 1.4)^(1 / 0.364).
   EXPECT_NEAR(one_term_validity_distance(fit, 0.1),
-              std::pow(0.1 / 1.4, 1. / (0.9085 - 0.5445)), 1e-6);
+              std::pow(0.1 / 1.4, 1. / (0.9085 - 0.5445)),
+              1e-6);
 }
 
 // With 1 % noise (alternating, like nodal tractions at hanging nodes) the

@@ -31,8 +31,8 @@ TEST(ComplexRoots, FindsSimpleRealComplexAndDoubleRoots)
 {
   using Complex = std::complex<double>;
   const auto f  = [](const Complex z) {
-    return (z - 0.3) * (z - 0.7) * ((z - 0.5) * (z - 0.5) + 0.04) *
-           (z - 1.4) * (z - 1.4);
+    return (z - 0.3) * (z - 0.7) * ((z - 0.5) * (z - 0.5) + 0.04) * (z - 1.4) *
+           (z - 1.4);
   };
   const auto roots = complex_roots(f, RootSearch{});
   ASSERT_EQ(roots.size(), 4u);
@@ -52,8 +52,8 @@ TEST(ComplexRoots, FindsSimpleRealComplexAndDoubleRoots)
 TEST(WedgeModes, ReEntrantCornerOfWilliams1952)
 {
   SingleWedge corner;
-  corner.angle       = 1.5 * pi;
-  const auto   modes = wedge_modes(corner);
+  corner.angle     = 1.5 * pi;
+  const auto modes = wedge_modes(corner);
   EXPECT_NEAR(exponent(modes, 0).real(), 0.544484, 1e-6);
   EXPECT_NEAR(exponent(modes, 0).imag(), 0., 1e-12);
   EXPECT_EQ(modes.at(0).symmetry, ModeSymmetry::symmetric);
@@ -63,11 +63,11 @@ TEST(WedgeModes, ReEntrantCornerOfWilliams1952)
   for (const auto &mode : {modes.at(0), modes.at(1)})
     {
       const double lambda = mode.exponent.real();
-      const double sign =
-        mode.symmetry == ModeSymmetry::symmetric ? 1. : -1.;
+      const double sign   = mode.symmetry == ModeSymmetry::symmetric ? 1. : -1.;
       EXPECT_NEAR(lambda * std::sin(1.5 * pi) +
                     sign * std::sin(1.5 * pi * lambda),
-                  0., 1e-12);
+                  0.,
+                  1e-12);
     }
 }
 
@@ -103,8 +103,7 @@ TEST(CornerModes, FlushSquareCornersAreNotSingular)
   WedgePair flush;
   flush.first_angle  = pi / 2.;
   flush.second_angle = pi / 2.;
-  for (const auto state :
-       {InterfaceState::stuck, InterfaceState::frictionless})
+  for (const auto state : {InterfaceState::stuck, InterfaceState::frictionless})
     {
       flush.state      = state;
       const auto modes = corner_modes(flush);
@@ -122,11 +121,10 @@ TEST(CornerModes, FlushSquareCornersAreNotSingular)
 TEST(WedgeModes, RigidPunchEdgeFrictionlessAndBonded)
 {
   SingleWedge half_plane;
-  half_plane.angle                  = pi;
+  half_plane.angle                   = pi;
   half_plane.material.poissons_ratio = 0.3;
-  half_plane.first_face             = FaceCondition::rigid_smooth;
-  EXPECT_NEAR(std::abs(exponent(wedge_modes(half_plane), 0) - 0.5), 0.,
-              1e-10);
+  half_plane.first_face              = FaceCondition::rigid_smooth;
+  EXPECT_NEAR(std::abs(exponent(wedge_modes(half_plane), 0) - 0.5), 0., 1e-10);
 
   half_plane.first_face = FaceCondition::clamped;
   for (const double nu : {0., 0.3, 0.45})
@@ -135,7 +133,8 @@ TEST(WedgeModes, RigidPunchEdgeFrictionlessAndBonded)
       const std::complex<double> expected(0.5,
                                           std::log(3. - 4. * nu) / (2. * pi));
       EXPECT_NEAR(std::abs(exponent(wedge_modes(half_plane), 0) - expected),
-                  0., 1e-10)
+                  0.,
+                  1e-10)
         << "nu = " << nu;
     }
 }
@@ -153,8 +152,8 @@ TEST(CornerModes, SlidingRigidPunchEdges)
   punch.first_material.poissons_ratio  = 0.3;
   punch.second_material.shear_modulus  = 1e8;
   punch.second_material.poissons_ratio = 0.3;
-  punch.state                = InterfaceState::slipping;
-  punch.friction_coefficient = 0.5;
+  punch.state                          = InterfaceState::slipping;
+  punch.friction_coefficient           = 0.5;
   const double gamma =
     std::atan(0.5 * (1. - 2. * 0.3) / (2. * (1. - 0.3))) / pi;
   punch.slip_sign = 1;
@@ -170,20 +169,20 @@ TEST(CornerModes, SlidingRigidPunchEdges)
 TEST(CornerModes, InterfaceCrackOscillates)
 {
   WedgePair crack;
-  crack.first_angle                   = pi;
-  crack.second_angle                  = pi;
-  crack.first_material.shear_modulus  = 10.;
-  crack.first_material.poissons_ratio = 0.25;
+  crack.first_angle                    = pi;
+  crack.second_angle                   = pi;
+  crack.first_material.shear_modulus   = 10.;
+  crack.first_material.poissons_ratio  = 0.25;
   crack.second_material.poissons_ratio = 0.35;
-  const double beta = dundurs_parameters(crack.first_material,
-                                         crack.second_material)
-                        .beta;
+  const double beta =
+    dundurs_parameters(crack.first_material, crack.second_material).beta;
   const double epsilon =
     std::abs(std::log((1. - beta) / (1. + beta)) / (2. * pi));
   EXPECT_GT(epsilon, 0.05);
   EXPECT_NEAR(std::abs(exponent(corner_modes(crack), 0) -
                        std::complex<double>(0.5, epsilon)),
-              0., 1e-10);
+              0.,
+              1e-10);
 }
 
 // A stuck interface between similar materials is no interface: a square
@@ -238,7 +237,7 @@ TEST(CornerModes, RefusesBadInputNamingIt)
   corner.first_angle  = pi / 2.;
   corner.second_angle = 2. * pi;
   EXPECT_THROW(corner_modes(corner), FloorBlock::InputError);
-  corner.second_angle                 = pi;
+  corner.second_angle                  = pi;
   corner.first_material.poissons_ratio = 0.5;
   EXPECT_THROW(corner_modes(corner), FloorBlock::InputError);
   corner.first_material.poissons_ratio = 0.3;

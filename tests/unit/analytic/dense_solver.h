@@ -16,9 +16,7 @@ namespace FloorBlock::AnalyticTest
 
     /** @brief Add @p value to the matrix entry (row, column). */
     void
-    add(const unsigned int row,
-        const unsigned int column,
-        const double       value);
+    add(const unsigned int row, const unsigned int column, const double value);
 
     /** @brief Add @p value to the right-hand side of @p row. */
     void

@@ -1,7 +1,6 @@
 // The tool shall derive block inclinations, floor lift and elastic moduli.
 
 #include <analytic/floor_shape.h>
-
 #include <common/input_error.h>
 
 #include <gtest/gtest.h>

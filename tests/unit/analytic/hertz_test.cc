@@ -50,7 +50,8 @@ TEST(Hertz, ShallCarryTheLineLoadWithItsEllipticPressure)
   // a grows as sqrt(P R / E*): four times the load doubles the width.
   const HertzLineContact loaded =
     hertz_line_contact(4. * line_load, radius, contact_modulus());
-  EXPECT_NEAR(loaded.half_width, 2. * contact.half_width,
+  EXPECT_NEAR(loaded.half_width,
+              2. * contact.half_width,
               1e-12 * contact.half_width);
 }
 

@@ -140,14 +140,10 @@ namespace FloorBlock::AnalyticTest
           {
             // Joint i-1, in the frame of block i-1, reversed, at the
             // away-side top corner of block i.
-            const BlockFrame away_axes = frame(chain.inclination[block - 1]);
+            const BlockFrame away_axes   = frame(chain.inclination[block - 1]);
             const Vector2    at_away_top = corners.away_top + (-1.) * pivot;
-            add_force(system,
-                      row,
-                      3,
-                      block - 1,
-                      (-1.) * away_axes.along,
-                      at_away_top);
+            add_force(
+              system, row, 3, block - 1, (-1.) * away_axes.along, at_away_top);
             add_force(system,
                       row,
                       3,
@@ -202,8 +198,7 @@ namespace FloorBlock::AnalyticTest
                       row,
                       2,
                       block - 1,
-                      (-1.) * away_axes.along +
-                        tan_vertical * away_axes.normal,
+                      (-1.) * away_axes.along + tan_vertical * away_axes.normal,
                       {0., 0.});
           }
         add_force(system,
@@ -233,8 +228,7 @@ namespace FloorBlock::AnalyticTest
           moment((-1.) * pivot,
                  lateral_force * axes.along +
                    (-lateral_force * tan_vertical) * axes.normal) +
-          moment(corners.centroid + (-1.) * pivot,
-                 {0., -chain.weight[block]}) +
+          moment(corners.centroid + (-1.) * pivot, {0., -chain.weight[block]}) +
           moment(corners.support_point + (-1.) * pivot,
                  {0., -chain.support_load[block]});
         if (block > 0)

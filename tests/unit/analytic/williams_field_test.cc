@@ -33,11 +33,13 @@ TEST(WilliamsRows, SatisfyHookesLawInPlaneStrain)
   const WedgeMaterial        material{3.5e9, 0.27};
   const double               g  = material.shear_modulus;
   const double               nu = material.poissons_ratio;
-  const std::vector<Complex> c  = {{0.3, -0.1}, {-0.7, 0.2}, {1.1, 0.4},
+  const std::vector<Complex> c  = {{0.3, -0.1},
+                                   {-0.7, 0.2},
+                                   {1.1, 0.4},
                                    {0.5, -0.9}};
   const double               h  = 1e-6;
-  for (const Complex lambda : {Complex(0.5445, 0.), Complex(0.6, 0.15),
-                               Complex(1.7, -0.3)})
+  for (const Complex lambda :
+       {Complex(0.5445, 0.), Complex(0.6, 0.15), Complex(1.7, -0.3)})
     for (const double theta : {-2.1, -0.4, 0.3, 1.2, 2.9})
       {
         const auto at = [&](const double t) {
@@ -46,7 +48,7 @@ TEST(WilliamsRows, SatisfyHookesLawInPlaneStrain)
         const WilliamsRows rows = at(theta);
         const Complex      f    = combine(rows.normal_stress, c);
         const Complex      f1   = combine(rows.shear_stress, c);
-        const Complex      f2 = (combine(at(theta + h).shear_stress, c) -
+        const Complex      f2   = (combine(at(theta + h).shear_stress, c) -
                             combine(at(theta - h).shear_stress, c)) /
                            (2. * h);
         const Complex u_r  = combine(rows.radial_displacement, c);
@@ -57,18 +59,20 @@ TEST(WilliamsRows, SatisfyHookesLawInPlaneStrain)
         const Complex du_t = (combine(at(theta + h).angular_displacement, c) -
                               combine(at(theta - h).angular_displacement, c)) /
                              (2. * h);
-        const Complex s_rr = f2 + (lambda + 1.) * f;
-        const Complex s_tt = lambda * (lambda + 1.) * f;
-        const Complex s_rt = -lambda * f1;
-        const double  scale =
-          std::abs(s_rr) + std::abs(s_tt) + std::abs(s_rt);
+        const Complex s_rr  = f2 + (lambda + 1.) * f;
+        const Complex s_tt  = lambda * (lambda + 1.) * f;
+        const Complex s_rt  = -lambda * f1;
+        const double  scale = std::abs(s_rr) + std::abs(s_tt) + std::abs(s_rt);
         EXPECT_NEAR(std::abs(2. * g * lambda * u_r -
                              ((1. - nu) * s_rr - nu * s_tt)),
-                    0., 1e-7 * scale);
+                    0.,
+                    1e-7 * scale);
         EXPECT_NEAR(std::abs(2. * g * (u_r + du_t) -
                              ((1. - nu) * s_tt - nu * s_rr)),
-                    0., 1e-7 * scale);
-        EXPECT_NEAR(std::abs(g * (du_r + (lambda - 1.) * u_t) - s_rt), 0.,
+                    0.,
+                    1e-7 * scale);
+        EXPECT_NEAR(std::abs(g * (du_r + (lambda - 1.) * u_t) - s_rt),
+                    0.,
                     1e-7 * scale);
       }
 }

@@ -1,20 +1,20 @@
 #include <common/atomic_file.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <unistd.h>
 
 namespace
 {
   std::filesystem::path
   fresh_directory(const std::string &name)
   {
-    const auto directory = std::filesystem::temp_directory_path() /
-                           ("floorblock_" + name + "_" + std::to_string(::getpid()));
+    const auto directory =
+      std::filesystem::temp_directory_path() /
+      ("floorblock_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(directory);
     return directory;
   }
@@ -55,7 +55,8 @@ TEST(AtomicFile, ReplacesExistingFile)
   std::filesystem::remove_all(directory);
 }
 
-// The tool shall report an unwritable destination instead of pretending success.
+// The tool shall report an unwritable destination instead of pretending
+// success.
 TEST(AtomicFile, ThrowsWhenFolderCannotBeCreated)
 {
   EXPECT_THROW(FloorBlock::write_file_atomically("/proc/floorblock/x.txt", "x"),

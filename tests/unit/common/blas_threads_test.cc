@@ -1,8 +1,7 @@
 #include <common/blas_threads.h>
 
-#include <gtest/gtest.h>
-
 #include <dlfcn.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <optional>
@@ -11,7 +10,8 @@
 namespace
 {
   const char *const count_variables[] = {"OPENBLAS_NUM_THREADS",
-                                         "GOTO_NUM_THREADS", "OMP_NUM_THREADS"};
+                                         "GOTO_NUM_THREADS",
+                                         "OMP_NUM_THREADS"};
 
   /** Clears the thread-count variables for one test, restoring them after. */
   class WithoutThreadVariables : public ::testing::Test

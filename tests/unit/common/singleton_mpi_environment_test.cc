@@ -53,7 +53,8 @@ namespace
 
 // The tool shall give a process that starts MPI by itself a session
 // directory of its own, and remove it when done.
-TEST_F(SingletonMpiEnvironmentTest, SingletonGetsAPrivateDirectoryRemovedAtTheEnd)
+TEST_F(SingletonMpiEnvironmentTest,
+       SingletonGetsAPrivateDirectoryRemovedAtTheEnd)
 {
   std::string path;
   {
@@ -93,15 +94,15 @@ TEST_F(SingletonMpiEnvironmentTest, LauncherAndUserSettingAreLeftAlone)
 // The tool shall start a singleton with the quick settings (ob1 messaging,
 // no helper daemon), keep a value the user set, and leave a process started
 // by mpirun alone.
-TEST_F(SingletonMpiEnvironmentTest, SingletonGetsTheStartUpSettingsUnlessSetOrLaunched)
+TEST_F(SingletonMpiEnvironmentTest,
+       SingletonGetsTheStartUpSettingsUnlessSetOrLaunched)
 {
   {
     const SingletonMpiEnvironment environment;
     ASSERT_NE(std::getenv("OMPI_MCA_pml"), nullptr);
     EXPECT_EQ(std::string(std::getenv("OMPI_MCA_pml")), "ob1");
     ASSERT_NE(std::getenv("OMPI_MCA_ess_singleton_isolated"), nullptr);
-    EXPECT_EQ(std::string(std::getenv("OMPI_MCA_ess_singleton_isolated")),
-              "1");
+    EXPECT_EQ(std::string(std::getenv("OMPI_MCA_ess_singleton_isolated")), "1");
   }
   ::unsetenv("OMPI_MCA_pml");
   ::unsetenv("OMPI_MCA_ess_singleton_isolated");

@@ -27,8 +27,9 @@ namespace
   constexpr double block_height   = 2.;   // m
 
   Contact::JointReport
-  joint(const std::string &name, const double normal_force,
-        const double closed_length = 0.)
+  joint(const std::string &name,
+        const double       normal_force,
+        const double       closed_length = 0.)
   {
     Contact::JointReport report;
     report.name          = name;
@@ -55,8 +56,8 @@ namespace
   two_block_closed_forms()
   {
     Scene::ClosedForms forms;
-    forms.chain = Analytic::uniform_chain(2, 40e3, 0., 0.1, block_width,
-                                          block_height, 0.5, 0.5);
+    forms.chain = Analytic::uniform_chain(
+      2, 40e3, 0., 0.1, block_width, block_height, 0.5, 0.5);
     forms.support_width  = support_width;
     forms.youngs_modulus = youngs_modulus;
     forms.floor_lift     = 0.;
@@ -80,11 +81,13 @@ namespace
   loaded_increment()
   {
     Contact::IncrementResult increment;
-    increment.balance.applied_load[1]     = -50e3;
-    increment.balance.support_reaction[1] = 50e3;
-    increment.joints = {joint("bedding 1", 100e3), joint("vertical 1", 110e3, 0.5),
-                        joint("bedding 2", 90e3), joint("vertical 2", 180e3, 0.4)};
-    increment.joints[1].peak_normal_stress          = 3e6;
+    increment.balance.applied_load[1]      = -50e3;
+    increment.balance.support_reaction[1]  = 50e3;
+    increment.joints                       = {joint("bedding 1", 100e3),
+                                              joint("vertical 1", 110e3, 0.5),
+                                              joint("bedding 2", 90e3),
+                                              joint("vertical 2", 180e3, 0.4)};
+    increment.joints[1].peak_normal_stress = 3e6;
     increment.joints[1].averaged_peak_normal_stress = 2.5e6;
     increment.joints[1].mean_normal_stress          = 2e5;
     // The face block does not move: it has no motion entry (rotation 0).
@@ -93,8 +96,10 @@ namespace
     return increment;
   }
 
-  const Compare::ContactConstants constants{youngs_modulus, support_width,
-                                            block_width, block_height};
+  const Compare::ContactConstants constants{youngs_modulus,
+                                            support_width,
+                                            block_width,
+                                            block_height};
 
   TEST(JointName, SplitsKindAndNumber)
   {
@@ -148,7 +153,8 @@ namespace
     Contact::IncrementResult increment;
     increment.joints = {joint("vertical 1", 1e-3), joint("vertical 2", -1e-3)};
     increment.motions[Geometry::Ids::block_material(1)] = motion(1e-2, 0.);
-    const Compare::LoadCheck check = Compare::check_load(increment, youngs_modulus);
+    const Compare::LoadCheck check =
+      Compare::check_load(increment, youngs_modulus);
     EXPECT_NEAR(check.largest_force, 1e-3, tolerance * 1e-3);
     EXPECT_NEAR(check.round_off_force, 16e-3, tolerance * 16e-3);
     EXPECT_FALSE(check.carries_load());
@@ -158,8 +164,10 @@ namespace
   // mechanism: (FEM - closed form) / |closed form| where both exist.
   TEST(JointComparison, RelativeDifferenceOfEveryVerticalJointAndMechanism)
   {
-    const auto comparisons = Compare::compare_vertical_joints(
-      loaded_increment(), two_block_closed_forms(), constants);
+    const auto comparisons =
+      Compare::compare_vertical_joints(loaded_increment(),
+                                       two_block_closed_forms(),
+                                       constants);
     ASSERT_EQ(comparisons.size(), 2u);
     EXPECT_EQ(comparisons[0].joint, 1u);
     EXPECT_EQ(comparisons[1].joint, 2u);
@@ -187,7 +195,8 @@ namespace
     const auto &second = comparisons[1].forces;
     EXPECT_NEAR(second[0].relative_difference, -0.1, tolerance);
     EXPECT_EQ(second[1].closed_form_status, Analytic::Status::joint_opens);
-    EXPECT_EQ(second[1].status, Analytic::to_string(Analytic::Status::joint_opens));
+    EXPECT_EQ(second[1].status,
+              Analytic::to_string(Analytic::Status::joint_opens));
     EXPECT_EQ(second[1].difference_status, DifferenceStatus::defined);
     EXPECT_NEAR(second[1].relative_difference, 0.2, tolerance);
 
@@ -207,8 +216,10 @@ namespace
   // the face block (no motion) counting as unrotated, and Q over b.
   TEST(JointComparison, CornerContactUsesTheFemsOwnLiftAndForce)
   {
-    const auto comparisons = Compare::compare_vertical_joints(
-      loaded_increment(), two_block_closed_forms(), constants);
+    const auto comparisons =
+      Compare::compare_vertical_joints(loaded_increment(),
+                                       two_block_closed_forms(),
+                                       constants);
     ASSERT_EQ(comparisons.size(), 2u);
 
     const Compare::ContactComparison &inner = comparisons[0].contact;
@@ -222,10 +233,12 @@ namespace
     EXPECT_TRUE(inner.fem_carries_load);
     // 6.51 by hand: c = L sqrt(2 Q / (y E b)), sigma_max = 2 Q / (b c).
     const double y = std::tan(1.5e-3);
-    const double c = std::sqrt(2. * 165e3 / (y * youngs_modulus * support_width));
+    const double c =
+      std::sqrt(2. * 165e3 / (y * youngs_modulus * support_width));
     ASSERT_EQ(inner.closed_form.status, Analytic::Status::ok);
     EXPECT_NEAR(inner.closed_form.contact_length, c, 1e-10 * c);
-    EXPECT_NEAR(inner.closed_form.max_stress, 2. * 165e3 / (support_width * c),
+    EXPECT_NEAR(inner.closed_form.max_stress,
+                2. * 165e3 / (support_width * c),
                 1e-10 * inner.closed_form.max_stress);
 
     const Compare::ContactComparison &face = comparisons[1].contact;
@@ -238,11 +251,13 @@ namespace
   // form reports zero_floor_lift; a joint in tension presses with Q = 0.
   TEST(JointComparison, OpeningRotationAndTensionAreReportedNotCompared)
   {
-    Contact::IncrementResult increment = loaded_increment();
+    Contact::IncrementResult increment                  = loaded_increment();
     increment.motions[Geometry::Ids::block_material(1)] = motion(1e-3, -1e-3);
     increment.joints[1].normal_force                    = -5e3;
-    const auto comparisons = Compare::compare_vertical_joints(
-      increment, two_block_closed_forms(), constants);
+    const auto comparisons =
+      Compare::compare_vertical_joints(increment,
+                                       two_block_closed_forms(),
+                                       constants);
     ASSERT_EQ(comparisons.size(), 2u);
     const Compare::ContactComparison &inner = comparisons[0].contact;
     EXPECT_LT(inner.floor_lift, 0.);
@@ -256,14 +271,17 @@ namespace
     Contact::IncrementResult increment;
     increment.joints = {joint("vertical 1", 1e-3), joint("vertical 2", 2e-3)};
     increment.motions[Geometry::Ids::block_material(1)] = motion(1e-2, 0.);
-    const auto comparisons = Compare::compare_vertical_joints(
-      increment, two_block_closed_forms(), constants);
+    const auto comparisons =
+      Compare::compare_vertical_joints(increment,
+                                       two_block_closed_forms(),
+                                       constants);
     ASSERT_EQ(comparisons.size(), 2u);
     for (const auto &comparison : comparisons)
       {
         EXPECT_FALSE(comparison.load.carries_load());
         EXPECT_FALSE(comparison.contact.fem_carries_load);
-        EXPECT_EQ(comparison.forces[0].difference_status, DifferenceStatus::no_load);
+        EXPECT_EQ(comparison.forces[0].difference_status,
+                  DifferenceStatus::no_load);
         EXPECT_EQ(comparison.forces[0].relative_difference, 0.);
         EXPECT_EQ(comparison.forces[2].difference_status,
                   DifferenceStatus::no_closed_form);

@@ -27,11 +27,12 @@ main(int argc, char **argv)
   const bool rigid  = argc > 1 && std::string(argv[1]) == "rigid";
   const bool lifted = argc > 3 && std::string(argv[3]) == "lifted";
 
-  dealii::Timer                 clock;
-  Geometry::AssemblyDescription description; // defaults: 6 blocks 1 x 2 m on y = x^2/400
+  dealii::Timer clock;
+  Geometry::AssemblyDescription
+    description; // defaults: 6 blocks 1 x 2 m on y = x^2/400
   if (lifted)
     description.floor_uplift = Geometry::FloorUplift::lifted_flat_bedding;
-  const std::string             msh_path = "/tmp/floorblock_benchmark.msh";
+  const std::string msh_path = "/tmp/floorblock_benchmark.msh";
   Geometry::write_gmsh_mesh(description, msh_path);
   dealii::Triangulation<2> mesh;
   Geometry::read_triangulation(msh_path, mesh);
@@ -39,9 +40,9 @@ main(int argc, char **argv)
   const double mesh_time = clock.wall_time();
 
   Scene::FloorProblemSettings scene_settings;
-  scene_settings.law = rigid ? Contact::JointLawKind::rigid :
-                               Contact::JointLawKind::compliant;
-  const double degree = M_PI / 180.;
+  scene_settings.law =
+    rigid ? Contact::JointLawKind::rigid : Contact::JointLawKind::compliant;
+  const double degree            = M_PI / 180.;
   scene_settings.vertical_joints = {9e9, 6.7e9, 35. * degree, 0., 0.};
   scene_settings.bedding_joints  = {9e9, 6.7e9, 25. * degree, 0., 0.};
   // 650 t of support load spread over blocks 1-3 (4th-6th from the face),
@@ -66,25 +67,42 @@ main(int argc, char **argv)
   if (argc > 2 && std::string(argv[2]) != "-")
     settings.output_directory = argv[2];
   clock.restart();
-  Contact::ContactSolver<2> solver(mesh, Scene::make_floor_contact_problem(scene_settings), settings);
-  const Contact::SolveResult result = solver.run();
+  Contact::ContactSolver<2> solver(
+    mesh, Scene::make_floor_contact_problem(scene_settings), settings);
+  const Contact::SolveResult result     = solver.run();
   const double               solve_time = clock.wall_time();
 
-  std::printf("cells %u, dofs %u, contact pairs %u, mesh %.2f s, solve %.2f s\n",
-              mesh.n_active_cells(), result.n_dofs, result.n_contact_pairs,
-              mesh_time, solve_time);
+  std::printf(
+    "cells %u, dofs %u, contact pairs %u, mesh %.2f s, solve %.2f s\n",
+    mesh.n_active_cells(),
+    result.n_dofs,
+    result.n_contact_pairs,
+    mesh_time,
+    solve_time);
   for (const auto &[section, seconds] : result.wall_times)
     std::printf("  %-28s %8.3f s\n", section.c_str(), seconds);
   const auto &last = result.increments.back();
-  std::printf("%-12s %14s %14s %10s %14s %14s\n", "joint", "normal (N/m)",
-              "shear (N/m)", "closed (m)", "peak (Pa)", "avg peak (Pa)");
+  std::printf("%-12s %14s %14s %10s %14s %14s\n",
+              "joint",
+              "normal (N/m)",
+              "shear (N/m)",
+              "closed (m)",
+              "peak (Pa)",
+              "avg peak (Pa)");
   for (const auto &joint : last.joints)
-    std::printf("%-12s %14.6e %14.6e %10.4f %14.6e %14.6e\n", joint.name.c_str(),
-                joint.normal_force, joint.shear_force, joint.closed_length,
-                joint.peak_normal_stress, joint.averaged_peak_normal_stress);
-  std::printf("force balance: applied (%.6e, %.6e), reaction (%.6e, %.6e), imbalance %.2e\n",
-              last.balance.applied_load[0], last.balance.applied_load[1],
-              last.balance.support_reaction[0], last.balance.support_reaction[1],
-              last.balance.relative_imbalance);
+    std::printf("%-12s %14.6e %14.6e %10.4f %14.6e %14.6e\n",
+                joint.name.c_str(),
+                joint.normal_force,
+                joint.shear_force,
+                joint.closed_length,
+                joint.peak_normal_stress,
+                joint.averaged_peak_normal_stress);
+  std::printf(
+    "force balance: applied (%.6e, %.6e), reaction (%.6e, %.6e), imbalance %.2e\n",
+    last.balance.applied_load[0],
+    last.balance.applied_load[1],
+    last.balance.support_reaction[0],
+    last.balance.support_reaction[1],
+    last.balance.relative_imbalance);
   return 0;
 }

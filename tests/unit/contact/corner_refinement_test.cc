@@ -1,13 +1,13 @@
 // Refinement of the corner peak stress with rounded corners (3-block lifted
 // floor, Table 6.1 compliant joints). The full study, with sharp corners and
 // the rigid law, is src/contact/README.md ("Rounded corners").
-#include "lifted_floor_case.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <iostream>
 #include <vector>
+
+#include "lifted_floor_case.h"
 
 namespace
 {
@@ -32,13 +32,16 @@ namespace
                   << " m, averaged " << face_joint.averaged_peak_normal_stress
                   << " Pa" << std::endl;
         // The peak sits where the straight part meets the fillet, y_s = H - r.
-        EXPECT_NEAR(face_joint.peak_position[1], 2. - floor_case.rounding, 1e-9);
+        EXPECT_NEAR(face_joint.peak_position[1],
+                    2. - floor_case.rounding,
+                    1e-9);
         peaks.push_back(face_joint.peak_normal_stress);
       }
     // Halving the cells twice: a singular corner stress grows by a factor
     // 2^(1 - lambda) per halving (about 10 % for the rigid law here, see the
     // README); a converged one stays put. Measured spread: 1.4 %.
-    const auto [lowest, highest] = std::minmax_element(peaks.begin(), peaks.end());
+    const auto [lowest, highest] =
+      std::minmax_element(peaks.begin(), peaks.end());
     EXPECT_LT((*highest - *lowest) / *lowest, 0.02);
   }
 } // namespace

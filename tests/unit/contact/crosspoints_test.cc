@@ -22,12 +22,12 @@ namespace
   }
 
   ContactNode<2>
-  pair(const unsigned int      joint,
-       const dealii::Point<2> &position,
-       const double            weight,
+  pair(const unsigned int          joint,
+       const dealii::Point<2>     &position,
+       const double                weight,
        const dealii::Tensor<1, 2> &normal,
-       const unsigned int      node_a,
-       const unsigned int      node_b)
+       const unsigned int          node_a,
+       const unsigned int          node_b)
   {
     ContactNode<2> node;
     node.joint    = joint;
@@ -47,8 +47,8 @@ namespace
                 const unsigned int          node_a)
   {
     ContactNode<2> node = pair(joint, position, weight, normal, node_a, 0);
-    node.dofs_b = {{dealii::numbers::invalid_dof_index,
-                    dealii::numbers::invalid_dof_index}};
+    node.dofs_b         = {
+              {dealii::numbers::invalid_dof_index, dealii::numbers::invalid_dof_index}};
     return node;
   }
 
@@ -133,7 +133,7 @@ namespace
   TEST(Crosspoints, BlockCornerOnRigidBaseMarksVerticalPair)
   {
     const std::vector<ContactNode<2>> nodes = block_corner_on_rigid_base();
-    const std::vector<bool> yields =
+    const std::vector<bool>           yields =
       crosspoint_pairs(nodes, {true, true, true}, no_fixed_dofs());
     ASSERT_EQ(yields.size(), nodes.size());
     EXPECT_EQ(marked(yields), Indices({0}));
@@ -172,7 +172,7 @@ namespace
   TEST(Crosspoints, BlockCornerOnElasticBaseMarksVerticalPair)
   {
     const std::vector<ContactNode<2>> nodes = block_corner_on_elastic_base();
-    const std::vector<bool> yields =
+    const std::vector<bool>           yields =
       crosspoint_pairs(nodes, {true, true, true}, no_fixed_dofs());
     ASSERT_EQ(yields.size(), nodes.size());
     EXPECT_TRUE(yields[0]);
@@ -189,8 +189,9 @@ namespace
    */
   TEST(Crosspoints, CompliantJointsAreUntouched)
   {
-    for (const auto &is_exact : std::vector<std::vector<bool>>{
-           {false, true, true}, {true, false, false}})
+    for (const auto &is_exact :
+         std::vector<std::vector<bool>>{{false, true, true},
+                                        {true, false, false}})
       EXPECT_EQ(marked(crosspoint_pairs(block_corner_on_rigid_base(),
                                         is_exact,
                                         no_fixed_dofs())),
@@ -234,14 +235,12 @@ namespace
 
     dealii::IndexSet corner_l_fixed = no_fixed_dofs();
     corner_l_fixed.add_index(dofs_of(corner_l)[0]);
-    EXPECT_EQ(marked(crosspoint_pairs(face_then_bedding,
-                                      {true, true},
-                                      corner_l_fixed)),
-              Indices());
+    EXPECT_EQ(
+      marked(crosspoint_pairs(face_then_bedding, {true, true}, corner_l_fixed)),
+      Indices());
     corner_l_fixed.add_index(dofs_of(corner_l)[1]);
-    EXPECT_EQ(marked(crosspoint_pairs(face_then_bedding,
-                                      {true, true},
-                                      corner_l_fixed)),
-              Indices({0}));
+    EXPECT_EQ(
+      marked(crosspoint_pairs(face_then_bedding, {true, true}, corner_l_fixed)),
+      Indices({0}));
   }
 } // namespace

@@ -58,13 +58,13 @@ namespace
   }
 
   ContactNode<2>
-  two_sided_pair(const unsigned int           joint,
-                 const dealii::Point<2>      &position,
-                 const double                 weight,
-                 const dealii::Tensor<1, 2>  &normal,
+  two_sided_pair(const unsigned int                   joint,
+                 const dealii::Point<2>              &position,
+                 const double                         weight,
+                 const dealii::Tensor<1, 2>          &normal,
                  const std::vector<global_dof_index> &dofs_a,
                  const std::vector<global_dof_index> &dofs_b,
-                 const double                 initial_gap = 0.)
+                 const double                         initial_gap = 0.)
   {
     ContactNode<2> node;
     node.joint       = joint;
@@ -81,23 +81,22 @@ namespace
   }
 
   ContactNode<2>
-  obstacle_pair(const unsigned int                      joint,
-                const dealii::Point<2>                 &position,
-                const double                            weight,
-                const dealii::Tensor<1, 2>             &normal,
-                const std::vector<global_dof_index>    &dofs_a,
-                const dealii::Tensor<1, 2>             &obstacle_displacement,
-                const double                            initial_gap = 0.)
+  obstacle_pair(const unsigned int                   joint,
+                const dealii::Point<2>              &position,
+                const double                         weight,
+                const dealii::Tensor<1, 2>          &normal,
+                const std::vector<global_dof_index> &dofs_a,
+                const dealii::Tensor<1, 2>          &obstacle_displacement,
+                const double                         initial_gap = 0.)
   {
-    ContactNode<2> node =
-      two_sided_pair(joint,
-                     position,
-                     weight,
-                     normal,
-                     dofs_a,
-                     {dealii::numbers::invalid_dof_index,
-                      dealii::numbers::invalid_dof_index},
-                     initial_gap);
+    ContactNode<2> node        = two_sided_pair(joint,
+                                         position,
+                                         weight,
+                                         normal,
+                                         dofs_a,
+                                         {dealii::numbers::invalid_dof_index,
+                                                 dealii::numbers::invalid_dof_index},
+                                         initial_gap);
     node.obstacle_displacement = obstacle_displacement;
     return node;
   }
@@ -110,10 +109,10 @@ namespace
    */
   struct System
   {
-    System(std::vector<ContactNode<2>>               pairs,
+    System(std::vector<ContactNode<2>>              pairs,
            std::vector<std::optional<ExactPairLaw>> pair_laws,
-           const unsigned int                        n_displacement_dofs,
-           const dealii::AffineConstraints<double>  &given_constraints =
+           const unsigned int                       n_displacement_dofs,
+           const dealii::AffineConstraints<double> &given_constraints =
              dealii::AffineConstraints<double>())
       : nodes(std::move(pairs))
       , laws(std::move(pair_laws))
@@ -178,17 +177,17 @@ namespace
         contact->multipliers()(j - n_u) = value;
     }
 
-    std::vector<ContactNode<2>>               nodes;
+    std::vector<ContactNode<2>>              nodes;
     std::vector<std::optional<ExactPairLaw>> laws;
-    dealii::AffineConstraints<double>         constraints;
-    unsigned int                              n_u;
-    unsigned int                              n_total = 0;
-    std::vector<JointHistory<2>>              histories;
-    std::vector<JointResponse<2>>             responses;
-    std::unique_ptr<ExactContact<2>>          contact;
-    Matrix                                    matrix;
-    Vector                                    u;
-    Vector                                    residual;
+    dealii::AffineConstraints<double>        constraints;
+    unsigned int                             n_u;
+    unsigned int                             n_total = 0;
+    std::vector<JointHistory<2>>             histories;
+    std::vector<JointResponse<2>>            responses;
+    std::unique_ptr<ExactContact<2>>         contact;
+    Matrix                                   matrix;
+    Vector                                   u;
+    Vector                                   residual;
   };
 
   /**
@@ -269,12 +268,18 @@ namespace
   three_pairs()
   {
     std::vector<ContactNode<2>> nodes;
-    nodes.push_back(two_sided_pair(
-      0, dealii::Point<2>(0., 0.), 0.3, dealii::Tensor<1, 2>({0.6, 0.8}),
-      {0, 1}, {2, 3}));
-    nodes.push_back(two_sided_pair(
-      1, dealii::Point<2>(1., 0.), 0.4, dealii::Tensor<1, 2>({0., 1.}),
-      {4, 5}, {6, 7}));
+    nodes.push_back(two_sided_pair(0,
+                                   dealii::Point<2>(0., 0.),
+                                   0.3,
+                                   dealii::Tensor<1, 2>({0.6, 0.8}),
+                                   {0, 1},
+                                   {2, 3}));
+    nodes.push_back(two_sided_pair(1,
+                                   dealii::Point<2>(1., 0.),
+                                   0.4,
+                                   dealii::Tensor<1, 2>({0., 1.}),
+                                   {4, 5},
+                                   {6, 7}));
     nodes.push_back(obstacle_pair(2,
                                   dealii::Point<2>(2., 0.),
                                   0.7,
@@ -292,14 +297,13 @@ namespace
    * moved rigid obstacle with an initial gap (DoFs 8-9); n_u = 10.
    */
   std::unique_ptr<System>
-  make_two_pair_system(
-    const dealii::AffineConstraints<double> &constraints =
-      dealii::AffineConstraints<double>())
+  make_two_pair_system(const dealii::AffineConstraints<double> &constraints =
+                         dealii::AffineConstraints<double>())
   {
-    const std::vector<ContactNode<2>> nodes = three_pairs();
-    std::vector<std::optional<ExactPairLaw>> laws = {make_law(),
-                                                     std::nullopt,
-                                                     make_law()};
+    const std::vector<ContactNode<2>>        nodes = three_pairs();
+    std::vector<std::optional<ExactPairLaw>> laws  = {make_law(),
+                                                      std::nullopt,
+                                                      make_law()};
     auto system = std::make_unique<System>(nodes, laws, 10, constraints);
     // A slip before this increment on pair 0: Delta s = s - s_ref.
     system->histories[0].reference_slip =
@@ -361,8 +365,8 @@ namespace
           const unsigned int n_u     = system->n_u;
           const unsigned int n_total = system->n_total;
           // The analytic rows, read before the matrix is reassembled.
-          std::vector<std::vector<double>> rows(
-            n_total - n_u, std::vector<double>(n_total));
+          std::vector<std::vector<double>> rows(n_total - n_u,
+                                                std::vector<double>(n_total));
           for (unsigned int r = n_u; r < n_total; ++r)
             for (unsigned int j = 0; j < n_total; ++j)
               rows[r - n_u][j] = system->matrix.el(r, j);
@@ -390,9 +394,7 @@ namespace
               // Pa somewhere (the stick tangent row: 9.6e7 Pa).
               ASSERT_GT(largest, 5e7) << "row " << r;
               for (unsigned int j = 0; j < n_total; ++j)
-                EXPECT_NEAR(rows[r][j],
-                            differences[r][j],
-                            tolerance * largest)
+                EXPECT_NEAR(rows[r][j], differences[r][j], tolerance * largest)
                   << "row n_u + " << r << ", column " << j;
             }
           // Closed pairs depend on the displacement: not only on mu.
@@ -426,7 +428,10 @@ namespace
     constraints.add_entry(9, 11, 0.5);
     constraints.close();
     const std::vector<ContactNode<2>> nodes = three_pairs();
-    System system(nodes, {make_law(), std::nullopt, make_law()}, 12, constraints);
+    System                            system(nodes,
+                  {make_law(), std::nullopt, make_law()},
+                  12,
+                  constraints);
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
     for (unsigned int i = 0; i < multipliers.size(); ++i)
       system.contact->multipliers()(i) = multipliers[i];
@@ -483,10 +488,10 @@ namespace
     const dealii::Tensor<1, 2> tangent = tangent_of(normal);
     const double               weight  = 0.5;
     const double               scale   = weight * normal_parameter;
-    System system({two_sided_pair(0, dealii::Point<2>(), weight, normal,
-                                  {0, 1}, {2, 3})},
-                  {make_law()},
-                  4);
+    System                     system(
+      {two_sided_pair(0, dealii::Point<2>(), weight, normal, {0, 1}, {2, 3})},
+      {make_law()},
+      4);
     auto &mu = system.contact->multipliers();
 
     // Touching, unloaded.
@@ -571,9 +576,9 @@ namespace
   TEST(ExactContact, DirectionHeldOnBothSidesIsFixed)
   {
     const dealii::Tensor<1, 2> normal({1., 0.});
-    const double               weight = 0.25;
-    const double               scale  = weight * normal_parameter;
-    const auto make_pairs = [&]() {
+    const double               weight     = 0.25;
+    const double               scale      = weight * normal_parameter;
+    const auto                 make_pairs = [&]() {
       return std::vector<ContactNode<2>>{
         two_sided_pair(0, dealii::Point<2>(), weight, normal, {0, 1}, {2, 3})};
     };
@@ -588,7 +593,7 @@ namespace
     {
       System system(make_pairs(), {make_law()}, 4, constrained({0, 2}));
       EXPECT_EQ(system.contact->n_fixed_directions(), 1u);
-      system.u(1)                        = 2e-6; // some slip
+      system.u(1)                      = 2e-6; // some slip
       system.contact->multipliers()(0) = 3e-5;
       system.contact->multipliers()(1) = 1e-5;
       system.assemble();
@@ -644,11 +649,11 @@ namespace
     }
     {
       // An obstacle pair is held on its one side.
-      System system({obstacle_pair(0, dealii::Point<2>(), weight, normal,
-                                   {0, 1}, {})},
-                    {make_law()},
-                    2,
-                    constrained({0}));
+      System system(
+        {obstacle_pair(0, dealii::Point<2>(), weight, normal, {0, 1}, {})},
+        {make_law()},
+        2,
+        constrained({0}));
       EXPECT_EQ(system.contact->n_fixed_directions(), 1u);
     }
   }
@@ -669,7 +674,10 @@ namespace
         const JointState other =
           first == JointState::open ? JointState::stick : JointState::open;
         auto system = make_two_pair_system();
-        impose(*system, 0, 0, state_of(first, 1.),
+        impose(*system,
+               0,
+               0,
+               state_of(first, 1.),
                dealii::Tensor<1, 2>({1e-5, 2e-5}));
         impose(*system, 2, 1, state_of(other, -1.), {});
         system->assemble();
@@ -682,8 +690,7 @@ namespace
         const dealii::Vector<double> &after = system->contact->multipliers();
         for (unsigned int k = 0; k < 2; ++k)
           {
-            const bool open =
-              (k == 0 ? first : other) == JointState::open;
+            const bool open = (k == 0 ? first : other) == JointState::open;
             for (unsigned int i = 0; i < 2; ++i)
               EXPECT_EQ(after(2 * k + i), open ? 0. : before(2 * k + i))
                 << "pair " << k << ", direction " << i;
@@ -691,7 +698,7 @@ namespace
       }
 
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
-    auto system = evaluated_two_pair_system(multipliers);
+    auto                      system = evaluated_two_pair_system(multipliers);
     // The compliant pair's response is not the exact law's.
     EXPECT_EQ(system->responses[1].normal_traction, 0.);
     for (unsigned int i = 0; i < multipliers.size(); ++i)
@@ -714,9 +721,9 @@ namespace
   TEST(ExactContact, ScaledComplementarityKeepsTheTractions)
   {
     const std::vector<double> multipliers = {1.3e-4, -0.4e-4, 0.7e-4, 2.1e-4};
-    auto system = evaluated_two_pair_system(multipliers);
+    auto                      system = evaluated_two_pair_system(multipliers);
     const std::vector<JointResponse<2>> before = system->responses;
-    system->matrix = 0.;
+    system->matrix                             = 0.;
     system->contact->add_force_block(system->matrix);
 
     constexpr double factor = 0.1;
@@ -733,10 +740,13 @@ namespace
                              before[p].tangential_traction.norm();
         ASSERT_GT(scale, 0.);
         EXPECT_NEAR(system->responses[p].normal_traction,
-                    before[p].normal_traction, 1e-12 * scale);
+                    before[p].normal_traction,
+                    1e-12 * scale);
         EXPECT_NEAR((system->responses[p].tangential_traction -
-                     before[p].tangential_traction).norm(),
-                    0., 1e-12 * scale);
+                     before[p].tangential_traction)
+                      .norm(),
+                    0.,
+                    1e-12 * scale);
       }
 
     Matrix fresh;

@@ -1,18 +1,18 @@
 // Node pairing across rounded block corners: mirror-meshed top fillets of a
 // vertical joint pair with an initial gap, bottom fillets stay free.
-#include "rounded_mesh.h"
-
 #include <contact/joint_pairing.h>
 #include <fem/fe_space.h>
 #include <geometry/ids.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/dofs/dof_tools.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 #include <set>
+
+#include "rounded_mesh.h"
 
 namespace
 {
@@ -26,7 +26,7 @@ namespace
 
   /** Distinct vertices of the faces carrying boundary id @p side. */
   std::vector<dealii::Point<2>>
-  side_vertices(const dealii::Triangulation<2> &mesh,
+  side_vertices(const dealii::Triangulation<2>  &mesh,
                 const dealii::types::boundary_id side)
   {
     std::set<unsigned int>        seen;
@@ -41,12 +41,12 @@ namespace
 
   TEST(FilletPairing, TopFilletNodesPairWithTheirMirrorImageAcrossTheJoint)
   {
-    constexpr unsigned int        n_blocks = 2;
+    constexpr unsigned int              n_blocks = 2;
     const Geometry::AssemblyDescription description =
       Testing::level_assembly(n_blocks, rounding, corner_size);
     dealii::Triangulation<2> mesh;
     Testing::mesh_assembly(description, "fillet_pairing", mesh);
-    const Fem::FeSpace<2> space(mesh, 1);
+    const Fem::FeSpace<2>         space(mesh, 1);
     std::vector<dealii::Point<2>> support_points(space.dof_handler().n_dofs());
     dealii::DoFTools::map_dofs_to_support_points(space.mapping(),
                                                  space.dof_handler(),
@@ -65,14 +65,17 @@ namespace
                                     joint,
                                     &summary);
         // Every node of both sides has a partner.
-        EXPECT_EQ(pairs.size(),
-                  side_vertices(mesh, Ids::vertical_joint_face_side(joint)).size());
-        EXPECT_EQ(pairs.size(),
-                  side_vertices(mesh, Ids::vertical_joint_free_side(joint)).size());
+        EXPECT_EQ(
+          pairs.size(),
+          side_vertices(mesh, Ids::vertical_joint_face_side(joint)).size());
+        EXPECT_EQ(
+          pairs.size(),
+          side_vertices(mesh, Ids::vertical_joint_free_side(joint)).size());
         EXPECT_EQ(summary.n_free_a, 0u);
         EXPECT_EQ(summary.n_free_b, 0u);
         unsigned int n_fillet_nodes = 0;
-        for (const auto &node : side_vertices(mesh, Ids::vertical_joint_face_side(joint)))
+        for (const auto &node :
+             side_vertices(mesh, Ids::vertical_joint_face_side(joint)))
           if (node[1] > fillet_start + geometric_tolerance)
             ++n_fillet_nodes;
         // At least 4 cells over each fillet (the mesher's minimum).
@@ -94,7 +97,9 @@ namespace
             EXPECT_NEAR(a.distance(centre), rounding, geometric_tolerance) << a;
             EXPECT_NEAR(b[0], 2. * joint_x - a[0], geometric_tolerance) << a;
             EXPECT_NEAR(b[1], a[1], geometric_tolerance) << a;
-            EXPECT_NEAR(pair.initial_gap, 2. * (joint_x - a[0]), geometric_tolerance)
+            EXPECT_NEAR(pair.initial_gap,
+                        2. * (joint_x - a[0]),
+                        geometric_tolerance)
               << a;
             EXPECT_GT(pair.initial_gap, 0.) << a;
             // The joint normal, not the tilted fillet normal.

@@ -2,13 +2,13 @@
 // changes where Newton starts, not the equations of an increment or the
 // stop test: the lifted floor must end in the same state with and without
 // it, for both joint laws, in fewer Newton iterations.
-#include "lifted_floor_case.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+
+#include "lifted_floor_case.h"
 
 namespace
 {
@@ -18,11 +18,13 @@ namespace
   expect_same_end_state_in_fewer_iterations(const Contact::JointLawKind law)
   {
     Testing::LiftedFloorCase floor_case;
-    floor_case.n_blocks    = 3;
-    floor_case.corner_size = 0.1; // m: coarse, the comparison is mesh-independent
-    floor_case.law         = law;
+    floor_case.n_blocks = 3;
+    floor_case.corner_size =
+      0.1; // m: coarse, the comparison is mesh-independent
+    floor_case.law                    = law;
     floor_case.extrapolate_increments = false;
-    const Testing::LiftedFloorOutcome plain = Testing::run_lifted_floor(floor_case);
+    const Testing::LiftedFloorOutcome plain =
+      Testing::run_lifted_floor(floor_case);
     floor_case.extrapolate_increments = true;
     const Testing::LiftedFloorOutcome predicted =
       Testing::run_lifted_floor(floor_case);

@@ -56,9 +56,9 @@ namespace
 
   TEST(JointLaw, StickAndSlipAroundTheCoulombLimit)
   {
-    const double overlap  = 1e-4;                     // m
-    const double pressure = normal_stiffness * overlap; // Pa
-    const double limit    = 0.5 * pressure;
+    const double overlap       = 1e-4;                       // m
+    const double pressure      = normal_stiffness * overlap; // Pa
+    const double limit         = 0.5 * pressure;
     const double slip_to_limit = limit / shear_stiffness; // m
     const auto   stuck =
       make_joint().evaluate(vector2(0.99 * slip_to_limit, -overlap), up, {});
@@ -76,8 +76,8 @@ namespace
   {
     const double tensile = 1e5, cohesion = 2e5; // Pa
     const double opening = 0.5 * tensile / normal_stiffness;
-    const auto   intact  = make_joint(cohesion, tensile)
-                          .evaluate(vector2(0., opening), up, {});
+    const auto   intact =
+      make_joint(cohesion, tensile).evaluate(vector2(0., opening), up, {});
     EXPECT_EQ(intact.state, JointState::stick);
     EXPECT_NEAR(intact.normal_traction, -0.5 * tensile, 1e-9 * tensile);
     JointHistory<2> broken;

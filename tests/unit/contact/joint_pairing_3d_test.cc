@@ -1,7 +1,5 @@
 // Issue 16: the joints of a 3D assembly (the 2D Gmsh mesh swept along the
 // face, Geometry::extrude_assembly) pair node to node as in 2D.
-#include "rounded_mesh.h"
-
 #include <contact/joint_pairing.h>
 #include <fem/fe_space.h>
 #include <geometry/assembly_mesher.h>
@@ -9,14 +7,16 @@
 #include <geometry/ids.h>
 #include <geometry/triangulation_reader.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <set>
+
+#include "rounded_mesh.h"
 
 namespace
 {
@@ -30,10 +30,11 @@ namespace
   extruded_default_assembly()
   {
     static const dealii::Triangulation<3> solid = [] {
-      const auto folder = std::filesystem::temp_directory_path() /
-                          ("floorblock_pairing_3d_" + std::to_string(::getpid()));
+      const auto folder =
+        std::filesystem::temp_directory_path() /
+        ("floorblock_pairing_3d_" + std::to_string(::getpid()));
       std::filesystem::create_directories(folder);
-      const std::string msh = (folder / "assembly.msh").string();
+      const std::string             msh = (folder / "assembly.msh").string();
       Geometry::AssemblyDescription description;
       description.corner_rounding_radius = 0.;
       Geometry::write_gmsh_mesh(description, msh);
@@ -50,7 +51,8 @@ namespace
   }
 
   double
-  side_area(const dealii::Triangulation<3> &mesh, const dealii::types::boundary_id id)
+  side_area(const dealii::Triangulation<3>  &mesh,
+            const dealii::types::boundary_id id)
   {
     double area = 0.;
     for (const auto &cell : mesh.active_cell_iterators())
@@ -71,9 +73,12 @@ namespace
     for (unsigned int joint = 1; joint <= n_blocks; ++joint)
       {
         Contact::PairingSummary summary;
-        const auto              pairs = Contact::pair_joint_nodes(
-          space, Ids::vertical_joint_free_side(joint),
-          Ids::vertical_joint_face_side(joint), joint, &summary);
+        const auto              pairs =
+          Contact::pair_joint_nodes(space,
+                                    Ids::vertical_joint_free_side(joint),
+                                    Ids::vertical_joint_face_side(joint),
+                                    joint,
+                                    &summary);
         ASSERT_FALSE(pairs.empty());
         EXPECT_EQ(summary.n_coincident, pairs.size());
         EXPECT_EQ(summary.n_mirrored, 0u);
@@ -81,7 +86,8 @@ namespace
         for (const auto &pair : pairs)
           {
             weight += pair.weight;
-            EXPECT_NEAR(std::abs(pair.normal[0]), 1., 1e-12) << "joint " << joint;
+            EXPECT_NEAR(std::abs(pair.normal[0]), 1., 1e-12)
+              << "joint " << joint;
             EXPECT_NEAR(pair.normal[0], pairs.front().normal[0], 1e-12);
             for (unsigned int c = 0; c < 3; ++c)
               EXPECT_NE(pair.dofs_a[c], pair.dofs_b[c]);
@@ -91,8 +97,8 @@ namespace
         EXPECT_NEAR(weight, area, 1e-12 * area) << "joint " << joint;
         // A vertical joint is a block height tall (the blocks follow the
         // bedding) and the face length long.
-        EXPECT_NEAR(area, Geometry::AssemblyDescription().block_height *
-                            face_length,
+        EXPECT_NEAR(area,
+                    Geometry::AssemblyDescription().block_height * face_length,
                     1e-9);
       }
   }
@@ -107,9 +113,12 @@ namespace
     for (unsigned int block = 0; block <= n_blocks; ++block)
       {
         Contact::PairingSummary summary;
-        const auto              pairs = Contact::pair_joint_nodes(
-          space, Ids::bedding_block_side(block), Ids::bedding_base_side(block),
-          block, &summary);
+        const auto              pairs =
+          Contact::pair_joint_nodes(space,
+                                    Ids::bedding_block_side(block),
+                                    Ids::bedding_base_side(block),
+                                    block,
+                                    &summary);
         ASSERT_FALSE(pairs.empty()) << "block " << block;
         EXPECT_EQ(summary.n_coincident, pairs.size());
         double weight = 0.;
@@ -134,10 +143,10 @@ namespace
   // length. Before, a 3D fillet node had no partner and the joint threw.
   TEST(JointPairing3d, RoundedFilletsPairWithTheirMirrorImagesInEverySection)
   {
-    constexpr unsigned int n_blocks    = 2;
-    constexpr double       rounding    = 0.01;  // m
-    constexpr double       corner_size = 0.005; // m
-    constexpr unsigned int n_sections  = 3;     // two 0.5 m slices
+    constexpr unsigned int              n_blocks    = 2;
+    constexpr double                    rounding    = 0.01;  // m
+    constexpr double                    corner_size = 0.005; // m
+    constexpr unsigned int              n_sections  = 3;     // two 0.5 m slices
     const Geometry::AssemblyDescription description =
       Testing::level_assembly(n_blocks, rounding, corner_size);
     dealii::Triangulation<2> section;
@@ -151,12 +160,18 @@ namespace
     for (unsigned int joint = 1; joint <= n_blocks; ++joint)
       {
         Contact::PairingSummary plane_summary, summary;
-        const auto plane_pairs = Contact::pair_joint_nodes(
-          plane_space, Ids::vertical_joint_face_side(joint),
-          Ids::vertical_joint_free_side(joint), joint, &plane_summary);
-        const auto pairs = Contact::pair_joint_nodes(
-          space, Ids::vertical_joint_face_side(joint),
-          Ids::vertical_joint_free_side(joint), joint, &summary);
+        const auto              plane_pairs =
+          Contact::pair_joint_nodes(plane_space,
+                                    Ids::vertical_joint_face_side(joint),
+                                    Ids::vertical_joint_free_side(joint),
+                                    joint,
+                                    &plane_summary);
+        const auto pairs =
+          Contact::pair_joint_nodes(space,
+                                    Ids::vertical_joint_face_side(joint),
+                                    Ids::vertical_joint_free_side(joint),
+                                    joint,
+                                    &summary);
         ASSERT_GT(plane_summary.n_mirrored, 0u) << "joint " << joint;
         EXPECT_EQ(summary.n_coincident,
                   n_sections * plane_summary.n_coincident);
@@ -175,10 +190,8 @@ namespace
             {
               weight += pair.weight;
               gaps += pair.initial_gap;
-              EXPECT_NEAR(pair.normal[0], plane_pairs.front().normal[0],
-                          1e-12);
-              EXPECT_NEAR(pair.normal[1], plane_pairs.front().normal[1],
-                          1e-12);
+              EXPECT_NEAR(pair.normal[0], plane_pairs.front().normal[0], 1e-12);
+              EXPECT_NEAR(pair.normal[1], plane_pairs.front().normal[1], 1e-12);
               EXPECT_EQ(pair.normal[2], 0.);
             }
         ASSERT_GT(plane_gaps, 0.);
@@ -194,12 +207,19 @@ namespace
   {
     dealii::Triangulation<3> mesh;
     dealii::GridGenerator::subdivided_hyper_rectangle(
-      mesh, {4, 2, 3}, dealii::Point<3>(-1., 0., 0.),
-      dealii::Point<3>(1., 0.5, 1.5), true); // bottom y = 0: id 2
+      mesh,
+      {4, 2, 3},
+      dealii::Point<3>(-1., 0., 0.),
+      dealii::Point<3>(1., 0.5, 1.5),
+      true); // bottom y = 0: id 2
     const Fem::FeSpace<3> space(mesh, 1);
-    const auto nodes = Contact::pair_nodes_with_plane(
-      space, 2, dealii::Point<3>(0.3, -0.1, 0.2),
-      dealii::Tensor<1, 3>({0., -2., 0.}), 0., 0);
+    const auto            nodes =
+      Contact::pair_nodes_with_plane(space,
+                                     2,
+                                     dealii::Point<3>(0.3, -0.1, 0.2),
+                                     dealii::Tensor<1, 3>({0., -2., 0.}),
+                                     0.,
+                                     0);
     ASSERT_EQ(nodes.size(), 5u * 4u);
     double weight = 0.;
     for (const auto &node : nodes)

@@ -18,11 +18,11 @@ namespace
 
   TEST(JointReport, LinearProfileHasExactForceAndWindowAverage)
   {
-    constexpr unsigned int n_cells     = 10;
-    constexpr double       length      = 1.;  // m
-    constexpr double       peak        = 1e6; // Pa at s = 0
-    constexpr double       window      = 0.2; // m
-    const double           spacing     = length / n_cells;
+    constexpr unsigned int        n_cells = 10;
+    constexpr double              length  = 1.;  // m
+    constexpr double              peak    = 1e6; // Pa at s = 0
+    constexpr double              window  = 0.2; // m
+    const double                  spacing = length / n_cells;
     std::vector<ContactNode<2>>   nodes;
     std::vector<JointResponse<2>> responses;
     for (unsigned int k = 0; k <= n_cells; ++k)
@@ -88,10 +88,10 @@ namespace
    * history that @p state_at gives for its height.
    */
   JointReport
-  report_of(const std::vector<double> &heights,
-            const CoulombJoint<2>     &law,
-            const std::function<std::pair<double, JointHistory<2>>(double)>
-              &state_at)
+  report_of(
+    const std::vector<double>                                       &heights,
+    const CoulombJoint<2>                                           &law,
+    const std::function<std::pair<double, JointHistory<2>>(double)> &state_at)
   {
     std::vector<double> sorted = heights;
     std::sort(sorted.begin(), sorted.end());
@@ -99,9 +99,9 @@ namespace
     std::vector<JointResponse<2>> responses;
     for (const double height : heights)
       {
-        const auto   at   = std::find(sorted.begin(), sorted.end(), height);
-        const double below = at == sorted.begin() ? height : *(at - 1);
-        const double above = at + 1 == sorted.end() ? height : *(at + 1);
+        const auto     at    = std::find(sorted.begin(), sorted.end(), height);
+        const double   below = at == sorted.begin() ? height : *(at - 1);
+        const double   above = at + 1 == sorted.end() ? height : *(at + 1);
         ContactNode<2> node;
         node.position = dealii::Point<2>(0., height);
         node.normal   = joint_normal();
@@ -129,9 +129,9 @@ namespace
     const CoulombJoint<2> law = make_law(normal_stiffness);
     const double          gap = 2e-5; // m
     dealii::Tensor<1, 2>  slide;
-    slide[1] = 1e-2; // m, far beyond the stick limit
-    const auto open   = law.evaluate(gap * joint_normal(), joint_normal(), {});
-    const auto stuck  = law.evaluate(-gap * joint_normal(), joint_normal(), {});
+    slide[1]         = 1e-2; // m, far beyond the stick limit
+    const auto open  = law.evaluate(gap * joint_normal(), joint_normal(), {});
+    const auto stuck = law.evaluate(-gap * joint_normal(), joint_normal(), {});
     const auto sliding =
       law.evaluate(-gap * joint_normal() + slide, joint_normal(), {});
     ASSERT_EQ(open.state, JointState::open);
@@ -146,10 +146,11 @@ namespace
   TEST(JointReport, IndicatorOfTheRigidLawIsMultiplierOverPenaltyMinusGap)
   {
     const CoulombJoint<2> law        = make_law(rigid_penalty);
-    const double          multiplier = 3e6;   // Pa
-    const double          gap        = 1e-7;  // m, below multiplier/penalty
-    const auto            closed     = law.evaluate(
-      gap * joint_normal(), joint_normal(), with_multiplier(multiplier));
+    const double          multiplier = 3e6;  // Pa
+    const double          gap        = 1e-7; // m, below multiplier/penalty
+    const auto            closed     = law.evaluate(gap * joint_normal(),
+                                     joint_normal(),
+                                     with_multiplier(multiplier));
     ASSERT_EQ(closed.state, JointState::stick);
     // t_n = 3e6 - 1e12 * 1e-7 = 2.9e6 Pa, phi = t_n / penalty = 2.9e-6 m.
     EXPECT_NEAR(contact_indicator(closed),
@@ -164,7 +165,7 @@ namespace
     // closed length is exactly `end`. The node measure would give the
     // weights of nodes 0..0.4 m: 0.45 m.
     const CoulombJoint<2> law   = make_law(normal_stiffness);
-    const double          slope = 1e-3; // m of gap per m of joint
+    const double          slope = 1e-3;  // m of gap per m of joint
     const double          end   = 0.437; // m
     const JointReport     report =
       report_of(uniform_heights(), law, [&](const double height) {
@@ -193,8 +194,7 @@ namespace
     const JointReport     report =
       report_of(uniform_heights(), law, [&](const double height) {
         const double d = height - end;
-        return std::make_pair(slope * d + curvature * d * d,
-                              JointHistory<2>());
+        return std::make_pair(slope * d + curvature * d * d, JointHistory<2>());
       });
     const double linear_error = std::abs(report.closed_length - end);
     EXPECT_GT(linear_error, 1e-3) << "the test needs a visible miss";
@@ -260,8 +260,8 @@ namespace
     const double closed_indicator = pressure_slope * (end - 0.4);
     const double open_indicator   = -gap_slope * (0.5 - end);
     EXPECT_NEAR(report.closed_length,
-                0.4 + 0.1 * closed_indicator /
-                        (closed_indicator - open_indicator),
+                0.4 +
+                  0.1 * closed_indicator / (closed_indicator - open_indicator),
                 1e-12);
     EXPECT_NEAR(report.closed_length, 0.40554723, 1e-8);
   }
@@ -329,11 +329,10 @@ namespace
   {
     const CoulombJoint<2>     law     = make_law(normal_stiffness);
     const std::vector<double> heights = {0., 0.13, 0.3, 0.62, 1.};
-    const JointReport         closed =
-      report_of(heights, law, [](const double height) {
-        return std::make_pair(-1e-5 * (1. + height), JointHistory<2>());
-      });
-    const JointReport open = report_of(heights, law, [](const double height) {
+    const JointReport closed = report_of(heights, law, [](const double height) {
+      return std::make_pair(-1e-5 * (1. + height), JointHistory<2>());
+    });
+    const JointReport open   = report_of(heights, law, [](const double height) {
       return std::make_pair(1e-5 * (1. + height), JointHistory<2>());
     });
     // The weights report_of() gives, added in arc order as the node
@@ -381,8 +380,8 @@ namespace
     for (unsigned int k = 0; k < 6; ++k)
       {
         ContactNode<2> node;
-        node.position = dealii::Point<2>(0., k * spacing);
-        node.weight   = spacing;
+        node.position  = dealii::Point<2>(0., k * spacing);
+        node.weight    = spacing;
         node.normal[0] = 1.;
         if (k == 5) // the fillet node
           {
@@ -401,9 +400,11 @@ namespace
     // N = t w (5 + cos 45); along the tangent +y: -t sin 45 w for the
     // fillet node only. A scalar sum would give N = 6 t w, S = 0.
     const double w = spacing;
-    EXPECT_NEAR(report.normal_force, traction * w * (5. + std::sqrt(0.5)),
+    EXPECT_NEAR(report.normal_force,
+                traction * w * (5. + std::sqrt(0.5)),
                 1e-9 * traction * w);
-    EXPECT_NEAR(report.shear_force, -traction * w * std::sqrt(0.5),
+    EXPECT_NEAR(report.shear_force,
+                -traction * w * std::sqrt(0.5),
                 1e-9 * traction * w);
   }
 
@@ -431,7 +432,8 @@ namespace
     EXPECT_LE(report.averaged_peak_normal_stress, report.peak_normal_stress);
     // The last 5 cm hold node 7 (3 cm at 8 MPa) and 2 cm of node 6 (7 MPa).
     EXPECT_NEAR(report.averaged_peak_normal_stress,
-                (0.03 * 8e6 + 0.02 * 7e6) / 0.05, 1e-6);
+                (0.03 * 8e6 + 0.02 * 7e6) / 0.05,
+                1e-6);
   }
 
   TEST(LargestOverlap, IsTheMostNegativeGapOfAnyJoint)
@@ -456,7 +458,10 @@ TEST(SquareRootEdgeExtent, ExtrapolatesTheSquaredTractionToZero)
 {
   const double c = 7.3e6;
   EXPECT_NEAR(FloorBlock::Contact::square_root_edge_extent(c * std::sqrt(0.3),
-                                               c * std::sqrt(0.5), 0.2),
-              0.3, 1e-12);
-  EXPECT_DOUBLE_EQ(FloorBlock::Contact::square_root_edge_extent(-1e3, 5e6, 0.2), 0.);
+                                                           c * std::sqrt(0.5),
+                                                           0.2),
+              0.3,
+              1e-12);
+  EXPECT_DOUBLE_EQ(FloorBlock::Contact::square_root_edge_extent(-1e3, 5e6, 0.2),
+                   0.);
 }

@@ -1,10 +1,10 @@
 #include "lifted_floor_case.h"
 
-#include "rounded_mesh.h"
-
 #include <scene/floor_contact_problem.h>
 
 #include <cmath>
+
+#include "rounded_mesh.h"
 
 namespace FloorBlock::Testing
 {
@@ -19,15 +19,17 @@ namespace FloorBlock::Testing
     constexpr double vertical_friction_degrees = 35.;
     constexpr double bedding_friction_degrees  = 25.;
     /** 650 t of support load spread over blocks 1-3, 1 m out of plane (N). */
-    constexpr double support_force     = 650e3 * 9.81;
-    constexpr unsigned int n_supported = 3;
+    constexpr double       support_force = 650e3 * 9.81;
+    constexpr unsigned int n_supported   = 3;
   } // namespace
 
   LiftedFloorOutcome
   run_lifted_floor(const LiftedFloorCase &floor_case)
   {
     Geometry::AssemblyDescription description =
-      level_assembly(floor_case.n_blocks, floor_case.rounding, floor_case.corner_size);
+      level_assembly(floor_case.n_blocks,
+                     floor_case.rounding,
+                     floor_case.corner_size);
     description.bedding_shape = Geometry::BeddingShape::parabolic;
     description.curvature     = lift_curvature;
     description.floor_uplift  = Geometry::FloorUplift::lifted_flat_bedding;
@@ -35,13 +37,19 @@ namespace FloorBlock::Testing
     mesh_assembly(description, "lifted_floor", mesh);
 
     Scene::FloorProblemSettings settings;
-    settings.n_blocks = floor_case.n_blocks;
-    settings.law      = floor_case.law;
+    settings.n_blocks        = floor_case.n_blocks;
+    settings.law             = floor_case.law;
     const double degree      = M_PI / 180.;
-    settings.vertical_joints = {normal_stiffness, shear_stiffness,
-                                vertical_friction_degrees * degree, 0., 0.};
-    settings.bedding_joints  = {normal_stiffness, shear_stiffness,
-                                bedding_friction_degrees * degree, 0., 0.};
+    settings.vertical_joints = {normal_stiffness,
+                                shear_stiffness,
+                                vertical_friction_degrees * degree,
+                                0.,
+                                0.};
+    settings.bedding_joints  = {normal_stiffness,
+                                shear_stiffness,
+                                bedding_friction_degrees * degree,
+                                0.,
+                                0.};
     if (floor_case.support_load)
       for (unsigned int block = 1; block <= n_supported; ++block)
         settings.support_pressures[block] = support_force / n_supported;
@@ -50,12 +58,10 @@ namespace FloorBlock::Testing
     settings.steps            = {1, floor_case.support_load ? 2u : 0u, 5};
 
     Contact::ContactSolverSettings solver_settings;
-    solver_settings.averaging_length = floor_case.averaging_length;
-    solver_settings.extrapolate_increments =
-      floor_case.extrapolate_increments;
-    Contact::ContactSolver<2> solver(mesh,
-                                  Scene::make_floor_contact_problem(settings),
-                                  solver_settings);
+    solver_settings.averaging_length       = floor_case.averaging_length;
+    solver_settings.extrapolate_increments = floor_case.extrapolate_increments;
+    Contact::ContactSolver<2> solver(
+      mesh, Scene::make_floor_contact_problem(settings), solver_settings);
     const Contact::SolveResult result = solver.run();
     LiftedFloorOutcome         outcome;
     outcome.last    = result.increments.back();

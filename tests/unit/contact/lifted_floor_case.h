@@ -1,7 +1,7 @@
 #pragma once
 
-#include <contact/contact_solver.h>
 #include <contact/contact_problem.h>
+#include <contact/contact_solver.h>
 
 namespace FloorBlock::Testing
 {
@@ -12,8 +12,8 @@ namespace FloorBlock::Testing
     /** Corner rounding length r (m); 0 = sharp. */
     double rounding = 0.;
     /** Cell size at the contact corners (m). */
-    double corner_size = 0.05;
-    Contact::JointLawKind law = Contact::JointLawKind::compliant;
+    double                corner_size = 0.05;
+    Contact::JointLawKind law         = Contact::JointLawKind::compliant;
     /** 650 t of support load on blocks 1-3 (needs n_blocks >= 3). */
     bool support_load = true;
     /** Window of the averaged peak normal stress (m). */

@@ -17,8 +17,8 @@ namespace
 
   struct NoisyScalarProblem
   {
-    double noise = 0.;           ///< residual level reached at best (N)
-    double floor = 0.;           ///< reported round-off floor (N)
+    double noise = 0.; ///< residual level reached at best (N)
+    double floor = 0.; ///< reported round-off floor (N)
     double x = 0., base = 0., update = 0.;
     /**
      * Solve each update only as well as the forcing term asks: the update
@@ -38,7 +38,7 @@ namespace
         return iterate; // one contact set throughout: signature 0
       };
       result.round_off_floor = [this]() { return floor; };
-      result.solve_update = [this](const double forcing, std::string &) {
+      result.solve_update    = [this](const double forcing, std::string &) {
         forcings.push_back(forcing);
         update = -(slope * x - load) / slope * (inexact ? 1. - forcing : 1.);
         base   = x;
@@ -61,7 +61,8 @@ namespace
   TEST(NewtonDriver, LinearProblemConvergesInOneStep)
   {
     NoisyScalarProblem problem;
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
     EXPECT_TRUE(report.converged);
     EXPECT_EQ(report.n_iterations, 1u);
     EXPECT_FALSE(report.stopped_at_round_off_floor);
@@ -71,9 +72,11 @@ namespace
   {
     NoisyScalarProblem problem;
     problem.noise = 1e-9 * load; // 10 x the tolerance
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
     EXPECT_FALSE(report.converged);
-    EXPECT_EQ(report.failure_reason, "no convergence within the iteration limit");
+    EXPECT_EQ(report.failure_reason,
+              "no convergence within the iteration limit");
   }
 
   TEST(NewtonDriver, ResidualAtTheRoundOffFloorConverges)
@@ -81,7 +84,8 @@ namespace
     NoisyScalarProblem problem;
     problem.noise = 1e-9 * load;
     problem.floor = 2e-9 * load;
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
     EXPECT_TRUE(report.converged);
     EXPECT_TRUE(report.stopped_at_round_off_floor);
     EXPECT_EQ(report.n_iterations, 1u);
@@ -94,7 +98,8 @@ namespace
     // tolerance, beyond max_round_off_relief = 1e3: not converged.
     problem.noise = 1e-6 * load;
     problem.floor = 1e-5 * load;
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
     EXPECT_FALSE(report.converged);
   }
 
@@ -106,9 +111,9 @@ namespace
   TEST(NewtonDriver, InexactSolvesFollowTheForcingTermToTheStop)
   {
     NoisyScalarProblem problem;
-    problem.inexact              = true;
-    NewtonSettings loose_first   = settings();
-    loose_first.forcing.first    = loose_first.forcing.maximum;
+    problem.inexact            = true;
+    NewtonSettings loose_first = settings();
+    loose_first.forcing.first  = loose_first.forcing.maximum;
     const NewtonReport report =
       solve_newton(loose_first, load, problem.callbacks());
     EXPECT_TRUE(report.converged);
@@ -125,16 +130,16 @@ namespace
   TEST(NewtonDriver, FirstSolveOfALoadStateIsTight)
   {
     NoisyScalarProblem problem;
-    problem.inexact           = true;
-    const NewtonReport report = solve_newton(settings(), load, problem.callbacks());
+    problem.inexact = true;
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
     EXPECT_TRUE(report.converged);
     EXPECT_EQ(report.n_iterations, 2u);
     ASSERT_EQ(problem.forcings.size(), 2u);
     EXPECT_DOUBLE_EQ(problem.forcings[0], ForcingSettings().first);
     // r1 = |4 x - 8| after x = 2 (1 - 1e-8): cancellation leaves it
     // accurate to about 1e-8 relative.
-    EXPECT_NEAR(problem.forcings[1], 0.5 * 1e-10 * load / 8e-8,
-                1e-8 * 5e-3);
+    EXPECT_NEAR(problem.forcings[1], 0.5 * 1e-10 * load / 8e-8, 1e-8 * 5e-3);
     EXPECT_LE(report.relative_residual, 1e-10);
   }
 } // namespace

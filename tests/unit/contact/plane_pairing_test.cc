@@ -4,10 +4,10 @@
 #include <contact/joint_pairing.h>
 #include <fem/fe_space.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
 
 namespace
 {
@@ -20,8 +20,7 @@ namespace
   make_block(dealii::Triangulation<2> &mesh)
   {
     dealii::GridGenerator::subdivided_hyper_rectangle(
-      mesh, {8, 2}, dealii::Point<2>(-1., 0.), dealii::Point<2>(1., 0.5),
-      true);
+      mesh, {8, 2}, dealii::Point<2>(-1., 0.), dealii::Point<2>(1., 0.5), true);
   }
 
   TEST(PlanePairing, GapIsTheDistanceToThePlaneAlongItsNormal)
@@ -30,9 +29,13 @@ namespace
     make_block(mesh);
     const Fem::FeSpace<2> space(mesh, 1);
     // Plane 0.1 m below the face, normal from the body into the obstacle.
-    const auto nodes = Contact::pair_nodes_with_plane(
-      space, bottom, dealii::Point<2>(0.3, -0.1),
-      dealii::Tensor<1, 2>({0., -2.}), 0., 0);
+    const auto nodes =
+      Contact::pair_nodes_with_plane(space,
+                                     bottom,
+                                     dealii::Point<2>(0.3, -0.1),
+                                     dealii::Tensor<1, 2>({0., -2.}),
+                                     0.,
+                                     0);
     ASSERT_EQ(nodes.size(), 9u);
     for (const auto &node : nodes)
       {
@@ -48,10 +51,14 @@ namespace
     dealii::Triangulation<2> mesh;
     make_block(mesh);
     const Fem::FeSpace<2> space(mesh, 1);
-    const double radius = 4.;
-    const auto   nodes  = Contact::pair_nodes_with_plane(
-      space, bottom, dealii::Point<2>(0.25, 0.),
-      dealii::Tensor<1, 2>({0., -1.}), 1. / radius, 0);
+    const double          radius = 4.;
+    const auto            nodes =
+      Contact::pair_nodes_with_plane(space,
+                                     bottom,
+                                     dealii::Point<2>(0.25, 0.),
+                                     dealii::Tensor<1, 2>({0., -1.}),
+                                     1. / radius,
+                                     0);
     ASSERT_EQ(nodes.size(), 9u);
     for (const auto &node : nodes)
       {

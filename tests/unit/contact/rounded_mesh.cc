@@ -4,8 +4,9 @@
 #include <geometry/bedding_manifold.h>
 #include <geometry/triangulation_reader.h>
 
-#include <filesystem>
 #include <unistd.h>
+
+#include <filesystem>
 
 namespace FloorBlock::Testing
 {

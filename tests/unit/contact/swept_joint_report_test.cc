@@ -20,12 +20,12 @@ namespace
    * others are open by 1 mm.
    */
   void
-  make_joint(const std::vector<bool>             &closed_sections,
+  make_joint(const std::vector<bool>                &closed_sections,
              std::vector<Contact::ContactNode<3>>   &nodes,
              std::vector<Contact::JointResponse<3>> &responses)
   {
     const double section_length[3] = {0.25, 0.5, 0.25};
-    const double line_weight[5]     = {0.125, 0.25, 0.25, 0.25, 0.125};
+    const double line_weight[5]    = {0.125, 0.25, 0.25, 0.25, 0.125};
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int i = 0; i < 5; ++i)
         {
@@ -100,14 +100,16 @@ namespace
         EXPECT_DOUBLE_EQ(section.z_from, z_from[k]);
         EXPECT_DOUBLE_EQ(section.z_to, z_to[k]);
         const bool closed = k < 2;
-        EXPECT_NEAR(section.normal_force, closed ? traction : 0.,
+        EXPECT_NEAR(section.normal_force,
+                    closed ? traction : 0.,
                     1e-9 * traction);
         EXPECT_NEAR(section.closed_length, closed ? 1. : 0., 1e-12);
         EXPECT_DOUBLE_EQ(section.peak_normal_stress, closed ? traction : 0.);
         force += (section.z_to - section.z_from) * section.normal_force;
         area += (section.z_to - section.z_from) * section.closed_length;
       }
-    EXPECT_NEAR(force, report.normal_force * report.face_length,
+    EXPECT_NEAR(force,
+                report.normal_force * report.face_length,
                 1e-9 * traction);
     EXPECT_NEAR(area, report.closed_length * report.face_length, 1e-12);
   }
@@ -124,7 +126,6 @@ namespace
                           .front();
     EXPECT_NEAR(report.normal_force, traction, 1e-9 * traction);
     EXPECT_NEAR(report.closed_length, 1., 1e-12);
-    EXPECT_NEAR(report.averaged_peak_normal_stress, traction,
-                1e-9 * traction);
+    EXPECT_NEAR(report.averaged_peak_normal_stress, traction, 1e-9 * traction);
   }
 } // namespace

@@ -1,16 +1,16 @@
 // Stage 3 of the loading path: a block standing on the base follows a rigid
 // motion of the base without any change of its joint forces.
-#include "block_mesh.h"
-#include "test_scenes.h"
-
 #include <contact/contact_solver.h>
 #include <contact/uplift.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/grid/tria.h>
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+
+#include "block_mesh.h"
+#include "test_scenes.h"
 
 namespace
 {
@@ -18,11 +18,11 @@ namespace
   using namespace FloorBlock::Contact;
 
   constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
-                                       block_top = 12;
+                                       block_top  = 12;
   constexpr dealii::types::boundary_id base_sides = 20, base_top = 21,
                                        base_bottom = 22;
-  constexpr double density              = 2500.; // kg/m^3
-  constexpr double gravity_acceleration = 9.81;  // m/s^2
+  constexpr double density                         = 2500.; // kg/m^3
+  constexpr double gravity_acceleration            = 9.81;  // m/s^2
 
   /**
    * A 1 m x 0.5 m block with gravity standing on a base (also the scene of
@@ -33,15 +33,34 @@ namespace
   solve_block_on_base(const UpliftSettings &uplift, const unsigned int n_uplift)
   {
     dealii::Triangulation<2> mesh;
-    Testing::make_block_assembly(
-      {{0., 1., 0., 0.5, 4, 2, 1, block_sides, block_sides, block_bottom, block_top},
-       {0., 1., -0.5, 0., 4, 2, 2, base_sides, base_sides, base_bottom, base_top}},
-      mesh);
+    Testing::make_block_assembly({{0.,
+                                   1.,
+                                   0.,
+                                   0.5,
+                                   4,
+                                   2,
+                                   1,
+                                   block_sides,
+                                   block_sides,
+                                   block_bottom,
+                                   block_top},
+                                  {0.,
+                                   1.,
+                                   -0.5,
+                                   0.,
+                                   4,
+                                   2,
+                                   2,
+                                   base_sides,
+                                   base_sides,
+                                   base_bottom,
+                                   base_top}},
+                                 mesh);
     ContactProblem<2> scene;
     scene.model.laws.emplace(1, Testing::table_rock());
     scene.model.laws.emplace(2, Testing::table_rock());
-    scene.model.densities[1] = density;
-    scene.model.gravity[1]   = -gravity_acceleration;
+    scene.model.densities[1]  = density;
+    scene.model.gravity[1]    = -gravity_acceleration;
     SupportDefinition<2> base = Testing::fixed_support(base_bottom, true, true);
     base.moves_with_uplift    = true;
     scene.supports            = {base};
@@ -116,11 +135,13 @@ namespace
     uplift.pivot_x   = 1.;
     uplift.pivot_y   = 2.;
     const dealii::Point<2>     point(3., -1.);
-    const dealii::Tensor<1, 2> moved = point + uplift_displacement(uplift, 1., point) -
-                                       dealii::Point<2>(1., 2.);
+    const dealii::Tensor<1, 2> moved =
+      point + uplift_displacement(uplift, 1., point) - dealii::Point<2>(1., 2.);
     // Distance to the pivot is preserved and the angle grows by 0.1 rad.
     EXPECT_NEAR(moved.norm(), std::sqrt(4. + 9.), 1e-14);
-    EXPECT_NEAR(std::atan2(moved[1], moved[0]) - std::atan2(-3., 2.), 0.1, 1e-14);
+    EXPECT_NEAR(std::atan2(moved[1], moved[0]) - std::atan2(-3., 2.),
+                0.1,
+                1e-14);
   }
 
   TEST(Uplift, ParabolaIsFlatBehindTheVertex)
@@ -129,8 +150,10 @@ namespace
     uplift.mode      = UpliftMotion::parabola;
     uplift.magnitude = 400.; // m, y = x^2/400
     EXPECT_NEAR(uplift_displacement(uplift, 0.5, dealii::Point<2>(6., 0.))[1],
-                0.5 * 36. / 400., 1e-15);
-    EXPECT_EQ(uplift_displacement(uplift, 1., dealii::Point<2>(-1., 0.))[1], 0.);
+                0.5 * 36. / 400.,
+                1e-15);
+    EXPECT_EQ(uplift_displacement(uplift, 1., dealii::Point<2>(-1., 0.))[1],
+              0.);
   }
 
   // Load stepping: n increments of 1/n reach the end of a stage in exactly n
@@ -144,14 +167,15 @@ namespace
     uplift.mode                     = UpliftMotion::vertical_translation;
     uplift.magnitude                = 1e-3; // m
     constexpr unsigned int n_uplift = 10;
-    const SolveResult result = solve_block_on_base(uplift, n_uplift);
+    const SolveResult      result   = solve_block_on_base(uplift, n_uplift);
     ASSERT_EQ(result.increments.size(), 1u + n_uplift);
     for (unsigned int k = 1; k <= n_uplift; ++k)
       {
         EXPECT_EQ(result.increments[k].stage, Loading::LoadStage::uplift);
         // Summed steps: round-off of a few ulps, exactly 1 at the end.
         EXPECT_NEAR(result.increments[k].stage_factor,
-                    static_cast<double>(k) / n_uplift, 1e-15);
+                    static_cast<double>(k) / n_uplift,
+                    1e-15);
       }
     EXPECT_EQ(result.increments.back().stage_factor, 1.);
   }

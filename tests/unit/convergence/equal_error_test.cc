@@ -18,7 +18,8 @@ namespace
 
   /** Levels with the given values, DoFs and cost wall times. */
   Ladder
-  ladder(const std::string &mode, const std::vector<double> &values,
+  ladder(const std::string               &mode,
+         const std::vector<double>       &values,
          const std::vector<unsigned int> &dofs,
          const std::vector<double>       &costs)
   {
@@ -43,7 +44,9 @@ namespace
   Ladder
   uniform_ladder(const std::vector<double> &values)
   {
-    return ladder("uniform", values, {1000, 4000, 16000, 64000},
+    return ladder("uniform",
+                  values,
+                  {1000, 4000, 16000, 64000},
                   {1., 4., 16., 64.});
   }
 
@@ -54,8 +57,10 @@ namespace
   Ladder
   adaptive_ladder()
   {
-    return ladder("adaptive", {1.2, 0.992, 1.009, 1.0},
-                  {1000, 2000, 3000, 4000}, {1., 3., 6., 10.});
+    return ladder("adaptive",
+                  {1.2, 0.992, 1.009, 1.0},
+                  {1000, 2000, 3000, 4000},
+                  {1., 3., 6., 10.});
   }
 
   TEST(EqualError, LevelsAndRatiosAtTheTarget)
@@ -64,7 +69,7 @@ namespace
     // Uniform: |q - 1|/1 = 0.1, 0.05, 0.005, - -> within 1 % from level 2.
     const Ladder uniform  = uniform_ladder({1.1, 0.95, 1.005, 1.0});
     const Ladder adaptive = adaptive_ladder();
-    const auto comparison =
+    const auto   comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     ASSERT_TRUE(comparison.uniform_level && comparison.adaptive_level);
     EXPECT_EQ(*comparison.uniform_level, 2u);
@@ -80,7 +85,7 @@ namespace
     // Uniform estimates 0.1, 0.05, 0.03: never within 1 %.
     const Ladder uniform  = uniform_ladder({1.1, 0.95, 1.03, 1.0});
     const Ladder adaptive = adaptive_ladder();
-    const auto comparison =
+    const auto   comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     EXPECT_FALSE(comparison.uniform_level);
     ASSERT_TRUE(comparison.dofs_ratio && comparison.cost_ratio);
@@ -92,11 +97,11 @@ namespace
 
   TEST(EqualError, ANonConvergedLevelBreaksTheRun)
   {
-    Ladder adaptive = adaptive_ladder();
+    Ladder adaptive           = adaptive_ladder();
     adaptive.levels[2].status = "not converged";
     estimate_ladder_errors(adaptive, {length()});
     const Ladder uniform = uniform_ladder({1.1, 0.95, 1.005, 1.0});
-    const auto comparison =
+    const auto   comparison =
       compare_at_equal_error(uniform, adaptive, length(), 0, 0.01);
     // Level 3 is the reference of the finest difference (no estimate of
     // its own), level 2 failed: nothing is credited.

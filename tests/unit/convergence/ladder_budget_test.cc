@@ -32,7 +32,8 @@ namespace
     const LevelForecast forecast = forecast_next_level({level(1000, 2.)});
     EXPECT_DOUBLE_EQ(forecast.n_dofs, 4000.);
     EXPECT_NEAR(forecast.wall_time,
-                2. * std::pow(4., first_step_time_exponent), 1e-12);
+                2. * std::pow(4., first_step_time_exponent),
+                1e-12);
   }
 
   // A level that failed before it had a mesh (0 DoFs) or a time gives no

@@ -20,7 +20,7 @@ namespace FloorBlock::Convergence
   namespace
   {
     constexpr dealii::types::boundary_id left_joint = 12, right_joint = 21;
-    const std::vector<JointSides>        joint      = {{left_joint, right_joint}};
+    const std::vector<JointSides>        joint = {{left_joint, right_joint}};
 
     /** Two 1 x 2 m blocks side by side, joint x = 0, cells of 0.5 m. */
     void
@@ -87,10 +87,10 @@ namespace FloorBlock::Convergence
               joint_node_heights(unmatched, right_joint).size());
 
     // Every node, hanging ones included, finds its partner.
-    const Fem::FeSpace<2>    space(matched, 1);
-    Contact::PairingSummary  summary;
-    const auto pairs = Contact::pair_joint_nodes(space, left_joint, right_joint,
-                                                 0, &summary);
+    const Fem::FeSpace<2>   space(matched, 1);
+    Contact::PairingSummary summary;
+    const auto              pairs =
+      Contact::pair_joint_nodes(space, left_joint, right_joint, 0, &summary);
     EXPECT_EQ(summary.n_coincident, 7u);
     EXPECT_EQ(pairs.size(), 7u);
     EXPECT_EQ(summary.n_free_a + summary.n_free_b, 0u);
@@ -101,7 +101,7 @@ namespace FloorBlock::Convergence
     dealii::Triangulation<2> mesh;
     make_two_blocks(mesh);
     mesh.refine_global(1);
-    const auto n_cells   = mesh.n_active_cells();
+    const auto n_cells          = mesh.n_active_cells();
     const auto flag_children_of = [&](const dealii::Point<2> &point) {
       const auto parent = cell_at(mesh, point)->parent();
       for (unsigned int c = 0; c < parent->n_children(); ++c)
@@ -125,7 +125,7 @@ namespace FloorBlock::Convergence
   {
     dealii::Triangulation<2> mesh;
     dealii::GridGenerator::subdivided_hyper_cube(mesh, 8); // cells of 1/8 m
-    constexpr double                       growth = 1.5;
+    constexpr double                       growth   = 1.5;
     const std::vector<Geometry::LocalSize> requests = {{{0.5, 0.5}, 1. / 32.}};
     // Only the four cells around the point ask for less than 1/8 / sqrt(2):
     // their neighbours' nearest vertex is 1/8 away, 1/32 + 0.5/8 > 0.088.
@@ -142,10 +142,12 @@ namespace FloorBlock::Convergence
     for (const auto &cell : mesh.active_cell_iterators())
       {
         const dealii::Point<2> p = cell->center();
-        double requested = Geometry::local_size_at(requests, growth, {p[0], p[1]});
+        double                 requested =
+          Geometry::local_size_at(requests, growth, {p[0], p[1]});
         for (const unsigned int v : cell->vertex_indices())
           requested = std::min(requested,
-                               Geometry::local_size_at(requests, growth,
+                               Geometry::local_size_at(requests,
+                                                       growth,
                                                        {cell->vertex(v)[0],
                                                         cell->vertex(v)[1]}));
         EXPECT_LE(cell_size(*cell), std::sqrt(2.) * requested + 1e-12);
@@ -176,8 +178,8 @@ namespace FloorBlock::Convergence
       cell->clear_coarsen_flag();
 
     // A request of 1/4 m at the origin keeps that parent (1/2 m) refined.
-    EXPECT_EQ(flag_smooth_cells_for_coarsening(mesh, indicator, 0.25,
-                                               {{{0., 0.}, 0.25}}, 2.),
+    EXPECT_EQ(flag_smooth_cells_for_coarsening(
+                mesh, indicator, 0.25, {{{0., 0.}, 0.25}}, 2.),
               4u);
     for (const auto &cell : mesh.active_cell_iterators())
       {
@@ -195,8 +197,9 @@ namespace FloorBlock::Convergence
 #include <geometry/refinement_manifolds.h>
 #include <geometry/triangulation_reader.h>
 
-#include <filesystem>
 #include <unistd.h>
+
+#include <filesystem>
 
 namespace FloorBlock::Convergence
 {
@@ -213,31 +216,33 @@ namespace FloorBlock::Convergence
     description.n_blocks               = 2;
     description.corner_rounding_radius = 0.01;
     description.mesh_corner_size       = 0.01;
-    description.bedding_shape          = Geometry::BeddingShape::planar; // level floor: mirror images
-    const auto folder = std::filesystem::temp_directory_path() /
-                        ("floorblock_fillet_refinement_" +
-                         std::to_string(::getpid()));
+    description.bedding_shape =
+      Geometry::BeddingShape::planar; // level floor: mirror images
+    const auto folder =
+      std::filesystem::temp_directory_path() /
+      ("floorblock_fillet_refinement_" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     Geometry::write_gmsh_mesh(description, (folder / "mesh.msh").string());
     dealii::Triangulation<2> mesh;
     Geometry::read_triangulation((folder / "mesh.msh").string(), mesh);
     std::filesystem::remove_all(folder);
 
-    const unsigned int              face_joint = description.n_blocks;
-    const std::vector<JointSides>   joints = {
-      {Geometry::Ids::vertical_joint_free_side(face_joint),
-       Geometry::Ids::vertical_joint_face_side(face_joint)}};
+    const unsigned int            face_joint = description.n_blocks;
+    const std::vector<JointSides> joints     = {
+          {Geometry::Ids::vertical_joint_free_side(face_joint),
+           Geometry::Ids::vertical_joint_face_side(face_joint)}};
     // Points along both fillets of the face joint's top.
-    const Geometry::AssemblyOutline outline = Geometry::build_outline(description);
-    std::vector<Geometry::Point2>   fillet_points;
+    const Geometry::AssemblyOutline outline =
+      Geometry::build_outline(description);
+    std::vector<Geometry::Point2> fillet_points;
     for (const auto &pair : outline.fillet_pairs)
       for (const auto &ref : {pair.master, pair.slave})
         {
           const auto &arc = outline.bodies[ref.body].segments[ref.segment];
           fillet_points.push_back(arc.start);
           fillet_points.push_back(arc.end);
-          fillet_points.push_back({0.5 * (arc.start.x + arc.end.x),
-                                   0.5 * (arc.start.y + arc.end.y)});
+          fillet_points.push_back(
+            {0.5 * (arc.start.x + arc.end.x), 0.5 * (arc.start.y + arc.end.y)});
         }
     ASSERT_FALSE(fillet_points.empty());
 
@@ -250,14 +255,14 @@ namespace FloorBlock::Convergence
         for (const auto &point : fillet_points)
           requests.push_back({point, size});
         Geometry::attach_boundary_manifolds(description, mesh);
-        refine_matched(mesh, joints, requests, 1.5, dealii::Vector<float>(), 0.,
-                       40);
+        refine_matched(
+          mesh, joints, requests, 1.5, dealii::Vector<float>(), 0., 40);
         Geometry::detach_boundary_manifolds(mesh);
 
         const Fem::FeSpace<2>   space(mesh, 1);
         Contact::PairingSummary summary;
-        Contact::pair_joint_nodes(space, joints[0].side_a, joints[0].side_b, 0,
-                                  &summary);
+        Contact::pair_joint_nodes(
+          space, joints[0].side_a, joints[0].side_b, 0, &summary);
         EXPECT_EQ(summary.n_free_a + summary.n_free_b, 0u) << "level " << level;
         EXPECT_GT(summary.n_mirrored, last_mirrored) << "level " << level;
         last_mirrored = summary.n_mirrored;

@@ -49,7 +49,8 @@ namespace
         ASSERT_TRUE(estimate.errors[level]);
         EXPECT_NEAR(*estimate.errors[level], exact_error, tolerance);
         ASSERT_TRUE(estimate.relative_errors[level]);
-        EXPECT_NEAR(*estimate.relative_errors[level], exact_error / limit,
+        EXPECT_NEAR(*estimate.relative_errors[level],
+                    exact_error / limit,
                     tolerance / limit);
       }
   }
@@ -74,7 +75,7 @@ namespace
   TEST(Richardson, OscillationFallsBackToFinestDifference)
   {
     // Differences +, -, +, -: no geometric decay, no order.
-    const Values values = {10., 12., 11., 11.5, 11.25};
+    const Values         values   = {10., 12., 11., 11.5, 11.25};
     const SequenceErrors estimate = estimate_errors(values);
     EXPECT_EQ(estimate.method, ErrorMethod::finest_difference);
     ASSERT_TRUE(estimate.reference);
@@ -93,7 +94,7 @@ namespace
   TEST(Richardson, InconsistentOrdersFallBack)
   {
     // Differences 1, 1/2, 1/32: orders 1 then 4, beyond the band of 1.
-    const Values values = {0., 1., 1.5, 1.5 + 1. / 32.};
+    const Values         values   = {0., 1., 1.5, 1.5 + 1. / 32.};
     const SequenceErrors estimate = estimate_errors(values);
     EXPECT_EQ(estimate.method, ErrorMethod::finest_difference);
     ASSERT_TRUE(estimate.observed_orders[2] && estimate.observed_orders[3]);
@@ -150,7 +151,7 @@ namespace
   {
     // Q_1 of a free end block is fixed by equilibrium: the levels differ
     // only by round-off, which must not be read as an order.
-    const double q = 1.882586952e6;
+    const double                                  q = 1.882586952e6;
     const FloorBlock::Convergence::SequenceErrors estimate =
       FloorBlock::Convergence::estimate_errors(
         {q * (1. + 4e-13), q * (1. + 1e-13), q * (1. + 9e-14)});

@@ -39,11 +39,11 @@ namespace
     for (unsigned int k = 0; k <= 20; ++k)
       {
         JointNodeSample sample;
-        sample.arc_position = k * spacing;
-        sample.position     = dealii::Point<2>(0., k * spacing);
-        const double rise   = (sample.position[1] - zone_start) / 0.5;
-        const bool   closed = sample.position[1] > zone_start + 1e-9;
-        sample.state = closed ? JointState::stick : JointState::open;
+        sample.arc_position    = k * spacing;
+        sample.position        = dealii::Point<2>(0., k * spacing);
+        const double rise      = (sample.position[1] - zone_start) / 0.5;
+        const bool   closed    = sample.position[1] > zone_start + 1e-9;
+        sample.state           = closed ? JointState::stick : JointState::open;
         sample.normal_traction = closed ? peak * rise * rise : 0.;
         joint.profile.push_back(sample);
       }
@@ -98,8 +98,7 @@ namespace
         // spacing / zone_end_refinement, the steep segments above for half.
         const double lower =
           std::min(targets[k].position.y, targets[k + 1].position.y);
-        const double divisor =
-          lower < 1.65 ? settings.zone_end_refinement : 2.;
+        const double divisor = lower < 1.65 ? settings.zone_end_refinement : 2.;
         EXPECT_NEAR(targets[k].size, spacing / divisor, 1e-15) << lower;
         EXPECT_NEAR(targets[k + 1].size, spacing / divisor, 1e-15) << lower;
       }
@@ -131,7 +130,8 @@ namespace
       : dealii::Function<2>(2)
     {}
     double
-    value(const dealii::Point<2> &point, const unsigned int component) const override
+    value(const dealii::Point<2> &point,
+          const unsigned int      component) const override
     {
       return component == 0 ? std::exp(4. * point[0]) : 0.;
     }
@@ -139,19 +139,20 @@ namespace
 
   TEST(BulkSizeTargets, LargestKellyIndicatorsAskForHalfTheirSize)
   {
-    constexpr unsigned int n_per_side = 8;
+    constexpr unsigned int   n_per_side = 8;
     dealii::Triangulation<2> triangulation;
     dealii::GridGenerator::subdivided_hyper_cube(triangulation, n_per_side);
-    const Fem::FeSpace<2> space(triangulation, 1);
+    const Fem::FeSpace<2>                 space(triangulation, 1);
     dealii::TrilinosWrappers::MPI::Vector solution(space.locally_owned_dofs(),
                                                    MPI_COMM_SELF);
-    dealii::VectorTools::interpolate(space.mapping(), space.dof_handler(),
-                                     SteepField(), solution);
+    dealii::VectorTools::interpolate(space.mapping(),
+                                     space.dof_handler(),
+                                     SteepField(),
+                                     solution);
     Convergence::RefinementSettings settings;
     settings.bulk_fraction = 0.1;
-    const auto targets =
-      Convergence::bulk_size_targets(
-        triangulation, Convergence::kelly_indicator(space, solution), settings);
+    const auto targets     = Convergence::bulk_size_targets(
+      triangulation, Convergence::kelly_indicator(space, solution), settings);
     // ceil(0.1 x 64) = 7 cells, each 1/8 wide: requests of 1/16 m.
     ASSERT_EQ(targets.size(), 7u);
     for (const auto &target : targets)
@@ -168,7 +169,7 @@ namespace
 
   TEST(MergeSizeRequests, OnlyRequestsThatRefineAreKept)
   {
-    constexpr double growth = 1.3;
+    constexpr double                 growth   = 1.3;
     std::vector<Geometry::LocalSize> requests = {{{0., 0.}, 0.01}};
     Convergence::merge_size_requests(
       requests,
@@ -187,11 +188,13 @@ namespace
   {
     const std::vector<Geometry::LocalSize> requests = {{{0., 0.}, 0.01},
                                                        {{1., 0.}, 0.002}};
-    constexpr double growth = 1.3;
+    constexpr double                       growth   = 1.3;
     // At (0.5, 0): 0.01 + 0.3 x 0.5 = 0.16 vs 0.002 + 0.3 x 0.5 = 0.152.
-    EXPECT_NEAR(Geometry::local_size_at(requests, growth, {0.5, 0.}), 0.152,
+    EXPECT_NEAR(Geometry::local_size_at(requests, growth, {0.5, 0.}),
+                0.152,
                 1e-15);
-    EXPECT_NEAR(Geometry::local_size_at(requests, growth, {0., 0.}), 0.01,
+    EXPECT_NEAR(Geometry::local_size_at(requests, growth, {0., 0.}),
+                0.01,
                 1e-15);
     EXPECT_GT(Geometry::local_size_at({}, growth, {0., 0.}), 1e300);
   }

@@ -78,8 +78,8 @@ TEST(CornerFit, ConvergedRangeIsWhereTwoLevelsAgree)
   EXPECT_LE(range.to, 5e-4);
   EXPECT_GT(range.to, 4.5e-4);
   // Nothing agrees: no range.
-  const auto apart = Corner::converged_range(edge_field(2e10, 0., 1.1), coarse,
-                                             0.01, 0., 1.);
+  const auto apart =
+    Corner::converged_range(edge_field(2e10, 0., 1.1), coarse, 0.01, 0., 1.);
   EXPECT_EQ(apart.n_samples, 0u);
   EXPECT_EQ(apart.to, 0.);
 }
@@ -92,6 +92,7 @@ TEST(CornerFit, InvariantFitFindsTheEdgeExponentBesideAConstant)
   std::vector<Analytic::RadialSample> samples;
   for (double d = 2e-5; d <= 2.4e-4; d *= 1.02)
     samples.push_back({d, 9.8e7 + 4e9 * std::sqrt(d) - 2e11 * d});
-  const auto fit = Corner::fit_invariant(samples, {2e-5, 2.4e-4, 0}, edge_theory());
+  const auto fit =
+    Corner::fit_invariant(samples, {2e-5, 2.4e-4, 0}, edge_theory());
   EXPECT_NEAR(fit.lambda1, 1.5, 1e-3);
 }

@@ -12,7 +12,7 @@ namespace
   rock(const double friction)
   {
     Corner::CornerMaterials materials;
-    materials.rock = {6.7e9, 0.2};
+    materials.rock                 = {6.7e9, 0.2};
     materials.friction_coefficient = friction;
     return materials;
   }
@@ -25,13 +25,15 @@ namespace
 // Contact Mechanics, 1985, eq. 4.45 near x = a) and then 2.
 TEST(CornerTheory, ASmoothEdgeInAFilletFallsLikeTheSquareRoot)
 {
-  for (const auto state : {Contact::JointState::stick, Contact::JointState::slip})
+  for (const auto state :
+       {Contact::JointState::stick, Contact::JointState::slip})
     for (const double friction : {0., std::tan(M_PI / 6.)})
       {
         Corner::CornerProfile profile;
         profile.kind       = Corner::CornerContactKind::edge_in_fillet;
         profile.edge_state = state;
-        const auto theory  = Corner::corner_theory(profile, rock(friction), 0.01);
+        const auto theory =
+          Corner::corner_theory(profile, rock(friction), 0.01);
         ASSERT_TRUE(theory.covered);
         EXPECT_NEAR(theory.exponent, 1.5, 1e-6);
         EXPECT_NEAR(theory.next_exponent, 2., 1e-6);
@@ -70,7 +72,7 @@ TEST(CornerTheory, AnOpenCornerIsNotCovered)
 TEST(CornerTheory, CompliantJointsAreNotCovered)
 {
   Corner::CornerProfile profile;
-  profile.kind = Corner::CornerContactKind::edge_in_fillet;
+  profile.kind               = Corner::CornerContactKind::edge_in_fillet;
   auto materials             = rock(0.577);
   materials.exact_contact    = false;
   materials.compliant_length = 1.79;
@@ -86,5 +88,6 @@ TEST(CornerTheory, AFilletClosedToItsEndIsNotCovered)
   profile.edge_state = Contact::JointState::stick;
   const auto theory  = Corner::corner_theory(profile, rock(0.577), 0.02);
   EXPECT_FALSE(theory.covered);
-  EXPECT_NE(theory.configuration.find("whole corner fillet"), std::string::npos);
+  EXPECT_NE(theory.configuration.find("whole corner fillet"),
+            std::string::npos);
 }

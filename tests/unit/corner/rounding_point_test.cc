@@ -14,11 +14,11 @@ namespace
     for (const double peak : peaks)
       {
         Corner::ZoomLevel level;
-        level.level                 = levels.size();
-        level.profile.peak_traction = peak;
+        level.level                      = levels.size();
+        level.profile.peak_traction      = peak;
         level.profile.edge_beyond_corner = 4e-4;
         level.requested_size             = 4e-6;
-        level.wall_time             = 2.;
+        level.wall_time                  = 2.;
         levels.push_back(level);
       }
     return levels;
@@ -28,16 +28,20 @@ namespace
 TEST(RoundingPoint, ConvergedNeedsTwoSmallChangesInARow)
 {
   // 3.00 -> 3.09 (3 %), -> 3.10 (0.3 %), -> 3.105 (0.2 %).
-  const auto point = Corner::rounding_point(
-    0.01, levels_with_peaks({3e8, 3.09e8, 3.10e8, 3.105e8}), 0.01);
+  const auto point =
+    Corner::rounding_point(0.01,
+                           levels_with_peaks({3e8, 3.09e8, 3.10e8, 3.105e8}),
+                           0.01);
   EXPECT_TRUE(point.converged);
   EXPECT_EQ(point.n_levels, 4u);
   EXPECT_DOUBLE_EQ(point.peak, 3.105e8);
   EXPECT_NEAR(point.last_change, 0.005 / 3.10, 1e-12);
   EXPECT_DOUBLE_EQ(point.wall_time, 8.);
 
-  const auto once = Corner::rounding_point(
-    0.01, levels_with_peaks({3e8, 3.2e8, 3.201e8}), 0.01);
+  const auto once =
+    Corner::rounding_point(0.01,
+                           levels_with_peaks({3e8, 3.2e8, 3.201e8}),
+                           0.01);
   EXPECT_FALSE(once.converged);
 }
 
@@ -52,9 +56,13 @@ TEST(RoundingPoint, ACoarseFilletContactIsNotConvergedYet)
 // not any two, and never from fewer than three levels.
 TEST(PeakSettled, TheLastTwoChangesMustBothBeSmall)
 {
-  EXPECT_TRUE(Corner::peak_settled(levels_with_peaks({3e8, 3.1e8, 3.101e8, 3.102e8}), 0.01));
+  EXPECT_TRUE(
+    Corner::peak_settled(levels_with_peaks({3e8, 3.1e8, 3.101e8, 3.102e8}),
+                         0.01));
   // Small then large: a calm pair earlier does not count.
-  EXPECT_FALSE(Corner::peak_settled(levels_with_peaks({3e8, 3.001e8, 3.002e8, 3.2e8}), 0.01));
+  EXPECT_FALSE(
+    Corner::peak_settled(levels_with_peaks({3e8, 3.001e8, 3.002e8, 3.2e8}),
+                         0.01));
   EXPECT_FALSE(Corner::peak_settled(levels_with_peaks({3e8, 3.001e8}), 0.01));
   // A zero peak before is a change of 1, not a division by zero.
   EXPECT_DOUBLE_EQ(Corner::peak_change(levels_with_peaks({0., 3e8}), 1), 1.);

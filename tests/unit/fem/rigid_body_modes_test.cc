@@ -5,11 +5,11 @@
 #include <fem/rigid_body_modes.h>
 #include <fem/sparsity.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 
@@ -33,16 +33,16 @@ namespace
     const Fem::FeSpace<dim> space(mesh, degree);
 
     Fem::ElasticModel<dim> model;
-    model.laws.emplace(0, Material::ElasticLaw<dim>::from_youngs_poisson(
-                            16.1e9, 0.2)); // Pa, -
+    model.laws.emplace(
+      0, Material::ElasticLaw<dim>::from_youngs_poisson(16.1e9, 0.2)); // Pa, -
     model.densities[0] = 0.;
-    const dealii::AffineConstraints<double> no_constraints;
+    const dealii::AffineConstraints<double>   no_constraints;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     Fem::make_sparsity(space, no_constraints, {}, pattern);
     dealii::TrilinosWrappers::SparseMatrix stiffness(pattern);
     const MPI_Comm communicator = space.dof_handler().get_communicator();
-    Vector zero(space.locally_owned_dofs(), communicator);
-    Vector residual(zero);
+    Vector         zero(space.locally_owned_dofs(), communicator);
+    Vector         residual(zero);
     Fem::ElasticAssemblyTargets<dim> targets;
     targets.matrix   = &stiffness;
     targets.residual = &residual;
@@ -87,19 +87,20 @@ namespace
     dealii::Triangulation<2> mesh;
     dealii::GridGenerator::hyper_cube(mesh, 0., 1.);
     mesh.refine_global(2);
-    const Fem::FeSpace<2>        space(mesh, 1);
-    Fem::ElasticModel<2>         model;
-    model.laws.emplace(0, Material::ElasticLaw<2>::from_youngs_poisson(
-                            16.1e9, 0.2));
+    const Fem::FeSpace<2> space(mesh, 1);
+    Fem::ElasticModel<2>  model;
+    model.laws.emplace(0,
+                       Material::ElasticLaw<2>::from_youngs_poisson(16.1e9,
+                                                                    0.2));
     model.densities[0] = 0.;
     const dealii::AffineConstraints<double>   no_constraints;
     dealii::TrilinosWrappers::SparsityPattern pattern;
     Fem::make_sparsity(space, no_constraints, {}, pattern);
     dealii::TrilinosWrappers::SparseMatrix stiffness(pattern);
-    Vector zero(space.locally_owned_dofs(),
+    Vector                                 zero(space.locally_owned_dofs(),
                 space.dof_handler().get_communicator());
-    Vector residual(zero);
-    Fem::ElasticAssemblyTargets<2> targets;
+    Vector                                 residual(zero);
+    Fem::ElasticAssemblyTargets<2>         targets;
     targets.matrix   = &stiffness;
     targets.residual = &residual;
     Fem::assemble_elastic_system(space, model, zero, no_constraints, targets);
@@ -109,8 +110,8 @@ namespace
     // gives (x, 0) on x-DoFs (rotation about z has x-entries -y, y-entries x).
     Vector stretch(zero);
     for (unsigned int i = 0; i < stretch.size(); ++i)
-      stretch(i) = null_space.modes[0][i] != 0. ? null_space.modes[2][i + 1] :
-                                                  0.;
+      stretch(i) =
+        null_space.modes[0][i] != 0. ? null_space.modes[2][i + 1] : 0.;
     stretch.compress(dealii::VectorOperation::insert);
     Vector force(zero);
     stiffness.vmult(force, stretch);

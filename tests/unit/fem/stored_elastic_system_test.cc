@@ -2,26 +2,26 @@
 // gives: same condensed stiffness, same residual, also with non-zero
 // prescribed displacements (floor uplift), which condensation alone would
 // drop from the residual.
-#include "block_mesh.h"
-#include "test_scenes.h"
-
 #include <fem/dirichlet_constraints.h>
 #include <fem/elastic_assembly.h>
 #include <fem/sparsity.h>
 #include <fem/stored_elastic_system.h>
 
-#include <gtest/gtest.h>
-
 #include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+#include "block_mesh.h"
+#include "test_scenes.h"
+
 namespace
 {
   using namespace FloorBlock;
-  using dealii::TrilinosWrappers::MPI::Vector;
   using dealii::TrilinosWrappers::SparseMatrix;
+  using dealii::TrilinosWrappers::MPI::Vector;
 
   constexpr dealii::types::boundary_id sides = 10, bottom = 11, top = 12;
 
@@ -41,11 +41,11 @@ namespace
 
     Fem::ElasticModel<2> model;
     model.laws.emplace(1, Testing::table_rock());
-    model.densities[1] = 2500.;   // kg/m^3
-    model.gravity[1]   = -9.81;   // m/s^2
+    model.densities[1]   = 2500.; // kg/m^3
+    model.gravity[1]     = -9.81; // m/s^2
     model.pressures[top] = 2e6;   // Pa
 
-    dealii::IndexSet                      fixed;
+    dealii::IndexSet                        fixed;
     std::vector<Fem::DirichletCondition<2>> zero{
       {bottom, {{true, true}}, [](const dealii::Point<2> &) {
          return dealii::Tensor<1, 2>();
@@ -58,12 +58,15 @@ namespace
     dealii::TrilinosWrappers::SparsityPattern pattern;
     Fem::make_sparsity(space, constraints, {}, pattern);
 
-    const Fem::StoredElasticSystem<2> stored(space, model, constraints, pattern);
+    const Fem::StoredElasticSystem<2> stored(space,
+                                             model,
+                                             constraints,
+                                             pattern);
 
     // A displacement that is non-zero everywhere, also on the support
     // (as during uplift), smooth so that every cell is strained.
     const MPI_Comm communicator = space.dof_handler().get_communicator();
-    Vector solution(space.locally_owned_dofs(), communicator);
+    Vector         solution(space.locally_owned_dofs(), communicator);
     for (unsigned int i = 0; i < solution.size(); ++i)
       solution(i) = 1e-3 * std::sin(0.7 * i + 0.3);
     solution.compress(dealii::VectorOperation::insert);
@@ -77,7 +80,7 @@ namespace
     hanging_only.close();
     hanging_only.distribute(solution); // a conforming field, as in Newton
 
-    const double gravity_factor = 0.3, pressure_factor = 0.7;
+    const double         gravity_factor = 0.3, pressure_factor = 0.7;
     Fem::ElasticModel<2> scaled = model;
     scaled.gravity *= gravity_factor;
     scaled.pressures[top] *= pressure_factor;
@@ -107,9 +110,9 @@ namespace
     const double magnitude =
       stored.residual_magnitude(solution, gravity_factor, pressure_factor);
     EXPECT_GE(magnitude, residual.l2_norm());
-    const double eps   = std::numeric_limits<double>::epsilon();
-    const double floor = stored.round_off_floor(solution, gravity_factor,
-                                                pressure_factor);
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double floor =
+      stored.round_off_floor(solution, gravity_factor, pressure_factor);
     EXPECT_GE(floor, 10. * eps * magnitude);
     EXPECT_LE(floor, (refine_corner ? 28. : 20.) * eps * magnitude);
 

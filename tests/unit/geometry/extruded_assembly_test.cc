@@ -69,7 +69,8 @@ namespace FloorBlock::Geometry
         const auto volumes = measure_by_material(solid);
         ASSERT_EQ(volumes.size(), areas.size()) << name;
         for (const auto &[material, area] : areas)
-          EXPECT_NEAR(volumes.at(material), area * face_length,
+          EXPECT_NEAR(volumes.at(material),
+                      area * face_length,
                       1e-12 * area * face_length)
             << name << ", material " << material;
       }
@@ -79,8 +80,8 @@ namespace FloorBlock::Geometry
   // at z = 0 and at z = L; every other boundary face keeps a 2D id.
   TEST(ExtrudedAssembly, EndFacesAreTaggedAndTileTheSection)
   {
-    const auto &flat  = Testing::meshed_scene("default").triangulation;
-    const auto &solid = extruded("default");
+    const auto &flat       = Testing::meshed_scene("default").triangulation;
+    const auto &solid      = extruded("default");
     double      total_area = 0.;
     for (const auto &cell : flat.active_cell_iterators())
       total_area += cell->measure();
@@ -113,7 +114,7 @@ namespace FloorBlock::Geometry
   // 1e-12 m), and the two are distinct vertices of different bodies.
   TEST(ExtrudedAssembly, JointSidesCarryTheSameNodesOnDistinctVertices)
   {
-    const auto &solid = extruded("default");
+    const auto        &solid = extruded("default");
     const unsigned int n_blocks =
       Testing::meshed_scene("default").description.n_blocks;
     for (unsigned int joint = 1; joint <= n_blocks; ++joint)
@@ -124,8 +125,8 @@ namespace FloorBlock::Geometry
           std::set<unsigned int>        vertices;
           std::vector<dealii::Point<3>> points;
         };
-        std::vector<SideAFace> side_a;
-        std::vector<std::vector<unsigned int>> side_b;
+        std::vector<SideAFace>                     side_a;
+        std::vector<std::vector<unsigned int>>     side_b;
         std::vector<std::vector<dealii::Point<3>>> side_b_points;
         for (const auto &cell : solid.active_cell_iterators())
           for (const auto &face : cell->face_iterators())

@@ -15,7 +15,8 @@ namespace FloorBlock::Geometry
 {
   namespace
   {
-    /** Coordinates of mirrored nodes agree to this (m): round-off of the arc evaluation. */
+    /** Coordinates of mirrored nodes agree to this (m): round-off of the arc
+     * evaluation. */
     constexpr double mirror_tolerance = 1e-12;
     /** The mesher's minimum: 4 cell edges on every fillet, so 5 nodes. */
     constexpr unsigned int min_fillet_nodes = 5;
@@ -51,8 +52,9 @@ namespace FloorBlock::Geometry
                   .fillet_pairs.empty());
     for (const std::string name : {"planar_rounded", "rounded"})
       {
-        const AssemblyDescription description = Testing::scene_description(name);
-        const AssemblyOutline     outline     = build_outline(description);
+        const AssemblyDescription description =
+          Testing::scene_description(name);
+        const AssemblyOutline outline = build_outline(description);
         // One pair per vertical joint, the face joint included.
         ASSERT_EQ(outline.fillet_pairs.size(), description.n_blocks) << name;
         for (unsigned int joint = 1; joint <= description.n_blocks; ++joint)
@@ -66,7 +68,8 @@ namespace FloorBlock::Geometry
             EXPECT_EQ(master.boundary_id, Ids::vertical_joint_free_side(joint));
             EXPECT_EQ(slave.boundary_id, Ids::vertical_joint_face_side(joint));
             EXPECT_DOUBLE_EQ(pair.joint_x,
-                             (description.n_blocks - joint) * description.block_width);
+                             (description.n_blocks - joint) *
+                               description.block_width);
             // y = x^2/100 is sloped at every joint; at the face joint (x = 0)
             // its tangent is level but block n's fillet touches the rising
             // parabola while the face block's touches a line, so even there
@@ -98,7 +101,8 @@ namespace FloorBlock::Geometry
               continue;
             for (unsigned int k = 0; k < master.size(); ++k)
               {
-                EXPECT_NEAR(slave[k][0], 2. * pair.joint_x - master[k][0],
+                EXPECT_NEAR(slave[k][0],
+                            2. * pair.joint_x - master[k][0],
                             mirror_tolerance)
                   << name << " node " << master[k];
                 EXPECT_NEAR(slave[k][1], master[k][1], mirror_tolerance)

@@ -15,7 +15,7 @@ namespace FloorBlock::Geometry
     constexpr double face_length     = 4.5; // m
     constexpr double footprint_start = 1.5; // m
     constexpr double footprint_end   = 3.0; // m
-  } // namespace
+  }                                         // namespace
 
   // The footprint's ends are slice positions, no slice is thicker than
   // the slice size, and each third of the face is divided evenly.
@@ -50,12 +50,12 @@ namespace FloorBlock::Geometry
   // id, unloaded tops keep theirs.
   TEST(TagFootprint, LoadedTopsWithinTheFootprintOnly)
   {
-    const auto &scene = Testing::meshed_scene("default");
+    const auto              &scene = Testing::meshed_scene("default");
     dealii::Triangulation<3> solid;
-    extrude_assembly(scene.triangulation,
-                     footprint_slices(face_length, 0.5, footprint_start,
-                                      footprint_end),
-                     solid);
+    extrude_assembly(
+      scene.triangulation,
+      footprint_slices(face_length, 0.5, footprint_start, footprint_end),
+      solid);
     std::map<dealii::types::boundary_id, double> area_before;
     for (const auto &cell : solid.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
@@ -63,7 +63,7 @@ namespace FloorBlock::Geometry
           area_before[face->boundary_id()] += face->measure();
 
     const std::vector<unsigned int> loaded{1, 2, 3};
-    const unsigned int n_tagged =
+    const unsigned int              n_tagged =
       tag_footprint(loaded, footprint_start, footprint_end, solid);
     EXPECT_GT(n_tagged, 0u);
 
@@ -80,17 +80,18 @@ namespace FloorBlock::Geometry
                 EXPECT_LT(face->center()[2], footprint_end);
               }
           }
-    const double fraction =
-      (footprint_end - footprint_start) / face_length;
+    const double fraction = (footprint_end - footprint_start) / face_length;
     for (unsigned int block = 1; block <= scene.description.n_blocks; ++block)
       {
-        const double top = area_before.at(Ids::floor_surface(block));
+        const double top       = area_before.at(Ids::floor_surface(block));
         const bool   is_loaded = block <= 3;
         EXPECT_NEAR(area_after[Ids::footprint_surface(block)],
-                    is_loaded ? fraction * top : 0., 1e-12 * top)
+                    is_loaded ? fraction * top : 0.,
+                    1e-12 * top)
           << "block " << block;
         EXPECT_NEAR(area_after[Ids::floor_surface(block)],
-                    is_loaded ? (1. - fraction) * top : top, 1e-12 * top)
+                    is_loaded ? (1. - fraction) * top : top,
+                    1e-12 * top)
           << "block " << block;
       }
   }

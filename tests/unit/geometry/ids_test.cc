@@ -64,9 +64,9 @@ namespace FloorBlock::Geometry::Ids
 
   TEST(Ids, TableListsEveryIdOnceForLargestAssembly)
   {
-    const std::string  table = id_table(max_n_blocks);
-    std::istringstream lines(table);
-    std::string        line;
+    const std::string      table = id_table(max_n_blocks);
+    std::istringstream     lines(table);
+    std::string            line;
     std::set<unsigned int> seen;
     unsigned int           n_rows = 0;
     while (std::getline(lines, line))

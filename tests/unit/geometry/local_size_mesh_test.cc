@@ -33,15 +33,16 @@ namespace
   }
 
   std::vector<dealii::Point<2>>
-  side_vertices(const dealii::Triangulation<2>   &triangulation,
-                const dealii::types::boundary_id  boundary)
+  side_vertices(const dealii::Triangulation<2>  &triangulation,
+                const dealii::types::boundary_id boundary)
   {
     std::vector<dealii::Point<2>> points;
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == boundary)
           for (unsigned int v = 0; v < 2; ++v)
-            if (std::none_of(points.begin(), points.end(),
+            if (std::none_of(points.begin(),
+                             points.end(),
                              [&](const dealii::Point<2> &known) {
                                return known.distance(face->vertex(v)) <
                                       pairing_tolerance;
@@ -60,8 +61,9 @@ namespace
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == boundary)
           {
-            const double low  = std::min(face->vertex(0)[1], face->vertex(1)[1]);
-            const double high = std::max(face->vertex(0)[1], face->vertex(1)[1]);
+            const double low = std::min(face->vertex(0)[1], face->vertex(1)[1]);
+            const double high =
+              std::max(face->vertex(0)[1], face->vertex(1)[1]);
             if (low <= height && height <= high)
               return face->measure();
           }
@@ -80,12 +82,11 @@ namespace
        const std::string            &name,
        Meshed                       &meshed)
   {
-    const auto folder =
-      std::filesystem::temp_directory_path() /
-      ("floorblock_local_size_" + std::to_string(::getpid()));
+    const auto folder = std::filesystem::temp_directory_path() /
+                        ("floorblock_local_size_" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     const std::string path = (folder / (name + ".msh")).string();
-    meshed.statistics = write_gmsh_mesh(description, path, requests);
+    meshed.statistics      = write_gmsh_mesh(description, path, requests);
     read_triangulation(path, meshed.triangulation);
     std::filesystem::remove_all(folder);
   }
@@ -95,7 +96,7 @@ namespace
     const AssemblyDescription description = coarse_scene(0.);
     constexpr double          requested   = 0.01; // m at mid-height
     constexpr double          height      = 1.0;  // m on the face joint x = 0
-    Meshed plain, refined;
+    Meshed                    plain, refined;
     mesh(description, {}, "plain", plain);
     mesh(description, {{{0., height}, requested}}, "refined", refined);
 
@@ -113,7 +114,8 @@ namespace
     const auto face_points  = side_vertices(refined.triangulation, face_side);
     ASSERT_EQ(block_points.size(), face_points.size());
     for (const auto &point : block_points)
-      EXPECT_TRUE(std::any_of(face_points.begin(), face_points.end(),
+      EXPECT_TRUE(std::any_of(face_points.begin(),
+                              face_points.end(),
                               [&](const dealii::Point<2> &other) {
                                 return point.distance(other) <
                                        pairing_tolerance;
@@ -123,16 +125,15 @@ namespace
 
   TEST(LocalSizeMesh, RequestAtAFilletRefinesBothFilletsAlike)
   {
-    constexpr double radius = 0.1; // m
+    constexpr double          radius      = 0.1; // m
     const AssemblyDescription description = coarse_scene(radius);
-    Meshed plain, refined;
+    Meshed                    plain, refined;
     mesh(description, {}, "plain_rounded", plain);
     // At the lower end of the fillets of the face joint (y = H - r), where
     // the straight part of the joint ends. The fillet takes the smallest
     // local size at its two ends.
-    mesh(description, {{{0., 2. - radius}, 0.01}}, "refined_rounded",
-         refined);
-    const auto on_fillet = [&](const dealii::Triangulation<2> &triangulation,
+    mesh(description, {{{0., 2. - radius}, 0.01}}, "refined_rounded", refined);
+    const auto on_fillet = [&](const dealii::Triangulation<2>  &triangulation,
                                const dealii::types::boundary_id id) {
       std::size_t count = 0;
       for (const auto &point : side_vertices(triangulation, id))

@@ -31,8 +31,8 @@ namespace FloorBlock::Geometry
 
   TEST(Mesher, FileCarriesNamedPhysicalGroups)
   {
-    const auto   &scene = Testing::meshed_scene("default");
-    std::ifstream file(scene.msh_path);
+    const auto       &scene = Testing::meshed_scene("default");
+    std::ifstream     file(scene.msh_path);
     std::stringstream text;
     text << file.rdbuf();
     const std::string contents = text.str();
@@ -62,9 +62,9 @@ namespace FloorBlock::Geometry
     // pairs in a different order from one session to the next (measured),
     // and deal.II does not read them; nodes and elements must be identical.
     const auto read = [](const std::string &path) {
-      std::ifstream     file(path);
-      std::string       line, text;
-      bool              periodic = false;
+      std::ifstream file(path);
+      std::string   line, text;
+      bool          periodic = false;
       while (std::getline(file, line))
         {
           periodic = periodic || line == "$Periodic";

@@ -71,7 +71,7 @@ namespace FloorBlock::Geometry
   {
     for (const std::string name : {"default", "planar", "lifted"})
       {
-        const AssemblyDescription d = Testing::scene_description(name);
+        const AssemblyDescription d       = Testing::scene_description(name);
         const AssemblyOutline     outline = build_outline(d);
         // Vertical sides and a top that is the bedding shifted up by H:
         // area = integral of H dx = L H for any profile.
@@ -83,10 +83,10 @@ namespace FloorBlock::Geometry
         EXPECT_LT(relative_difference(outline_area(outline.bodies[d.n_blocks]),
                                       d.face_block_width * d.block_height),
                   area_tolerance);
-        EXPECT_LT(relative_difference(
-                    outline_area(outline.bodies.back()),
-                    (d.n_blocks * d.block_width + d.face_block_width) *
-                      d.base_thickness),
+        EXPECT_LT(relative_difference(outline_area(outline.bodies.back()),
+                                      (d.n_blocks * d.block_width +
+                                       d.face_block_width) *
+                                        d.base_thickness),
                   area_tolerance);
       }
   }
@@ -97,8 +97,8 @@ namespace FloorBlock::Geometry
     // removes r^2 (1 - pi/4).
     const AssemblyDescription d = Testing::scene_description("planar_rounded");
     const double              r = d.corner_rounding_radius;
-    const AssemblyOutline     outline = build_outline(d);
-    const double corner_loss          = r * r * (1.0 - M_PI / 4.0);
+    const AssemblyOutline     outline     = build_outline(d);
+    const double              corner_loss = r * r * (1.0 - M_PI / 4.0);
     EXPECT_LT(relative_difference(outline_area(outline.bodies[0]),
                                   d.block_width * d.block_height -
                                     4.0 * corner_loss),
@@ -109,7 +109,7 @@ namespace FloorBlock::Geometry
   {
     for (const std::string name : {"default", "rounded", "planar"})
       {
-        const AssemblyDescription d = Testing::scene_description(name);
+        const AssemblyDescription d       = Testing::scene_description(name);
         const AssemblyOutline     outline = build_outline(d);
         // n vertical joints and n + 1 bedding joints (blocks + face block).
         EXPECT_EQ(outline.joint_pairs.size(), 2 * d.n_blocks + 1) << name;
@@ -122,7 +122,8 @@ namespace FloorBlock::Geometry
                                     .segments[pair.slave.segment]
                                     .boundary_id;
             const auto master_kind = Ids::boundary_kind(master_id);
-            EXPECT_TRUE(master_kind == Ids::BoundaryKind::vertical_joint_free_side ||
+            EXPECT_TRUE(master_kind ==
+                          Ids::BoundaryKind::vertical_joint_free_side ||
                         master_kind == Ids::BoundaryKind::bedding_block_side);
             if (master_kind == Ids::BoundaryKind::vertical_joint_free_side)
               EXPECT_EQ(slave_id,
@@ -141,7 +142,7 @@ namespace FloorBlock::Geometry
     // own; the outline areas come from Green's theorem in closed form.
     for (const std::string name : {"default", "rounded", "planar_rounded"})
       {
-        const AssemblyDescription d = Testing::scene_description(name);
+        const AssemblyDescription d       = Testing::scene_description(name);
         const AssemblyOutline     outline = build_outline(d);
         const std::vector<double> cad     = cad_body_areas(d);
         ASSERT_EQ(cad.size(), outline.bodies.size());

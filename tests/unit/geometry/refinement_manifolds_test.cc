@@ -1,8 +1,6 @@
 // deal.II refinement of a scene mesh must put new boundary vertices on the
 // scene's curves (fillet arcs, parabolic bedding), like a finer Gmsh mesh,
 // and leave a flat, manifold-free mesh for the solver afterwards.
-#include "test_meshes.h"
-
 #include <geometry/bedding_profile.h>
 #include <geometry/body_outline.h>
 #include <geometry/ids.h>
@@ -12,6 +10,8 @@
 
 #include <cmath>
 #include <limits>
+
+#include "test_meshes.h"
 
 namespace FloorBlock::Geometry
 {
@@ -31,15 +31,18 @@ namespace FloorBlock::Geometry
         for (const auto &segment : body.segments)
           if (segment.kind == SegmentKind::arc)
             {
-              const dealii::Point<2> centre(segment.control.x, segment.control.y);
+              const dealii::Point<2> centre(segment.control.x,
+                                            segment.control.y);
               circles.push_back(
                 {centre,
-                 centre.distance(dealii::Point<2>(segment.start.x, segment.start.y))});
+                 centre.distance(
+                   dealii::Point<2>(segment.start.x, segment.start.y))});
             }
       return circles;
     }
 
-    /** Largest distance of a fillet-face vertex from its circle (m), and the count of such faces. */
+    /** Largest distance of a fillet-face vertex from its circle (m), and the
+     * count of such faces. */
     std::pair<double, unsigned int>
     fillet_deviation(const dealii::Triangulation<2> &mesh,
                      const std::vector<Circle>      &circles)
@@ -48,15 +51,18 @@ namespace FloorBlock::Geometry
       unsigned int n_faces = 0;
       for (const auto &cell : mesh.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->manifold_id() >= first_fillet_manifold &&
+          if (face->at_boundary() &&
+              face->manifold_id() >= first_fillet_manifold &&
               face->manifold_id() != dealii::numbers::flat_manifold_id)
             {
-              const Circle &circle = circles.at(face->manifold_id() - first_fillet_manifold);
+              const Circle &circle =
+                circles.at(face->manifold_id() - first_fillet_manifold);
               ++n_faces;
               for (const unsigned int v : {0u, 1u})
-                largest = std::max(largest,
-                                   std::abs(face->vertex(v).distance(circle.centre) -
-                                            circle.radius));
+                largest =
+                  std::max(largest,
+                           std::abs(face->vertex(v).distance(circle.centre) -
+                                    circle.radius));
             }
       return {largest, n_faces};
     }
@@ -68,12 +74,12 @@ namespace FloorBlock::Geometry
       double largest = 0.;
       for (const auto &cell : mesh.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              Ids::boundary_kind(face->boundary_id()) ==
-                Ids::BoundaryKind::bedding_base_side)
+          if (face->at_boundary() && Ids::boundary_kind(face->boundary_id()) ==
+                                       Ids::BoundaryKind::bedding_base_side)
             for (const unsigned int v : {0u, 1u})
-              largest = std::max(largest, std::abs(face->vertex(v)[1] -
-                                                   profile.height(face->vertex(v)[0])));
+              largest = std::max(largest,
+                                 std::abs(face->vertex(v)[1] -
+                                          profile.height(face->vertex(v)[0])));
       return largest;
     }
   } // namespace

@@ -1,18 +1,15 @@
-#include <deal.II/base/quadrature_lib.h>
-
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
-
-#include <deal.II/grid/grid_tools.h>
-
-#include <deal.II/lac/vector.h>
-
 #include <geometry/bedding_manifold.h>
 #include <geometry/bedding_profile.h>
 #include <geometry/body_outline.h>
 #include <geometry/ids.h>
 #include <geometry/triangulation_reader.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/vector.h>
 
 #include <gtest/gtest.h>
 
@@ -33,11 +30,16 @@ namespace FloorBlock::Geometry
     using dealii::types::boundary_id;
     using dealii::types::material_id;
 
-    /** Coincidence of vertices on the two sides of a joint, as the issue asks. Units: m. */
+    /** Coincidence of vertices on the two sides of a joint, as the issue asks.
+     * Units: m. */
     constexpr double pairing_tolerance = 1e-12;
 
-    const std::vector<std::string> all_scenes = {
-      "default", "planar", "rounded", "planar_rounded", "non_matching", "lifted"};
+    const std::vector<std::string> all_scenes = {"default",
+                                                 "planar",
+                                                 "rounded",
+                                                 "planar_rounded",
+                                                 "non_matching",
+                                                 "lifted"};
 
     /** Distinct vertices of the boundary faces with the given id. */
     std::vector<Point<2>>
@@ -72,7 +74,8 @@ namespace FloorBlock::Geometry
                point[1] <= y_high + pairing_tolerance;
       // x is linear in the Bezier parameter because the control point sits
       // at the middle x; lines are the special case of a collinear control.
-      const double t = (point[0] - segment.start.x) / (segment.end.x - segment.start.x);
+      const double t =
+        (point[0] - segment.start.x) / (segment.end.x - segment.start.x);
       const double s = 1.0 - t;
       const double y = segment.kind == SegmentKind::quadratic ?
                          s * s * segment.start.y +
@@ -107,9 +110,11 @@ namespace FloorBlock::Geometry
     {
       unsigned int unpaired = 0;
       for (const Point<2> &point : first)
-        if (std::none_of(second.begin(), second.end(), [&](const Point<2> &other) {
-              return point.distance(other) <= pairing_tolerance;
-            }))
+        if (std::none_of(second.begin(),
+                         second.end(),
+                         [&](const Point<2> &other) {
+                           return point.distance(other) <= pairing_tolerance;
+                         }))
           ++unpaired;
       return unpaired;
     }
@@ -152,9 +157,9 @@ namespace FloorBlock::Geometry
   {
     for (const std::string &name : all_scenes)
       {
-        const auto        &scene = Testing::meshed_scene(name);
-        const unsigned int n     = scene.description.n_blocks;
-        std::set<material_id> materials;
+        const auto                         &scene = Testing::meshed_scene(name);
+        const unsigned int                  n     = scene.description.n_blocks;
+        std::set<material_id>               materials;
         std::map<boundary_id, unsigned int> n_faces;
         for (const auto &cell : scene.triangulation.active_cell_iterators())
           {
@@ -185,8 +190,8 @@ namespace FloorBlock::Geometry
   {
     for (const std::string &name : all_scenes)
       {
-        const auto           &scene   = Testing::meshed_scene(name);
-        const AssemblyOutline outline = build_outline(scene.description);
+        const auto           &scene    = Testing::meshed_scene(name);
+        const AssemblyOutline outline  = build_outline(scene.description);
         const bool            matching = scene.description.matching_joints;
         unsigned int          n_unpaired_total = 0;
         for (const JointPair &pair : outline.joint_pairs)
@@ -204,7 +209,8 @@ namespace FloorBlock::Geometry
               {
                 ASSERT_EQ(master_points.size(), slave_points.size())
                   << name << " joint side " << master.boundary_id;
-                for (unsigned int index = 0; index < master_points.size(); ++index)
+                for (unsigned int index = 0; index < master_points.size();
+                     ++index)
                   EXPECT_LE(master_points[index].distance(slave_points[index]),
                             pairing_tolerance)
                     << name << " joint side " << master.boundary_id;
@@ -221,20 +227,21 @@ namespace FloorBlock::Geometry
 
   TEST(Triangulation, SharpJointSidesAreGeometricallyCoincident)
   {
-    for (const std::string name : {"default", "planar", "non_matching", "lifted"})
+    for (const std::string name :
+         {"default", "planar", "non_matching", "lifted"})
       {
         const auto          &scene   = Testing::meshed_scene(name);
         const auto          &d       = scene.description;
         const BeddingProfile profile = BeddingProfile::geometry_profile(d);
         for (unsigned int joint = 1; joint <= d.n_blocks; ++joint)
           {
-            const double x_joint = (d.n_blocks - joint) * d.block_width;
+            const double        x_joint = (d.n_blocks - joint) * d.block_width;
             std::vector<double> extents;
             for (const boundary_id id : {Ids::vertical_joint_free_side(joint),
                                          Ids::vertical_joint_face_side(joint)})
               {
                 const auto points = vertices_with_id(scene.triangulation, id);
-                double y_low = 1e300, y_high = -1e300;
+                double     y_low = 1e300, y_high = -1e300;
                 for (const Point<2> &point : points)
                   {
                     EXPECT_LE(std::abs(point[0] - x_joint), pairing_tolerance);
@@ -246,12 +253,15 @@ namespace FloorBlock::Geometry
               }
             EXPECT_LE(std::abs(extents[0] - extents[2]), pairing_tolerance);
             EXPECT_LE(std::abs(extents[1] - extents[3]), pairing_tolerance);
-            EXPECT_NEAR(extents[1] - extents[0], d.block_height, pairing_tolerance);
+            EXPECT_NEAR(extents[1] - extents[0],
+                        d.block_height,
+                        pairing_tolerance);
           }
         for (unsigned int block = 0; block <= d.n_blocks; ++block)
           for (const boundary_id id :
                {Ids::bedding_block_side(block), Ids::bedding_base_side(block)})
-            for (const Point<2> &point : vertices_with_id(scene.triangulation, id))
+            for (const Point<2> &point :
+                 vertices_with_id(scene.triangulation, id))
               EXPECT_LE(std::abs(point[1] - profile.height(point[0])),
                         pairing_tolerance)
                 << name << " id " << id;
@@ -328,18 +338,21 @@ namespace FloorBlock::Geometry
                 const Point<2> first  = face->vertex(0);
                 const Point<2> second = face->vertex(1);
                 const double   dx     = second[0] - first[0];
-                const auto offset = [&](const Point<2> &point) {
+                const auto     offset = [&](const Point<2> &point) {
                   return point[1] - point[0] * point[0] / d.curvature;
                 };
                 if (curved_bedding && dx != 0.0 && first[0] >= 0.0 &&
                     second[0] >= 0.0 &&
-                    std::abs(offset(first) - offset(second)) < on_curve_tolerance)
+                    std::abs(offset(first) - offset(second)) <
+                      on_curve_tolerance)
                   {
-                    // The body gains the sliver if it lies above the convex curve.
+                    // The body gains the sliver if it lies above the convex
+                    // curve.
                     const double chord_y_at_centre =
                       first[1] + (second[1] - first[1]) *
                                    (cell->center()[0] - first[0]) / dx;
-                    const double sliver = std::pow(std::abs(dx), 3) / (6.0 * d.curvature);
+                    const double sliver =
+                      std::pow(std::abs(dx), 3) / (6.0 * d.curvature);
                     chord_correction[material] +=
                       cell->center()[1] > chord_y_at_centre ? sliver : -sliver;
                     continue;
@@ -350,13 +363,16 @@ namespace FloorBlock::Geometry
                     if (segment.kind != SegmentKind::arc)
                       continue;
                     const Point<2> centre(segment.control.x, segment.control.y);
-                    const double   radius =
-                      centre.distance(Point<2>(segment.start.x, segment.start.y));
-                    if (std::abs(first.distance(centre) - radius) < on_curve_tolerance &&
-                        std::abs(second.distance(centre) - radius) < on_curve_tolerance)
+                    const double   radius = centre.distance(
+                      Point<2>(segment.start.x, segment.start.y));
+                    if (std::abs(first.distance(centre) - radius) <
+                          on_curve_tolerance &&
+                        std::abs(second.distance(centre) - radius) <
+                          on_curve_tolerance)
                       {
                         const double angle =
-                          2.0 * std::asin(first.distance(second) / (2.0 * radius));
+                          2.0 *
+                          std::asin(first.distance(second) / (2.0 * radius));
                         chord_correction[material] +=
                           radius * radius * (angle - std::sin(angle)) / 2.0;
                         break;
@@ -368,10 +384,14 @@ namespace FloorBlock::Geometry
           {
             const double exact =
               outline_area(outline.bodies[body_index(material, d.n_blocks)]);
-            EXPECT_NEAR(value + chord_correction[material], exact, 1e-10 * exact)
+            EXPECT_NEAR(value + chord_correction[material],
+                        exact,
+                        1e-10 * exact)
               << name << " material " << material;
             // The plain cell sum is close too: within the chord slivers.
-            EXPECT_NEAR(value, exact, std::abs(chord_correction[material]) + 1e-10 * exact)
+            EXPECT_NEAR(value,
+                        exact,
+                        std::abs(chord_correction[material]) + 1e-10 * exact)
               << name << " material " << material;
           }
       }
@@ -382,16 +402,18 @@ namespace FloorBlock::Geometry
     // Bound on deal.II's aspect ratio (ratio of the extreme singular values
     // of the cell Jacobian at the quadrature points): 5 is the usual limit
     // for a sound quadrilateral mesh.
-    constexpr double max_aspect_ratio = 5.0;
+    constexpr double           max_aspect_ratio = 5.0;
     const dealii::MappingQ1<2> mapping;
     const dealii::QGauss<2>    quadrature(2);
     const dealii::FE_Q<2>      element(1);
     for (const std::string &name : all_scenes)
       {
         const auto &triangulation = Testing::meshed_scene(name).triangulation;
-        dealii::FEValues<2> values(mapping, element, quadrature,
+        dealii::FEValues<2> values(mapping,
+                                   element,
+                                   quadrature,
                                    dealii::update_JxW_values);
-        double smallest_jxw = 1e300;
+        double              smallest_jxw = 1e300;
         for (const auto &cell : triangulation.active_cell_iterators())
           {
             values.reinit(cell);
@@ -414,14 +436,14 @@ namespace FloorBlock::Geometry
   {
     for (const std::string name : {"default", "planar", "rounded"})
       {
-        const auto           &scene   = Testing::meshed_scene(name);
-        const auto           &d       = scene.description;
-        const AssemblyOutline outline = build_outline(d);
-        const auto distance_to_corner = [&](const Point<2> &point) {
+        const auto           &scene              = Testing::meshed_scene(name);
+        const auto           &d                  = scene.description;
+        const AssemblyOutline outline            = build_outline(d);
+        const auto            distance_to_corner = [&](const Point<2> &point) {
           double nearest = 1e300;
           for (const Point2 &corner : outline.refinement_points)
-            nearest = std::min(nearest,
-                               point.distance(Point<2>(corner.x, corner.y)));
+            nearest =
+              std::min(nearest, point.distance(Point<2>(corner.x, corner.y)));
           return nearest;
         };
         // Beyond this distance h(d) = corner + (g - 1) d reaches far size.
@@ -477,15 +499,15 @@ namespace FloorBlock::Geometry
       double largest = 0.0;
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() &&
-              (Ids::boundary_kind(face->boundary_id()) ==
-                 Ids::BoundaryKind::bedding_block_side ||
-               Ids::boundary_kind(face->boundary_id()) ==
-                 Ids::BoundaryKind::bedding_base_side))
+          if (face->at_boundary() && (Ids::boundary_kind(face->boundary_id()) ==
+                                        Ids::BoundaryKind::bedding_block_side ||
+                                      Ids::boundary_kind(face->boundary_id()) ==
+                                        Ids::BoundaryKind::bedding_base_side))
             for (const unsigned int vertex : {0u, 1u})
-              largest = std::max(largest,
-                                 std::abs(face->vertex(vertex)[1] -
-                                          profile.height(face->vertex(vertex)[0])));
+              largest =
+                std::max(largest,
+                         std::abs(face->vertex(vertex)[1] -
+                                  profile.height(face->vertex(vertex)[0])));
       return largest;
     };
     dealii::Triangulation<2> with_manifold, without_manifold;

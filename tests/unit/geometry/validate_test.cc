@@ -1,5 +1,4 @@
 #include <common/input_error.h>
-
 #include <geometry/assembly_description.h>
 #include <geometry/assembly_mesher.h>
 #include <geometry/gmsh_session.h>
@@ -25,7 +24,7 @@ namespace FloorBlock::Geometry
      */
     void
     expect_refused(const std::function<void(AssemblyDescription &)> &change,
-                   const std::string &parameter)
+                   const std::string                                &parameter)
     {
       AssemblyDescription description;
       change(description);
@@ -57,14 +56,16 @@ namespace FloorBlock::Geometry
 
   TEST(Validate, RefusesBlockCountOutsideIdScheme)
   {
-    expect_refused([](auto &d) { d.n_blocks = 0; }, "Geometry/Number of blocks");
+    expect_refused([](auto &d) { d.n_blocks = 0; },
+                   "Geometry/Number of blocks");
     expect_refused([](auto &d) { d.n_blocks = 100; },
                    "Geometry/Number of blocks");
   }
 
   TEST(Validate, RefusesNonPositiveOrNonFiniteSizes)
   {
-    expect_refused([](auto &d) { d.block_width = 0.0; }, "Geometry/Block width");
+    expect_refused([](auto &d) { d.block_width = 0.0; },
+                   "Geometry/Block width");
     expect_refused([](auto &d) { d.block_width = not_a_number; },
                    "Geometry/Block width");
     expect_refused([](auto &d) { d.block_height = -2.0; },

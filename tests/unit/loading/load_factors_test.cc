@@ -22,18 +22,24 @@ namespace FloorBlock::Loading
   // stages.
   TEST(StageFactors, EarlierStagesAreComplete)
   {
-    expect_factors(
-      stage_factors(LoadStage::gravity, 0.25, false), 0.25, 0., 0.);
-    expect_factors(
-      stage_factors(LoadStage::support_pressure, 0.5, false), 1., 0.5, 0.);
+    expect_factors(stage_factors(LoadStage::gravity, 0.25, false),
+                   0.25,
+                   0.,
+                   0.);
+    expect_factors(stage_factors(LoadStage::support_pressure, 0.5, false),
+                   1.,
+                   0.5,
+                   0.);
     expect_factors(stage_factors(LoadStage::uplift, 0.75, false), 1., 1., 0.75);
   }
 
   // The tool shall raise gravity with the support load when asked to.
   TEST(StageFactors, GravityRisesWithSupportLoad)
   {
-    expect_factors(
-      stage_factors(LoadStage::support_pressure, 0.5, true), 0.5, 0.5, 0.);
+    expect_factors(stage_factors(LoadStage::support_pressure, 0.5, true),
+                   0.5,
+                   0.5,
+                   0.);
     expect_factors(stage_factors(LoadStage::uplift, 0.5, true), 1., 1., 0.5);
   }
 

@@ -129,7 +129,7 @@ namespace FloorBlock::Loading
   // their sum, 0.9999999999999999, is the stage end.
   TEST(LoadPath, RoundOffRemainderIsStageEnd)
   {
-    ScriptedModel model;
+    ScriptedModel         model;
     const LoadPathOutcome outcome =
       follow_load_path(steps(0, 0, 10), 6, model.callbacks());
 
@@ -153,7 +153,7 @@ namespace FloorBlock::Loading
       }
 
     ScriptedModel together;
-    LoadSteps     with_gravity = steps(3, 2, 0);
+    LoadSteps     with_gravity         = steps(3, 2, 0);
     with_gravity.gravity_with_pressure = true;
     follow_load_path(with_gravity, 6, together.callbacks());
     ASSERT_EQ(together.commits.size(), 2u);

@@ -55,8 +55,9 @@ namespace
   TEST(ElasticLaw, BothConstructorsAgreeOnTheSameRock)
   {
     const auto from_k_g = ElasticLaw<3>::from_bulk_shear(9e9, 6.7e9);
-    const auto from_e_nu = ElasticLaw<3>::from_youngs_poisson(
-      from_k_g.youngs_modulus(), from_k_g.poissons_ratio());
+    const auto from_e_nu =
+      ElasticLaw<3>::from_youngs_poisson(from_k_g.youngs_modulus(),
+                                         from_k_g.poissons_ratio());
     expect_relative(from_e_nu.lame_lambda(), from_k_g.lame_lambda());
     expect_relative(from_e_nu.shear_modulus(), from_k_g.shear_modulus());
   }
@@ -78,8 +79,8 @@ namespace
     expect_relative(law.out_of_plane_stress(uniaxial), 4e6);
 
     dealii::SymmetricTensor<2, 2> shear;
-    shear[0][1]                               = 1e-3;
-    const dealii::SymmetricTensor<2, 2> tau   = law.stress(shear);
+    shear[0][1]                             = 1e-3;
+    const dealii::SymmetricTensor<2, 2> tau = law.stress(shear);
     expect_relative(tau[0][1], 8e6);
     EXPECT_EQ(tau[0][0], 0.);
     EXPECT_EQ(tau[1][1], 0.);
@@ -90,20 +91,21 @@ namespace
   // general strain, and C_xxxx = lambda + 2 mu, C_xxyy = lambda, C_xyxy = mu.
   TEST(ElasticLaw, StiffnessTensorIsTheStressMap)
   {
-    const auto law = ElasticLaw<2>::from_youngs_poisson(10e9, 0.25);
-    const auto &c  = law.stiffness_tensor();
+    const auto  law = ElasticLaw<2>::from_youngs_poisson(10e9, 0.25);
+    const auto &c   = law.stiffness_tensor();
     expect_relative(c[0][0][0][0], 12e9);
     expect_relative(c[0][0][1][1], 4e9);
     expect_relative(c[0][1][0][1], 4e9);
 
     dealii::SymmetricTensor<2, 2> strain;
-    strain[0][0] = 3e-4;
-    strain[1][1] = -1e-4;
-    strain[0][1] = 2e-4;
+    strain[0][0]                                    = 3e-4;
+    strain[1][1]                                    = -1e-4;
+    strain[0][1]                                    = 2e-4;
     const dealii::SymmetricTensor<2, 2> direct      = law.stress(strain);
     const dealii::SymmetricTensor<2, 2> contraction = c * strain;
     // Relative to the stress's size: a component can cancel to round-off.
-    EXPECT_LE((contraction - direct).norm(), relative_tolerance * direct.norm());
+    EXPECT_LE((contraction - direct).norm(),
+              relative_tolerance * direct.norm());
     expect_relative(contraction[0][0], 12e9 * 3e-4 - 4e9 * 1e-4);
     expect_relative(contraction[0][1], 8e9 * 2e-4);
   }

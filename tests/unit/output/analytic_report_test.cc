@@ -60,7 +60,8 @@ namespace
 
   TEST(AnalyticCsv, HeaderLinesAndColumnGroups)
   {
-    const auto lines = split(Output::analytic_csv(two_block_closed_forms()), '\n');
+    const auto lines =
+      split(Output::analytic_csv(two_block_closed_forms()), '\n');
     // 2 comment lines, the column names, 2 blocks and the final newline.
     ASSERT_EQ(lines.size(), 6u);
     EXPECT_EQ(lines[0], std::string("# ") + Output::numbering_note);
@@ -76,7 +77,8 @@ namespace
 
   TEST(AnalyticCsv, OneRowPerBlockWithEmptyCellsWithoutAnswer)
   {
-    const auto lines = split(Output::analytic_csv(two_block_closed_forms()), '\n');
+    const auto lines =
+      split(Output::analytic_csv(two_block_closed_forms()), '\n');
     ASSERT_GE(lines.size(), 5u);
     const auto first = split(lines[3], ',');
     ASSERT_EQ(first.size(), 11u) << lines[3];

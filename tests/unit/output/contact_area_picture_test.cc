@@ -1,6 +1,7 @@
 #include <output/contact_area_picture.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <sstream>
@@ -8,14 +9,14 @@
 #include <tuple>
 #include <vector>
 
-#include <unistd.h>
-
 namespace FloorBlock::Output
 {
   namespace
   {
     Contact::JointNodeSample
-    sample(const double arc, const double traction, const Contact::JointState state)
+    sample(const double              arc,
+           const double              traction,
+           const Contact::JointState state)
     {
       Contact::JointNodeSample node;
       node.arc_position    = arc;

@@ -4,9 +4,8 @@
 #include <contact/results.h>
 #include <output/fem_report.h>
 
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 
@@ -37,8 +36,8 @@ namespace
   TEST(FemReport, NoLoadTextStatesBothForces)
   {
     Compare::LoadCheck check;
-    check.largest_force   = 1.234e-3;
-    check.round_off_force = 1.6e-2;
+    check.largest_force    = 1.234e-3;
+    check.round_off_force  = 1.6e-2;
     const std::string text = Output::no_load_text(check);
     EXPECT_NE(text.find("every joint force are at most 1.2e-03 N/m"),
               std::string::npos)
@@ -53,8 +52,7 @@ namespace
   using namespace FloorBlock;
 
   Contact::IncrementResult
-  increment_with_one_pair(const Loading::LoadStage stage,
-                          const double             traction)
+  increment_with_one_pair(const Loading::LoadStage stage, const double traction)
   {
     Contact::IncrementResult increment;
     increment.stage        = stage;

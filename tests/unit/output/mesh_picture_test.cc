@@ -24,8 +24,7 @@ namespace FloorBlock::Output
 
   TEST(MeshPicture, WritesPngOfRequestedWidth)
   {
-    const auto &scene =
-      Geometry::Testing::meshed_scene("default");
+    const auto       &scene = Geometry::Testing::meshed_scene("default");
     const std::string path =
       Geometry::Testing::scratch_folder() + "/default.png";
     MeshPictureOptions options;

@@ -52,18 +52,18 @@ TEST(ModelParameters, ValidValuesChooseTheModel)
 {
   EXPECT_EQ(read_scenario(default_scene, {"Model/Blocks=rigid"}).model.chosen,
             BlockModel::rigid);
-  EXPECT_EQ(read_scenario(default_scene, {"Model/Blocks=elastic"})
-              .model.chosen,
+  EXPECT_EQ(read_scenario(default_scene, {"Model/Blocks=elastic"}).model.chosen,
             BlockModel::elastic);
 
-  const auto forces = read_scenario(
-    default_scene, {"Model/Blocks=auto", "Model/Outputs=forces"});
+  const auto forces =
+    read_scenario(default_scene, {"Model/Blocks=auto", "Model/Outputs=forces"});
   EXPECT_EQ(forces.model.blocks, BlockModel::automatic);
   EXPECT_EQ(forces.model.chosen, BlockModel::rigid);
   EXPECT_TRUE(contains(forces.model.choice_reason, "forces"));
 
-  const auto stress = read_scenario(
-    default_scene, {"Model/Blocks=auto", "Model/Outputs=contact stress"});
+  const auto stress =
+    read_scenario(default_scene,
+                  {"Model/Blocks=auto", "Model/Outputs=contact stress"});
   EXPECT_EQ(stress.model.chosen, BlockModel::elastic);
   EXPECT_TRUE(contains(stress.model.choice_reason, "contact stress"));
 
@@ -106,8 +106,7 @@ TEST(ModelParameters, BadValuesAreInputErrors)
 // rigid joints (no springs) and a support load normal to an inclined top.
 TEST(ModelParameters, RigidBlocksRefuseScenesTheyCannotRepresent)
 {
-  const std::string law =
-    error_of({"Model/Blocks=rigid", "Joints/Law=rigid"});
+  const std::string law = error_of({"Model/Blocks=rigid", "Joints/Law=rigid"});
   EXPECT_TRUE(contains(law, "Model/Blocks")) << law;
   EXPECT_TRUE(contains(law, "Joints/Law")) << law;
 
@@ -115,8 +114,7 @@ TEST(ModelParameters, RigidBlocksRefuseScenesTheyCannotRepresent)
     error_of({"Model/Blocks=rigid",
               "Bedding/Floor uplift reading=inclined",
               "Loading/Support load direction=normal to block top"});
-  EXPECT_TRUE(contains(inclined_top, "Support load direction"))
-    << inclined_top;
+  EXPECT_TRUE(contains(inclined_top, "Support load direction")) << inclined_top;
 
   // On the lifted (level) bedding "normal to the top" is vertical: accepted.
   EXPECT_EQ(error_of({"Model/Blocks=rigid",

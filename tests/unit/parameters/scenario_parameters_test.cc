@@ -45,17 +45,34 @@ namespace
 TEST(ScenarioParameters, DeclaresEveryRequiredName)
 {
   const std::string all = Parameters::describe_all_parameters();
-  for (const char *name :
-       {"Number of blocks", "Block width", "Block height", "Support width",
-        "Shape", "Inclination", "Curvature", "Bulk modulus", "Shear modulus",
-        "Density", "Bedding friction angle", "Vertical friction angle",
-        "Cohesion", "Normal stiffness", "Shear stiffness", "Gravity",
-        "Support load", "Loaded blocks", "Floor lift",
-        "Corner rounding radius", "Corner size", "Far size", "Growth rate"})
+  for (const char *name : {"Number of blocks",
+                           "Block width",
+                           "Block height",
+                           "Support width",
+                           "Shape",
+                           "Inclination",
+                           "Curvature",
+                           "Bulk modulus",
+                           "Shear modulus",
+                           "Density",
+                           "Bedding friction angle",
+                           "Vertical friction angle",
+                           "Cohesion",
+                           "Normal stiffness",
+                           "Shear stiffness",
+                           "Gravity",
+                           "Support load",
+                           "Loaded blocks",
+                           "Floor lift",
+                           "Corner rounding radius",
+                           "Corner size",
+                           "Far size",
+                           "Growth rate"})
     EXPECT_NE(all.find(std::string("set ") + name), std::string::npos) << name;
   for (const char *section :
        {"Geometry", "Bedding", "Material", "Joints", "Loading", "Mesh"})
-    EXPECT_NE(all.find(std::string("subsection ") + section), std::string::npos);
+    EXPECT_NE(all.find(std::string("subsection ") + section),
+              std::string::npos);
 }
 
 // The tool shall read the chapter's UDEC scene into SI units.
@@ -79,15 +96,16 @@ TEST(ScenarioParameters, DefaultSceneInSiUnits)
 // The tool shall let a command-line override change the parsed value.
 TEST(ScenarioParameters, OverrideChangesValue)
 {
-  const auto scene =
-    read_scenario(default_scene, {"Joints/Bedding friction angle=20",
-                                  "Geometry/Number of blocks = 7"});
+  const auto scene = read_scenario(default_scene,
+                                   {"Joints/Bedding friction angle=20",
+                                    "Geometry/Number of blocks = 7"});
   EXPECT_DOUBLE_EQ(scene.joints.bedding_friction_angle,
                    Units::degrees_to_radians(20.0));
   EXPECT_EQ(scene.geometry.n_blocks, 7u);
   // The echoed parameters.prm must carry the override (aligned "set" lines).
-  EXPECT_TRUE(std::regex_search(scene.expanded_text,
-                                std::regex("Bedding friction angle +=  *20\\b")));
+  EXPECT_TRUE(
+    std::regex_search(scene.expanded_text,
+                      std::regex("Bedding friction angle +=  *20\\b")));
 }
 
 // The tool shall name the parameter, the value and the range of a bad override.
@@ -103,8 +121,9 @@ TEST(ScenarioParameters, OutOfRangeOverrideNamesParameterValueAndRange)
 // The tool shall refuse a negative size in a file, naming file line and range.
 TEST(ScenarioParameters, NegativeWidthInFileIsRefusedWithLine)
 {
-  const std::string path = write_scene(
-    "negative.prm", "subsection Geometry\n  set Block width = -1\nend\n");
+  const std::string path =
+    write_scene("negative.prm",
+                "subsection Geometry\n  set Block width = -1\nend\n");
   const std::string message = error_of(path, {});
   EXPECT_NE(message.find("Block width"), std::string::npos) << message;
   EXPECT_NE(message.find("-1"), std::string::npos);
@@ -115,12 +134,14 @@ TEST(ScenarioParameters, NegativeWidthInFileIsRefusedWithLine)
 // The tool shall refuse unknown parameter names, in files and overrides.
 TEST(ScenarioParameters, UnknownNamesAreRefused)
 {
-  const std::string path = write_scene(
-    "unknown.prm", "subsection Joints\n  set Bedding fricton angle = 20\nend\n");
-  EXPECT_NE(error_of(path, {}).find("Bedding fricton angle"), std::string::npos);
-  EXPECT_NE(error_of(default_scene, {"Joints/Frobnication=1"})
-              .find("Frobnication"),
+  const std::string path =
+    write_scene("unknown.prm",
+                "subsection Joints\n  set Bedding fricton angle = 20\nend\n");
+  EXPECT_NE(error_of(path, {}).find("Bedding fricton angle"),
             std::string::npos);
+  EXPECT_NE(
+    error_of(default_scene, {"Joints/Frobnication=1"}).find("Frobnication"),
+    std::string::npos);
   EXPECT_NE(error_of(default_scene, {"no equals sign"}).find("expected"),
             std::string::npos);
   std::filesystem::remove(path);
@@ -134,9 +155,9 @@ TEST(ScenarioParameters, MissingFileAndInconsistentScenes)
   EXPECT_NE(error_of(default_scene, {"Geometry/Number of blocks=2"})
               .find("Loading/Loaded blocks"),
             std::string::npos);
-  EXPECT_NE(error_of(default_scene, {"Loading/Loaded blocks=1,1"})
-              .find("only once"),
-            std::string::npos);
+  EXPECT_NE(
+    error_of(default_scene, {"Loading/Loaded blocks=1,1"}).find("only once"),
+    std::string::npos);
   EXPECT_NE(error_of(default_scene, {"Geometry/Corner rounding radius=0.3"})
               .find("quarter"),
             std::string::npos);
@@ -176,7 +197,9 @@ TEST(ScenarioParameters, FootprintOutsideTheFaceIsRefused)
     {{"Geometry/Dimension=2"},
      {"Loading/Footprint length", "1.5", "Geometry/Dimension = 2"}},
     {{"Loading/Footprint length=5"},
-     {"Loading/Footprint length", "5", "between 0 and Geometry/Face length = 4.5"}},
+     {"Loading/Footprint length",
+      "5",
+      "between 0 and Geometry/Face length = 4.5"}},
     {{"Loading/Footprint length=-1"}, {"Footprint length", "-1"}},
     {{"Loading/Footprint offset=3.5"},
      {"Loading/Footprint offset", "3.5", "between 0 and", "= 3.0"}},

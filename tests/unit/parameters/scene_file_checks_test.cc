@@ -36,7 +36,9 @@ namespace
 // input of the fuzz abort is "[[]]".
 TEST(SceneFileChecks, JsonArraysAndEmptyNamesAreRefused)
 {
-  for (const std::string text : {"[[]]", "[1]", R"({"": 1})",
+  for (const std::string text : {"[[]]",
+                                 "[1]",
+                                 R"({"": 1})",
                                  R"({"Geometry": [1, 2]})",
                                  R"({"Geometry": [{"value": "3"}]})"})
     EXPECT_NE(refusal("scene.json", text).find("without a name"),
@@ -57,9 +59,11 @@ TEST(SceneFileChecks, JsonArraysAndEmptyNamesAreRefused)
 // debug library and reads past the name in its release library.
 TEST(SceneFileChecks, NamesWithInvalidEscapesAreRefused)
 {
-  for (const std::string text :
-       {R"({"a_": "1"})", R"({"_": {"x": "1"}})", R"({"Geometry": {"x_zz": "1"}})",
-        R"({"Geometry": {"x_4": "1"}})", R"({"Geometry": {"x_2F": "1"}})"})
+  for (const std::string text : {R"({"a_": "1"})",
+                                 R"({"_": {"x": "1"}})",
+                                 R"({"Geometry": {"x_zz": "1"}})",
+                                 R"({"Geometry": {"x_4": "1"}})",
+                                 R"({"Geometry": {"x_2F": "1"}})"})
     EXPECT_NE(refusal("scene.json", text).find("escape"), std::string::npos)
       << text;
   EXPECT_NE(refusal("scene.xml",
@@ -78,7 +82,8 @@ TEST(SceneFileChecks, NamesBelowEntriesAndValidEscapesPass)
                     R"({"Joints": {"Law": {"value": "rigid",)"
                     R"( "default_value": "compliant", "n": [1]}}})"),
             "");
-  EXPECT_EQ(refusal("scene.json", R"({"Geometry": {"Number_20of_20blocks": "3"}})"),
+  EXPECT_EQ(refusal("scene.json",
+                    R"({"Geometry": {"Number_20of_20blocks": "3"}})"),
             "");
 }
 
@@ -89,7 +94,8 @@ TEST(SceneFileChecks, FileTypeIsChosenAsDealIiChoosesIt)
   EXPECT_NE(refusal("scene.JSON", "[[]]"), "");
   EXPECT_NE(refusal("/a.b/.json", "[[]]"), "");
   EXPECT_NE(refusal("scene.Prm", "include x.prm\n"), "");
-  EXPECT_EQ(refusal("scene.json.txt", "[[]]"), "") << "not a JSON file for deal.II";
+  EXPECT_EQ(refusal("scene.json.txt", "[[]]"), "")
+    << "not a JSON file for deal.II";
 }
 
 // The tool shall refuse very deep nesting before Boost's recursive parsers
@@ -113,8 +119,9 @@ TEST(SceneFileChecks, VeryDeepNestingIsRefused)
                     R"({"Geometry": {"Number of blocks": ")" +
                       std::string(500, '[') + R"("}})"),
             "");
-  EXPECT_EQ(refusal("scene.json", "{\"Geometry\": " + std::string(99, '[') +
-                                    std::string(99, ']') + "}")
+  EXPECT_EQ(refusal("scene.json",
+                    "{\"Geometry\": " + std::string(99, '[') +
+                      std::string(99, ']') + "}")
               .find("levels deep"),
             std::string::npos);
 }
@@ -141,9 +148,9 @@ TEST(SceneFileChecks, NamedScenesAndSyntaxErrorsPass)
 // backslash continuation splits the keyword.
 TEST(SceneFileChecks, PrmIncludeStatementsAreRefused)
 {
-  for (const std::string text :
-       {"include other.prm\n", "  INCLUDE /dev/zero # x\n",
-        "incl\\\nude /dev/zero\n"})
+  for (const std::string text : {"include other.prm\n",
+                                 "  INCLUDE /dev/zero # x\n",
+                                 "incl\\\nude /dev/zero\n"})
     EXPECT_NE(refusal("scene.prm", text).find("'include'"), std::string::npos)
       << text;
   EXPECT_EQ(refusal("scene.prm", "# include in a comment\nset a = 1\n"), "");

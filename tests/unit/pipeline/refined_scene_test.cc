@@ -2,8 +2,6 @@
 // pipeline/convergence_ladder): the same scene meshed the same way, with
 // every cell halved once more per level (Mesh/Global refinements).
 
-#include "default_scene.h"
-
 #include <parameters/scenario_parameters.h>
 #include <pipeline/convergence_ladder.h>
 #include <pipeline/error_estimate.h>
@@ -12,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "default_scene.h"
 
 using namespace FloorBlock;
 

@@ -26,7 +26,7 @@ namespace
     Contact::IncrementResult increment;
     increment.joints = {face};
     Pipeline::FemOutcome outcome;
-    outcome.converged = true;
+    outcome.converged         = true;
     outcome.result.increments = {increment};
     return outcome;
   }
@@ -49,8 +49,7 @@ TEST(RefinedSolveError, CoarseSolveGetsSixTimesTheDifference)
   EXPECT_DOUBLE_EQ(length.coarse_value, 0.0978575);
   EXPECT_DOUBLE_EQ(length.refined_value, 0.0981692);
   EXPECT_NEAR(length.absolute_error, 6. * 3.117e-4 + 7e-5, 1e-12);
-  EXPECT_NEAR(*length.relative_error, length.absolute_error / 0.0981692,
-              1e-15);
+  EXPECT_NEAR(*length.relative_error, length.absolute_error / 0.0981692, 1e-15);
   const auto &force = estimate.joints.at("vertical 6").normal_force;
   EXPECT_NEAR(force.absolute_error, 6. * 1e3, 1e-6); // no ends' term
 }
@@ -79,8 +78,8 @@ TEST(RefinedSolveError, RefinedSolveGetsThreeTimesTheDifference)
 // estimate for either solve, with the reason.
 TEST(RefinedSolveError, UnconvergedRefinedSolveGivesNoEstimate)
 {
-  auto failed        = fine;
-  failed.converged   = false;
+  auto failed               = fine;
+  failed.converged          = false;
   failed.report.status_text = "stopped after 4 cutbacks";
   for (const ReportedSolve reported :
        {ReportedSolve::coarse, ReportedSolve::refined})
@@ -114,7 +113,8 @@ TEST(WidenWhereOscillating, ReversedCheckGetsTheRangeOfThreeValues)
       const auto &length = estimate.joints.at("vertical 6").contact_length;
       EXPECT_TRUE(length.oscillating);
       EXPECT_NEAR(length.absolute_error, 0.19054 - 0.19037, 1e-12);
-      EXPECT_NEAR(*length.relative_error, length.absolute_error / 0.19038,
+      EXPECT_NEAR(*length.relative_error,
+                  length.absolute_error / 0.19038,
                   1e-15);
       EXPECT_NE(estimate.method.find("range of the three values"),
                 std::string::npos);
@@ -122,7 +122,8 @@ TEST(WidenWhereOscillating, ReversedCheckGetsTheRangeOfThreeValues)
       const auto &force = estimate.joints.at("vertical 6").normal_force;
       EXPECT_FALSE(force.oscillating);
       EXPECT_NEAR(force.absolute_error,
-                  Pipeline::error_per_difference(reported) * 100., 1e-6);
+                  Pipeline::error_per_difference(reported) * 100.,
+                  1e-6);
     }
 }
 
@@ -160,7 +161,7 @@ TEST(WidenToContain, NextLevelOutsideTheBracketWidensIt)
   const auto level_0 = solve_with_face(0.097468, 2e-4, 2.7167e6);
   const auto check   = solve_with_face(0.097499, 2e-4, 2.7170e6);
   const auto level_1 = solve_with_face(0.09804, 2e-4, 2.7171e6);
-  auto estimate =
+  auto       estimate =
     Pipeline::refined_solve_error(level_0, check, ReportedSolve::refined);
   const double before =
     estimate.joints.at("vertical 6").contact_length.absolute_error;
@@ -182,11 +183,11 @@ TEST(WidenToContain, NextLevelOutsideTheBracketWidensIt)
 // 347.07 mm +- 1.18 mm, level 1 347.20 mm).
 TEST(WidenToContain, NextLevelInsideLeavesTheEstimate)
 {
-  const auto level_0 = solve_with_face(0.3470692, 5e-5, 2726259.);
-  const auto check   = solve_with_face(0.3472152, 5e-5, 2727968.);
-  const auto level_1 = solve_with_face(0.3472025, 5e-5, 2727540.);
-  auto estimate = Pipeline::refined_solve_error(level_0, check);
-  const auto before = estimate.joints.at("vertical 6");
+  const auto level_0  = solve_with_face(0.3470692, 5e-5, 2726259.);
+  const auto check    = solve_with_face(0.3472152, 5e-5, 2727968.);
+  const auto level_1  = solve_with_face(0.3472025, 5e-5, 2727540.);
+  auto       estimate = Pipeline::refined_solve_error(level_0, check);
+  const auto before   = estimate.joints.at("vertical 6");
   Pipeline::widen_to_contain(estimate, level_1, 1);
   const auto &after = estimate.joints.at("vertical 6");
   EXPECT_DOUBLE_EQ(after.contact_length.absolute_error,

@@ -13,7 +13,7 @@ namespace
   estimate_of_face(const Output::JointErrors &errors)
   {
     Output::FemErrorEstimate estimate;
-    estimate.available             = true;
+    estimate.available            = true;
     estimate.joints["vertical 6"] = errors;
     return estimate;
   }
@@ -50,19 +50,24 @@ namespace
 TEST(WorstTargetError, IsTheLargestAmongTheTargetFiguresOnly)
 {
   const auto estimate = estimate_of_face(face_errors());
-  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(
-                     estimate, "vertical 6",
-                     {TargetFigure::normal_force, TargetFigure::contact_length}),
-                   0.02);
-  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(
-                     estimate, "vertical 6", {TargetFigure::normal_force}),
+  EXPECT_DOUBLE_EQ(
+    *Pipeline::worst_target_error(estimate,
+                                  "vertical 6",
+                                  {TargetFigure::normal_force,
+                                   TargetFigure::contact_length}),
+    0.02);
+  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(estimate,
+                                                 "vertical 6",
+                                                 {TargetFigure::normal_force}),
                    0.006);
-  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(
-                     estimate, "vertical 6",
-                     {TargetFigure::normal_force, TargetFigure::sigma_max}),
+  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(estimate,
+                                                 "vertical 6",
+                                                 {TargetFigure::normal_force,
+                                                  TargetFigure::sigma_max}),
                    0.55);
   EXPECT_DOUBLE_EQ(
-    *Pipeline::worst_target_error(estimate, "vertical 6",
+    *Pipeline::worst_target_error(estimate,
+                                  "vertical 6",
                                   {TargetFigure::sigma_max_averaged}),
     0.06);
 }
@@ -74,10 +79,11 @@ TEST(WorstTargetError, ZeroRefinedValueCountsOnlyIfBothLevelsAgree)
 {
   auto errors           = face_errors();
   errors.contact_length = figure_error(0., 0., 0., std::nullopt);
-  EXPECT_DOUBLE_EQ(*Pipeline::worst_target_error(
-                     estimate_of_face(errors), "vertical 6",
-                     {TargetFigure::contact_length}),
-                   0.);
+  EXPECT_DOUBLE_EQ(
+    *Pipeline::worst_target_error(estimate_of_face(errors),
+                                  "vertical 6",
+                                  {TargetFigure::contact_length}),
+    0.);
   errors.contact_length = figure_error(0.01, 0., 0.06, std::nullopt);
   EXPECT_TRUE(std::isinf(*Pipeline::worst_target_error(
     estimate_of_face(errors), "vertical 6", {TargetFigure::contact_length})));
@@ -86,10 +92,12 @@ TEST(WorstTargetError, ZeroRefinedValueCountsOnlyIfBothLevelsAgree)
 TEST(WorstTargetError, NoneWithoutAnEstimateOfTheJoint)
 {
   auto estimate = estimate_of_face(face_errors());
-  EXPECT_FALSE(Pipeline::worst_target_error(estimate, "vertical 3",
+  EXPECT_FALSE(Pipeline::worst_target_error(estimate,
+                                            "vertical 3",
                                             {TargetFigure::normal_force}));
   estimate.available = false;
-  EXPECT_FALSE(Pipeline::worst_target_error(estimate, "vertical 6",
+  EXPECT_FALSE(Pipeline::worst_target_error(estimate,
+                                            "vertical 6",
                                             {TargetFigure::normal_force}));
 }
 

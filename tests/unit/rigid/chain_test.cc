@@ -8,8 +8,8 @@
 // i+1). Translating the base drags every block by the same amount, so the
 // bedding slips everywhere but neighbouring blocks do not move against
 // each other: the vertical joints are loaded only by the elastic
-// differences between blocks, not necessarily up to the friction limit. The chain is therefore
-// compared in two steps:
+// differences between blocks, not necessarily up to the friction limit. The
+// chain is therefore compared in two steps:
 //  - phi_v = 0: both models carry no vertical shear and the force balance
 //    of every block is the same set of equations; only moments differ
 //    (where N acts), which do not enter Q. Agreement to the Newton
@@ -20,8 +20,6 @@
 //    its limit, and the remaining difference must be exactly the missing
 //    vertical shear.
 
-#include "scene_fixture.h"
-
 #include <analytic/slip_no_rotation.h>
 
 #include <gtest/gtest.h>
@@ -29,13 +27,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene_fixture.h"
+
 namespace FloorBlock::RigidBlocks
 {
   namespace
   {
-    constexpr unsigned int n_blocks         = 6;
-    constexpr double       dip_degrees      = 5.;
-    constexpr double       bedding_degrees  = 10.;
+    constexpr unsigned int n_blocks        = 6;
+    constexpr double       dip_degrees     = 5.;
+    constexpr double       bedding_degrees = 10.;
     /** Base travel towards the face, far beyond elastic displacements (m). */
     constexpr double base_travel = 0.01;
 
@@ -56,28 +56,29 @@ namespace FloorBlock::RigidBlocks
     }
 
     Analytic::ChainForces
-    closed_form(const ModelDescription &description, const double vertical_degrees)
+    closed_form(const ModelDescription &description,
+                const double            vertical_degrees)
     {
       const Geometry::AssemblyDescription &geometry = description.assembly;
-      return Analytic::slip_no_rotation(Analytic::uniform_chain(
-        n_blocks,
-        description.density * description.gravity * geometry.block_width *
-          geometry.block_height,
-        0.,
-        Testing::radians(dip_degrees),
-        geometry.block_width,
-        geometry.block_height,
-        Testing::radians(bedding_degrees),
-        Testing::radians(vertical_degrees)));
+      return Analytic::slip_no_rotation(
+        Analytic::uniform_chain(n_blocks,
+                                description.density * description.gravity *
+                                  geometry.block_width * geometry.block_height,
+                                0.,
+                                Testing::radians(dip_degrees),
+                                geometry.block_width,
+                                geometry.block_height,
+                                Testing::radians(bedding_degrees),
+                                Testing::radians(vertical_degrees)));
     }
   } // namespace
 
   TEST(RigidChain, FrictionlessVerticalJointsMatchSlipNoRotation)
   {
     const ModelDescription description = dragged_chain(0.);
-    const RigidSolveResult      result      = Model(description).solve();
+    const RigidSolveResult result      = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
-    const IncrementReport &last = result.increments.back();
+    const IncrementReport      &last      = result.increments.back();
     const Analytic::ChainForces reference = closed_form(description, 0.);
     ASSERT_EQ(reference.status, Analytic::Status::ok);
     for (unsigned int number = 1; number <= n_blocks; ++number)
@@ -91,25 +92,25 @@ namespace FloorBlock::RigidBlocks
         // is below 1e-12 of the first residual of an uplift increment (at
         // most kn x travel / 4 x L = 2e7 N/m here, against Q of 1e5 N/m),
         // so 1e-9 relative covers it with margin.
-        EXPECT_NEAR(Testing::find_joint(last, JointKind::vertical, number)
-                        .normal_force /
-                      reference.lateral_force[number - 1],
-                    1.,
-                    1e-9);
+        EXPECT_NEAR(
+          Testing::find_joint(last, JointKind::vertical, number).normal_force /
+            reference.lateral_force[number - 1],
+          1.,
+          1e-9);
       }
-    std::printf("  phi_v = 0: Q_n rigid %.6e N/m, slip_no_rotation %.6e N/m\n",
-                Testing::find_joint(last, JointKind::vertical, n_blocks)
-                  .normal_force,
-                reference.lateral_force.back());
+    std::printf(
+      "  phi_v = 0: Q_n rigid %.6e N/m, slip_no_rotation %.6e N/m\n",
+      Testing::find_joint(last, JointKind::vertical, n_blocks).normal_force,
+      reference.lateral_force.back());
   }
 
   TEST(RigidChain, ClosedFormHoldsWhereVerticalJointsReachTheirLimit)
   {
-    constexpr double vertical_degrees = 10.;
-    const ModelDescription description = dragged_chain(vertical_degrees);
-    const RigidSolveResult      result      = Model(description).solve();
+    constexpr double       vertical_degrees = 10.;
+    const ModelDescription description      = dragged_chain(vertical_degrees);
+    const RigidSolveResult result           = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
-    const IncrementReport &last = result.increments.back();
+    const IncrementReport      &last = result.increments.back();
     const Analytic::ChainForces reference =
       closed_form(description, vertical_degrees);
     ASSERT_EQ(reference.status, Analytic::Status::ok);
@@ -126,7 +127,7 @@ namespace FloorBlock::RigidBlocks
         SCOPED_TRACE(number);
         const RigidJointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
-        const double limit    = friction * joint.normal_force;
+        const double limit = friction * joint.normal_force;
         const bool   at_limit =
           std::abs(joint.shear_force - limit) <= 1e-9 * limit;
         chain_at_limit = chain_at_limit && at_limit;
@@ -157,8 +158,8 @@ namespace FloorBlock::RigidBlocks
     EXPECT_LT(face.shear_force, 0.5 * friction * face.normal_force);
     // ... and the agreement above must have covered the free end.
     EXPECT_NEAR(Testing::find_joint(last, JointKind::vertical, 1).shear_force /
-                  (friction *
-                   Testing::find_joint(last, JointKind::vertical, 1).normal_force),
+                  (friction * Testing::find_joint(last, JointKind::vertical, 1)
+                                .normal_force),
                 1.,
                 1e-9);
 
@@ -181,17 +182,16 @@ namespace FloorBlock::RigidBlocks
         SCOPED_TRACE(number);
         const RigidJointReport &joint =
           Testing::find_joint(last, JointKind::vertical, number);
-        const double normal =
-          (weight + joint.shear_force - previous_shear) /
-          (std::cos(dip) - bedding * std::sin(dip));
+        const double normal = (weight + joint.shear_force - previous_shear) /
+                              (std::cos(dip) - bedding * std::sin(dip));
         const double predicted =
           previous_force + normal * (std::sin(dip) + bedding * std::cos(dip));
         EXPECT_NEAR(joint.normal_force / predicted, 1., 1e-9);
-        EXPECT_NEAR(Testing::find_joint(last, JointKind::bedding, number)
-                        .normal_force /
-                      normal,
-                    1.,
-                    1e-9);
+        EXPECT_NEAR(
+          Testing::find_joint(last, JointKind::bedding, number).normal_force /
+            normal,
+          1.,
+          1e-9);
         previous_force = joint.normal_force;
         previous_shear = joint.shear_force;
       }

@@ -5,14 +5,14 @@
 // block motions under their material ids, the force balance, and the peaks
 // computed with the FEM's definition against values derived by hand.
 
-#include "scene_fixture.h"
-
 #include <geometry/ids.h>
 #include <rigid/contact_adapter.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "scene_fixture.h"
 
 namespace FloorBlock::RigidBlocks
 {
@@ -25,7 +25,7 @@ namespace FloorBlock::RigidBlocks
     {
       ModelDescription     description;
       Model                model;
-      RigidSolveResult          rigid;
+      RigidSolveResult     rigid;
       Contact::SolveResult contact;
     };
 
@@ -44,7 +44,7 @@ namespace FloorBlock::RigidBlocks
       static const AdaptedSolve solve = [] {
         const ModelDescription description = scene_with_all_profiles();
         const Model            model(description);
-        const RigidSolveResult      rigid = model.solve();
+        const RigidSolveResult rigid = model.solve();
         return AdaptedSolve{description,
                             model,
                             rigid,
@@ -70,7 +70,7 @@ namespace FloorBlock::RigidBlocks
         ASSERT_EQ(contact.joints.size(), rigid.joints.size());
         for (unsigned int j = 0; j < rigid.joints.size(); ++j)
           {
-            const RigidJointReport          &from = rigid.joints[j];
+            const RigidJointReport     &from = rigid.joints[j];
             const Contact::JointReport &to   = contact.joints[j];
             EXPECT_EQ(to.name, from.name);
             EXPECT_EQ(to.normal_force, from.normal_force);
@@ -126,9 +126,9 @@ namespace FloorBlock::RigidBlocks
   // the blocks) balances it, and the per-block imbalance is the rigid one.
   TEST(ContactAdapter, ForceBalanceCarriedOver)
   {
-    const AdaptedSolve &solve = adapted();
-    const auto         &d     = solve.description;
-    double total_load = 0.;
+    const AdaptedSolve &solve      = adapted();
+    const auto         &d          = solve.description;
+    double              total_load = 0.;
     for (const double load : d.support_line_loads)
       total_load += load;
     total_load += d.assembly.n_blocks * d.density * d.gravity *
@@ -155,12 +155,12 @@ namespace FloorBlock::RigidBlocks
   // top of the face joint's triangular traction gives sigma (1 - w/(2c)).
   TEST(ContactAdapter, PeaksWithTheFemDefinition)
   {
-    const AdaptedSolve &solve = adapted();
-    const IncrementReport &rigid_last = solve.rigid.increments.back();
-    const auto &contact_last          = solve.contact.increments.back();
+    const AdaptedSolve    &solve        = adapted();
+    const IncrementReport &rigid_last   = solve.rigid.increments.back();
+    const auto            &contact_last = solve.contact.increments.back();
     for (unsigned int j = 0; j < rigid_last.joints.size(); ++j)
       {
-        const RigidJointReport          &from = rigid_last.joints[j];
+        const RigidJointReport     &from = rigid_last.joints[j];
         const Contact::JointReport &to   = contact_last.joints[j];
         EXPECT_EQ(to.peak_normal_stress, from.peak_normal_traction);
         EXPECT_LE(to.averaged_peak_normal_stress,
@@ -199,7 +199,7 @@ namespace FloorBlock::RigidBlocks
     EXPECT_NEAR(face.averaged_peak_normal_stress,
                 face.peak_normal_stress *
                   (1. - averaging_length / (2. * contact)),
-                3. * spacing * spacing /
-                  (8. * contact * averaging_length) * face.peak_normal_stress);
+                3. * spacing * spacing / (8. * contact * averaging_length) *
+                  face.peak_normal_stress);
   }
 } // namespace FloorBlock::RigidBlocks

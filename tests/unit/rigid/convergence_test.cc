@@ -2,14 +2,14 @@
 // stiffness from 1e6 to 1e14 Pa/m, convergence in the number of
 // integration points, and the floating-block failure.
 
-#include "scene_fixture.h"
-
 #include <rigid/increment_solver.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+
+#include "scene_fixture.h"
 
 namespace FloorBlock::RigidBlocks
 {
@@ -33,7 +33,8 @@ namespace FloorBlock::RigidBlocks
     }
 
     void
-    print_increments(const RigidSolveResult &result, const unsigned int n_blocks)
+    print_increments(const RigidSolveResult &result,
+                     const unsigned int      n_blocks)
     {
       for (const IncrementReport &increment : result.increments)
         {
@@ -66,8 +67,8 @@ namespace FloorBlock::RigidBlocks
     ModelDescription
     scene_with_blocks(const unsigned int n_blocks)
     {
-      ModelDescription description = Testing::default_scene(4);
-      const double     load = description.support_line_loads.front();
+      ModelDescription description  = Testing::default_scene(4);
+      const double     load         = description.support_line_loads.front();
       description.assembly.n_blocks = n_blocks;
       description.support_line_loads.assign(n_blocks, 0.);
       for (unsigned int index = 0; index < std::min(n_blocks, 3u); ++index)
@@ -79,7 +80,7 @@ namespace FloorBlock::RigidBlocks
   TEST(RigidConvergence, DefaultSceneConvergesBalancesAndIsFast)
   {
     const ModelDescription description = Testing::default_scene(5);
-    const RigidSolveResult      result      = Model(description).solve();
+    const RigidSolveResult result      = Model(description).solve();
     expect_converged_and_balanced(result);
     std::printf("  default scene (6 blocks, 400 points per joint): %zu "
                 "increments, wall time %.2f ms\n",
@@ -89,11 +90,11 @@ namespace FloorBlock::RigidBlocks
     // The uplift is a vertical translation: the blocks ride up with the base
     // and only the face joint slips (block 6 moves up along the fixed face
     // block), with Q tan(phi_v) of shear.
-    const RigidJointReport &face = Testing::find_joint(result.increments.back(),
-                                                  JointKind::vertical,
-                                                  6);
+    const RigidJointReport &face =
+      Testing::find_joint(result.increments.back(), JointKind::vertical, 6);
     EXPECT_GT(face.counts.n_slip, 0u);
-    EXPECT_NEAR(face.shear_force / (face.normal_force * std::tan(Testing::radians(30.))),
+    EXPECT_NEAR(face.shear_force /
+                  (face.normal_force * std::tan(Testing::radians(30.))),
                 1.,
                 1e-9);
   }
@@ -103,7 +104,8 @@ namespace FloorBlock::RigidBlocks
     for (const unsigned int n_blocks : {1u, 20u})
       {
         SCOPED_TRACE(n_blocks);
-        const RigidSolveResult result = Model(scene_with_blocks(n_blocks)).solve();
+        const RigidSolveResult result =
+          Model(scene_with_blocks(n_blocks)).solve();
         expect_converged_and_balanced(result);
         std::printf("  %u blocks: wall time %.2f ms\n",
                     n_blocks,
@@ -127,8 +129,8 @@ namespace FloorBlock::RigidBlocks
     const RigidSolveResult result = Model(description).solve();
     if (!result.increments.empty())
       {
-        const RigidJointReport &face = Testing::find_joint(
-          result.increments.back(), JointKind::vertical, 6);
+        const RigidJointReport &face =
+          Testing::find_joint(result.increments.back(), JointKind::vertical, 6);
         std::printf("  kn %.0e Pa/m: %s, face Q %.5e N/m, c %.4f m, newton "
                     "iterations in the last increment %u, %.2f ms\n",
                     stiffness,
@@ -168,18 +170,17 @@ namespace FloorBlock::RigidBlocks
 
   TEST(RigidConvergence, FaceJointConvergesInTheNumberOfPoints)
   {
-    std::vector<double> forces;
-    std::vector<double> lengths;
+    std::vector<double>             forces;
+    std::vector<double>             lengths;
     const std::vector<unsigned int> counts = {100, 200, 400, 800, 1600};
     for (const unsigned int n_points : counts)
       {
         ModelDescription description = Testing::lifted_parabola_scene(2);
         description.solver.n_points_per_joint = n_points;
-        const RigidSolveResult result = Model(description).solve();
+        const RigidSolveResult result         = Model(description).solve();
         expect_converged_and_balanced(result);
-        const RigidJointReport &face = Testing::find_joint(result.increments.back(),
-                                                      JointKind::vertical,
-                                                      6);
+        const RigidJointReport &face =
+          Testing::find_joint(result.increments.back(), JointKind::vertical, 6);
         forces.push_back(face.normal_force);
         lengths.push_back(face.contact_length);
       }
@@ -231,16 +232,15 @@ namespace FloorBlock::RigidBlocks
     // The other reading of floor uplift: a flat bedding bent into
     // y = x^2/400 under the loaded blocks.
     const ModelDescription description = Testing::lifted_parabola_scene(5);
-    const RigidSolveResult      result      = Model(description).solve();
+    const RigidSolveResult result      = Model(description).solve();
     expect_converged_and_balanced(result);
     std::printf("  lifted parabola (6 blocks, 400 points per joint): %zu "
                 "increments, wall time %.2f ms\n",
                 result.increments.size(),
                 1e3 * result.wall_time);
     print_increments(result, description.assembly.n_blocks);
-    const RigidJointReport &face = Testing::find_joint(result.increments.back(),
-                                                  JointKind::vertical,
-                                                  6);
+    const RigidJointReport &face =
+      Testing::find_joint(result.increments.back(), JointKind::vertical, 6);
     // The bent bedding rotates block 6 against the upright face block: the
     // contact closes down from floor level and is shorter than the joint.
     EXPECT_GT(face.contact_length, 0.);

@@ -5,11 +5,11 @@
 // nothing but the bedding holds it: the face joint opens (ks < kn makes the
 // elastic stick displacement point away from the face).
 
-#include "scene_fixture.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "scene_fixture.h"
 
 namespace FloorBlock::RigidBlocks
 {
@@ -45,8 +45,8 @@ namespace FloorBlock::RigidBlocks
         const RigidSolveResult result = solve_on_incline(dip_degrees);
         ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
         ASSERT_EQ(result.increments.size(), 1u);
-        const IncrementReport &increment = result.increments.back();
-        const RigidJointReport     &bedding =
+        const IncrementReport  &increment = result.increments.back();
+        const RigidJointReport &bedding =
           Testing::find_joint(increment, JointKind::bedding, 1);
         const RigidJointReport &face =
           Testing::find_joint(increment, JointKind::vertical, 1);
@@ -73,8 +73,7 @@ namespace FloorBlock::RigidBlocks
       {
         SCOPED_TRACE(dip_degrees);
         const RigidSolveResult result = solve_on_incline(dip_degrees);
-        EXPECT_EQ(result.status, SolveStatus::no_equilibrium)
-          << result.message;
+        EXPECT_EQ(result.status, SolveStatus::no_equilibrium) << result.message;
         EXPECT_EQ(result.failing_block, 1u);
         EXPECT_TRUE(result.increments.empty());
         EXPECT_FALSE(result.message.empty());

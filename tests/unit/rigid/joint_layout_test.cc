@@ -1,13 +1,13 @@
 // Integration points, sides and normals of the joints, block loads.
 
-#include "scene_fixture.h"
-
 #include <rigid/block_loads.h>
 #include <rigid/joint_layout.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "scene_fixture.h"
 
 namespace FloorBlock::RigidBlocks
 {
@@ -29,7 +29,7 @@ namespace FloorBlock::RigidBlocks
   TEST(RigidJointLayout, SidesFollowTheChapterNumbering)
   {
     Geometry::AssemblyDescription assembly;
-    assembly.n_blocks = 4;
+    assembly.n_blocks                       = 4;
     const std::vector<JointGeometry> joints = build_joints(assembly, 11);
     ASSERT_EQ(joints.size(), 8u);
     for (unsigned int j = 1; j <= 4; ++j)
@@ -68,8 +68,8 @@ namespace FloorBlock::RigidBlocks
   TEST(RigidJointLayout, WeightsIntegrateLengthsAndNormalsAreUnit)
   {
     Geometry::AssemblyDescription assembly;
-    assembly.curvature          = 50.; // steep parabola: arc factor matters
-    constexpr unsigned int n_points = 401;
+    assembly.curvature = 50.; // steep parabola: arc factor matters
+    constexpr unsigned int           n_points = 401;
     const std::vector<JointGeometry> joints = build_joints(assembly, n_points);
     for (const JointGeometry &joint : joints)
       {
@@ -86,12 +86,15 @@ namespace FloorBlock::RigidBlocks
           {
             const double x_start =
               (assembly.n_blocks - joint.number) * assembly.block_width;
-            const double exact = parabola_arc_length(
-              x_start, x_start + assembly.block_width, assembly.curvature);
+            const double exact =
+              parabola_arc_length(x_start,
+                                  x_start + assembly.block_width,
+                                  assembly.curvature);
             // Trapezoid error of a smooth integrand: (b - a) h^2 f''/12 with
             // f'' <= 4/k^2 for sqrt(1 + (2x/k)^2); h = L/400.
             const double spacing = assembly.block_width / (n_points - 1);
-            EXPECT_NEAR(total, exact,
+            EXPECT_NEAR(total,
+                        exact,
                         assembly.block_width * spacing * spacing * 4. /
                           (12. * assembly.curvature * assembly.curvature));
           }
@@ -100,22 +103,24 @@ namespace FloorBlock::RigidBlocks
 
   TEST(RigidJointLayout, SupportLoadActsAtItsStatedPosition)
   {
-    ModelDescription description = Testing::default_scene(1);
-    description.support_load_position = 0.25;
-    const std::vector<BlockLoads> loads = block_loads(description);
-    const double length = description.assembly.block_width;
+    ModelDescription description         = Testing::default_scene(1);
+    description.support_load_position    = 0.25;
+    const std::vector<BlockLoads> loads  = block_loads(description);
+    const double                  length = description.assembly.block_width;
     for (unsigned int index = 0; index < loads.size(); ++index)
       {
         // A quarter of L from the side away from the face.
         const double x_away = (loads.size() - index) * length;
         EXPECT_DOUBLE_EQ(loads[index].support_point[0], x_away - 0.25 * length);
         EXPECT_DOUBLE_EQ(loads[index].centroid[0], x_away - 0.5 * length);
-        const std::array<double, 3> applied = applied_force(loads[index], 1., 1.);
+        const std::array<double, 3> applied =
+          applied_force(loads[index], 1., 1.);
         EXPECT_DOUBLE_EQ(applied[1],
                          -loads[index].weight - loads[index].support_load);
         // The load sits 0.25 L farther from the face than the centroid:
         // clockwise moment.
-        EXPECT_DOUBLE_EQ(applied[2], -0.25 * length * loads[index].support_load);
+        EXPECT_DOUBLE_EQ(applied[2],
+                         -0.25 * length * loads[index].support_load);
       }
   }
 } // namespace FloorBlock::RigidBlocks

@@ -35,19 +35,19 @@ namespace FloorBlock::RigidBlocks::Testing
     description.gravity                = standard_gravity;
     description.bedding_joint          = table_joint(bedding_friction);
     description.vertical_joint         = table_joint(vertical_friction);
-    description.steps = {1, 0, 0};
+    description.steps                  = {1, 0, 0};
     return description;
   }
 
   ModelDescription
   default_scene(const unsigned int n_uplift)
   {
-    constexpr double support_tonnes    = 650.;
-    constexpr double tonne             = 1000.;
-    constexpr double support_width     = 1.5;
-    constexpr unsigned int n_loaded    = 3;
-    constexpr double floor_lift        = 0.05;
-    ModelDescription description;
+    constexpr double       support_tonnes = 650.;
+    constexpr double       tonne          = 1000.;
+    constexpr double       support_width  = 1.5;
+    constexpr unsigned int n_loaded       = 3;
+    constexpr double       floor_lift     = 0.05;
+    ModelDescription       description;
     description.density        = rock_density;
     description.gravity        = standard_gravity;
     description.bedding_joint  = table_joint(radians(30.));
@@ -65,7 +65,7 @@ namespace FloorBlock::RigidBlocks::Testing
   ModelDescription
   lifted_parabola_scene(const unsigned int n_uplift)
   {
-    ModelDescription description   = default_scene(n_uplift);
+    ModelDescription description = default_scene(n_uplift);
     description.assembly.floor_uplift =
       Geometry::FloorUplift::lifted_flat_bedding;
     description.uplift.mode      = Contact::UpliftMotion::parabola;

@@ -11,13 +11,13 @@
 // model's rotations are linearised, so tan(theta) -> theta; see
 // block_motion.h) and b = 1 m (forces per metre of face).
 
-#include "scene_fixture.h"
-
 #include <analytic/corner_contact.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "scene_fixture.h"
 
 namespace FloorBlock::RigidBlocks
 {
@@ -47,18 +47,18 @@ namespace FloorBlock::RigidBlocks
     WinklerCheck
     press_against_face(const unsigned int n_points)
     {
-      ModelDescription description =
-        Testing::planar_scene(1, 0., Testing::radians(30.), Testing::radians(30.));
+      ModelDescription description = Testing::planar_scene(
+        1, 0., Testing::radians(30.), Testing::radians(30.));
       const double block_width = description.assembly.block_width;
-      description.vertical_joint.normal_stiffness = youngs_modulus / block_width;
-      description.solver.n_points_per_joint       = n_points;
+      description.vertical_joint.normal_stiffness =
+        youngs_modulus / block_width;
+      description.solver.n_points_per_joint = n_points;
       const Model model(description);
 
       // Overlap at depth z below floor level: theta (y_top - y_c - z) -
       // u_x; choose u_x so that it vanishes at z = c.
       const double centroid_to_top =
-        description.assembly.block_height -
-        model.joint_set().centroids()[0][1];
+        description.assembly.block_height - model.joint_set().centroids()[0][1];
       BlockMotion motion;
       motion.rotation       = rotation;
       motion.translation[0] = rotation * (centroid_to_top - contact_length);
@@ -83,9 +83,9 @@ namespace FloorBlock::RigidBlocks
       EXPECT_EQ(closed_form.status, Analytic::Status::ok);
       check.area_ratio =
         closed_form.contact_area / (face.contact_length * unit_width);
-      check.peak_ratio =
-        2. * face.normal_force * unit_width /
-        (face.contact_length * unit_width) / face.peak_normal_traction;
+      check.peak_ratio = 2. * face.normal_force * unit_width /
+                         (face.contact_length * unit_width) /
+                         face.peak_normal_traction;
       const double exact_force = youngs_modulus / block_width * rotation *
                                  contact_length * contact_length / 2.;
       check.force_error = (face.normal_force - exact_force) / exact_force;
@@ -105,13 +105,12 @@ namespace FloorBlock::RigidBlocks
         // the contact zone and the peak at the corner point are exact.
         EXPECT_NEAR(check.measured_length / contact_length, 1., 1e-12);
         EXPECT_EQ(check.peak_depth, 0.);
-        EXPECT_NEAR(check.peak_traction /
-                      (youngs_modulus / block_width * rotation *
-                       contact_length),
+        EXPECT_NEAR(check.peak_traction / (youngs_modulus / block_width *
+                                           rotation * contact_length),
                     1.,
                     1e-12);
-        // Q carries the trapezoid error (always an overestimate) of the kinked traction: on the
-        // interval containing z = c the rule is off by at most
+        // Q carries the trapezoid error (always an overestimate) of the kinked
+        // traction: on the interval containing z = c the rule is off by at most
         // kn theta h^2 / 8, i.e. a relative error <= h^2 / (4 c^2), with
         // h = H / (N - 1); the bound is the tolerance.
         const double spacing = block_height / (n_points - 1);
@@ -144,12 +143,12 @@ namespace FloorBlock::RigidBlocks
     // level. The bounds are the trapezoid error of Q (h^2/(4 c^2)) and
     // half of it for c, as in the prescribed test.
     const ModelDescription description = Testing::lifted_parabola_scene(5);
-    const RigidSolveResult      result      = Model(description).solve();
+    const RigidSolveResult result      = Model(description).solve();
     ASSERT_EQ(result.status, SolveStatus::converged) << result.message;
     const IncrementReport &last     = result.increments.back();
     const unsigned int     n_blocks = description.assembly.n_blocks;
     const double           spacing  = description.assembly.block_height /
-                             (description.solver.n_points_per_joint - 1);
+                           (description.solver.n_points_per_joint - 1);
     const double stiffness = description.vertical_joint.normal_stiffness;
     unsigned int n_partial = 0;
     for (unsigned int number = 1; number <= n_blocks; ++number)

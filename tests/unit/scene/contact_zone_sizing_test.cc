@@ -1,8 +1,6 @@
 // Scene::contact_zone_sizes: cells sized from Eq. 6.51's contact length
 // along the upper end of every vertical joint.
 
-#include "default_scene.h"
-
 #include <analytic/corner_contact.h>
 #include <scene/closed_forms.h>
 #include <scene/contact_zone_sizing.h>
@@ -14,6 +12,8 @@
 #include <map>
 #include <utility>
 
+#include "default_scene.h"
+
 using namespace FloorBlock;
 
 using Testing::default_scene;
@@ -23,8 +23,8 @@ using Testing::default_scene;
 // the other two have no answer or a longer one).
 TEST(EstimatedContactLength, IsTheShortestMechanismContactLength)
 {
-  const auto scene  = default_scene();
-  const auto closed = Scene::evaluate_closed_forms(scene);
+  const auto scene    = default_scene();
+  const auto closed   = Scene::evaluate_closed_forms(scene);
   double     shortest = INFINITY;
   for (const auto &mechanism : closed.mechanisms)
     if (mechanism.contact.status == Analytic::Status::ok &&
@@ -53,8 +53,8 @@ TEST(ContactZoneSizes, CoverTheUpperEndOfEveryVerticalJoint)
       EXPECT_DOUBLE_EQ(local.size, size);
       const double x = local.position.x;
       EXPECT_NEAR(x, std::round(x), 1e-9) << "on a joint line";
-      auto [where, fresh] = extent.try_emplace(
-        std::lround(x), local.position.y, local.position.y);
+      auto [where, fresh] =
+        extent.try_emplace(std::lround(x), local.position.y, local.position.y);
       where->second.first  = std::min(where->second.first, local.position.y);
       where->second.second = std::max(where->second.second, local.position.y);
     }
@@ -68,8 +68,7 @@ TEST(ContactZoneSizes, CoverTheUpperEndOfEveryVerticalJoint)
 
 TEST(ContactZoneSizes, NeverFinerThanTheCornerSize)
 {
-  const auto scene =
-    default_scene({"Mesh/Cells per contact length=100"});
+  const auto scene = default_scene({"Mesh/Cells per contact length=100"});
   for (const auto &local : Scene::contact_zone_sizes(scene))
     EXPECT_DOUBLE_EQ(local.size, scene.mesh.corner_size);
 }

@@ -1,14 +1,14 @@
 // Scene::global_refinements: "auto" refines the whole mesh only where the
 // corner fillet, not the joint springs, limits the contact concentration.
 
-#include "default_scene.h"
-
 #include <parameters/scenario_parameters.h>
 #include <scene/mesh_refinement.h>
 
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "default_scene.h"
 
 using namespace FloorBlock;
 
@@ -19,7 +19,8 @@ TEST(JointComplianceLength, IsYoungsModulusOverNormalStiffness)
 {
   auto scene = default_scene();
   EXPECT_NEAR(Scene::joint_compliance_length(scene),
-              9. * 9e9 * 6.7e9 / (3. * 9e9 + 6.7e9) / 9e9, 1e-12);
+              9. * 9e9 * 6.7e9 / (3. * 9e9 + 6.7e9) / 9e9,
+              1e-12);
   scene.joints.law = Contact::JointLawKind::rigid;
   EXPECT_EQ(Scene::joint_compliance_length(scene), 0.);
 }
@@ -48,8 +49,8 @@ TEST(GlobalRefinements, AutoHalvesUntilTheCornerCellsFitTheFillet)
 
 TEST(GlobalRefinements, AutoLeavesSharpCornersAlone)
 {
-  auto scene       = default_scene();
-  scene.joints.law = Contact::JointLawKind::rigid;
+  auto scene                            = default_scene();
+  scene.joints.law                      = Contact::JointLawKind::rigid;
   scene.geometry.corner_rounding_radius = 0.;
   EXPECT_EQ(Scene::global_refinements(scene), 0u);
 }
@@ -64,8 +65,7 @@ TEST(GlobalRefinements, AutoTreatsVeryStiffJointsLikeTheRigidLaw)
 
 TEST(GlobalRefinements, AnExplicitCountWins)
 {
-  auto scene =
-    default_scene({"Joints/Law=rigid", "Mesh/Global refinements=0"});
+  auto scene = default_scene({"Joints/Law=rigid", "Mesh/Global refinements=0"});
   EXPECT_EQ(Scene::global_refinements(scene), 0u);
   scene = default_scene({"Mesh/Global refinements=2"});
   EXPECT_EQ(Scene::global_refinements(scene), 2u);

@@ -35,14 +35,19 @@ namespace
   Parameters::ScenarioParameters
   planar_scene(const std::string &loaded_blocks)
   {
-    return Parameters::read_defaults(
-      "scene_inputs_test",
-      {"Geometry/Number of blocks=4", "Geometry/Block width=1.5",
-       "Geometry/Block height=3", "Geometry/Support width=2",
-       "Material/Density=2000", "Loading/Gravity=10",
-       "Loading/Support load=100", "Loading/Loaded blocks=" + loaded_blocks,
-       "Bedding/Shape=planar", "Bedding/Inclination=10",
-       "Joints/Bedding friction angle=35", "Joints/Vertical friction angle=25"});
+    return Parameters::read_defaults("scene_inputs_test",
+                                     {"Geometry/Number of blocks=4",
+                                      "Geometry/Block width=1.5",
+                                      "Geometry/Block height=3",
+                                      "Geometry/Support width=2",
+                                      "Material/Density=2000",
+                                      "Loading/Gravity=10",
+                                      "Loading/Support load=100",
+                                      "Loading/Loaded blocks=" + loaded_blocks,
+                                      "Bedding/Shape=planar",
+                                      "Bedding/Inclination=10",
+                                      "Joints/Bedding friction angle=35",
+                                      "Joints/Vertical friction angle=25"});
   }
 
   // W_i = rho g L H = 2000 x 10 x 1.5 x 3 = 90 kN/m on every block; the
@@ -50,7 +55,7 @@ namespace
   // gives P = 245.16625 kN/m on blocks 4 and 3 (1st and 2nd from the face).
   TEST(SceneInputs, BlockChainOfAPlanarScene)
   {
-    const auto scene = planar_scene("1,2");
+    const auto                 scene = planar_scene("1,2");
     const Analytic::BlockChain chain = Scene::block_chain(scene);
     ASSERT_EQ(chain.n_blocks(), 4u);
     for (unsigned int i = 0; i < 4; ++i)
@@ -74,8 +79,10 @@ namespace
   TEST(SceneInputs, SupportLoadIsSharedByTheLoadedBlocksOnly)
   {
     const Analytic::BlockChain one = Scene::block_chain(planar_scene("3"));
-    const std::vector<double>  expected_one{0., 100. * 1000. * 9.80665 / 2.,
-                                           0., 0.};
+    const std::vector<double>  expected_one{0.,
+                                           100. * 1000. * 9.80665 / 2.,
+                                           0.,
+                                           0.};
     ASSERT_EQ(one.support_load.size(), 4u);
     for (unsigned int i = 0; i < 4; ++i)
       expect_relative(one.support_load[i], expected_one[i]);
@@ -90,7 +97,8 @@ namespace
   TEST(SceneInputs, FaceJointFloorLiftOfAPlanarScene)
   {
     const auto scene = planar_scene("1,2");
-    expect_relative(Scene::face_joint_floor_lift(scene, Scene::block_chain(scene)),
+    expect_relative(Scene::face_joint_floor_lift(scene,
+                                                 Scene::block_chain(scene)),
                     1.5 * std::tan(Units::degrees_to_radians(10.)));
   }
 
@@ -99,11 +107,12 @@ namespace
   // L tan(alpha_n) = L^2/k = 1 cm.
   TEST(SceneInputs, ParabolicInclinationsAndFaceLift)
   {
-    const auto scene = Parameters::read_defaults(
-      "scene_inputs_test",
-      {"Geometry/Number of blocks=3", "Geometry/Block width=1",
-       "Loading/Loaded blocks=1", "Bedding/Shape=parabolic",
-       "Bedding/Curvature=100"});
+    const auto scene = Parameters::read_defaults("scene_inputs_test",
+                                                 {"Geometry/Number of blocks=3",
+                                                  "Geometry/Block width=1",
+                                                  "Loading/Loaded blocks=1",
+                                                  "Bedding/Shape=parabolic",
+                                                  "Bedding/Curvature=100"});
     const Analytic::BlockChain chain = Scene::block_chain(scene);
     ASSERT_EQ(chain.inclination.size(), 3u);
     expect_relative(chain.inclination[0], std::atan(0.05));
@@ -115,15 +124,21 @@ namespace
   // The Gmsh assembly takes the scene's geometry, bedding and mesh sizes.
   TEST(SceneInputs, AssemblyDescriptionCarriesGeometryBeddingAndMesh)
   {
-    const auto scene = Parameters::read_defaults(
-      "scene_inputs_test",
-      {"Geometry/Number of blocks=5", "Geometry/Block width=1.2",
-       "Geometry/Block height=2.5", "Geometry/Face block width=0.8",
-       "Geometry/Base thickness=0.7", "Geometry/Corner rounding radius=0.03",
-       "Loading/Loaded blocks=1,2",
-       "Bedding/Shape=planar", "Bedding/Inclination=5",
-       "Bedding/Floor uplift reading=inclined", "Mesh/Corner size=0.04",
-       "Mesh/Far size=0.3", "Mesh/Growth rate=1.2"});
+    const auto scene =
+      Parameters::read_defaults("scene_inputs_test",
+                                {"Geometry/Number of blocks=5",
+                                 "Geometry/Block width=1.2",
+                                 "Geometry/Block height=2.5",
+                                 "Geometry/Face block width=0.8",
+                                 "Geometry/Base thickness=0.7",
+                                 "Geometry/Corner rounding radius=0.03",
+                                 "Loading/Loaded blocks=1,2",
+                                 "Bedding/Shape=planar",
+                                 "Bedding/Inclination=5",
+                                 "Bedding/Floor uplift reading=inclined",
+                                 "Mesh/Corner size=0.04",
+                                 "Mesh/Far size=0.3",
+                                 "Mesh/Growth rate=1.2"});
     const Geometry::AssemblyDescription description =
       Scene::assembly_description(scene);
     EXPECT_EQ(description.n_blocks, 5u);
@@ -134,17 +149,20 @@ namespace
     EXPECT_EQ(description.corner_rounding_radius, 0.03);
     EXPECT_EQ(description.bedding_shape, Geometry::BeddingShape::planar);
     expect_relative(description.inclination, Units::degrees_to_radians(5.));
-    EXPECT_EQ(description.floor_uplift, Geometry::FloorUplift::inclined_bedding);
+    EXPECT_EQ(description.floor_uplift,
+              Geometry::FloorUplift::inclined_bedding);
     EXPECT_EQ(description.mesh_corner_size, 0.04);
     EXPECT_EQ(description.mesh_far_size, 0.3);
     EXPECT_EQ(description.mesh_growth_rate, 1.2);
     EXPECT_TRUE(description.matching_joints);
 
-    const auto lifted = Parameters::read_defaults(
-      "scene_inputs_test",
-      {"Bedding/Shape=parabolic", "Bedding/Floor uplift reading=lifted"});
+    const auto lifted =
+      Parameters::read_defaults("scene_inputs_test",
+                                {"Bedding/Shape=parabolic",
+                                 "Bedding/Floor uplift reading=lifted"});
     const auto lifted_description = Scene::assembly_description(lifted);
-    EXPECT_EQ(lifted_description.bedding_shape, Geometry::BeddingShape::parabolic);
+    EXPECT_EQ(lifted_description.bedding_shape,
+              Geometry::BeddingShape::parabolic);
     EXPECT_EQ(lifted_description.floor_uplift,
               Geometry::FloorUplift::lifted_flat_bedding);
   }
@@ -152,11 +170,13 @@ namespace
   TEST(SceneInputs, ContactLawFollowsJointsLaw)
   {
     EXPECT_EQ(Scene::floor_problem_settings(
-                Parameters::read_defaults("scene_inputs_test", {"Joints/Law=rigid"}))
+                Parameters::read_defaults("scene_inputs_test",
+                                          {"Joints/Law=rigid"}))
                 .law,
               Contact::JointLawKind::rigid);
-    EXPECT_EQ(Scene::floor_problem_settings(Parameters::read_defaults(
-                "scene_inputs_test", {"Joints/Law=compliant"}))
+    EXPECT_EQ(Scene::floor_problem_settings(
+                Parameters::read_defaults("scene_inputs_test",
+                                          {"Joints/Law=compliant"}))
                 .law,
               Contact::JointLawKind::compliant);
   }

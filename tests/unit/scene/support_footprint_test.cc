@@ -31,9 +31,9 @@ namespace
   Contact::ContactProblem<3>
   swept_problem(const Parameters::ScenarioParameters &scene)
   {
-    return Scene::swept_contact_problem(
-      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
-      scene.geometry.end_faces);
+    return Scene::swept_contact_problem(Scene::make_floor_contact_problem(
+                                          Scene::floor_problem_settings(scene)),
+                                        scene.geometry.end_faces);
   }
 
   // Centred unless an offset is given; none in 2D or with length 0.
@@ -44,8 +44,8 @@ namespace
     ASSERT_TRUE(centred);
     EXPECT_DOUBLE_EQ(centred->start, 1.5);
     EXPECT_DOUBLE_EQ(centred->end, 3.0);
-    const auto placed = Scene::support_footprint(scene_3d(
-      {"Loading/Footprint length=1", "Loading/Footprint offset=3.5"}));
+    const auto placed = Scene::support_footprint(
+      scene_3d({"Loading/Footprint length=1", "Loading/Footprint offset=3.5"}));
     ASSERT_TRUE(placed);
     EXPECT_DOUBLE_EQ(placed->start, 3.5);
     EXPECT_EQ(placed->end, 4.5);
@@ -68,12 +68,13 @@ namespace
   {
     for (const double length : {1.5, 0.5})
       {
-        const auto scene = scene_3d(
-          {"Loading/Footprint length=" + std::to_string(length)});
+        const auto scene =
+          scene_3d({"Loading/Footprint length=" + std::to_string(length)});
         const auto uniform = swept_problem(scene);
         auto       problem = uniform;
         Scene::load_support_footprint(*Scene::support_footprint(scene),
-                                      scene.geometry.support_width, problem);
+                                      scene.geometry.support_width,
+                                      problem);
         ASSERT_EQ(problem.model.pressures.size(),
                   uniform.model.pressures.size());
         for (const unsigned int block : scene.loaded_blocks())
@@ -82,9 +83,10 @@ namespace
               uniform.model.pressures.at(Ids::floor_surface(block));
             EXPECT_EQ(problem.model.pressures.count(Ids::floor_surface(block)),
                       0u);
-            EXPECT_NEAR(
-              problem.model.pressures.at(Ids::footprint_surface(block)),
-              pressure_2d * 1.5 / length, 1e-12 * pressure_2d)
+            EXPECT_NEAR(problem.model.pressures.at(
+                          Ids::footprint_surface(block)),
+                        pressure_2d * 1.5 / length,
+                        1e-12 * pressure_2d)
               << "block " << block;
             EXPECT_EQ(problem.model.vertical_pressures.count(
                         Ids::footprint_surface(block)),

@@ -3,22 +3,21 @@
 // matrix that fails without throwing or leaving NaN.
 #include <solver/linear_solver.h>
 
-#include "tridiagonal_pattern.h"
-
-#include <gtest/gtest.h>
-
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cmath>
 #include <limits>
 
+#include "tridiagonal_pattern.h"
+
 namespace
 {
   using namespace FloorBlock;
-  using dealii::TrilinosWrappers::MPI::Vector;
   using dealii::TrilinosWrappers::SparseMatrix;
+  using dealii::TrilinosWrappers::MPI::Vector;
   using Solver::LinearSolverKind;
 
   constexpr unsigned int n = 100;
@@ -118,8 +117,8 @@ namespace
     settings.kind = LinearSolverKind::direct;
     solution      = 7.;
     Solver::LinearSolveInfo info;
-    ASSERT_NO_THROW(info = Solver::solve_linear_system(settings, matrix, rhs, {},
-                                                       solution));
+    ASSERT_NO_THROW(
+      info = Solver::solve_linear_system(settings, matrix, rhs, {}, solution));
     EXPECT_FALSE(info.success);
     EXPECT_TRUE(Solver::has_only_finite_values(solution));
     EXPECT_EQ(solution(0), 7.);

@@ -3,19 +3,18 @@
 // a small change of the matrix and rebuilds it for a large one.
 #include <solver/reused_amg.h>
 
-#include "tridiagonal_pattern.h"
-
-#include <gtest/gtest.h>
-
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <gtest/gtest.h>
 #include <mpi.h>
+
+#include "tridiagonal_pattern.h"
 
 namespace
 {
   using namespace FloorBlock;
-  using dealii::TrilinosWrappers::MPI::Vector;
   using dealii::TrilinosWrappers::SparseMatrix;
+  using dealii::TrilinosWrappers::MPI::Vector;
   using FloorBlockTest::relative_residual;
 
   constexpr unsigned int n = 400;
@@ -27,8 +26,10 @@ namespace
    * [first, last).
    */
   void
-  fill(SparseMatrix &matrix, const unsigned int first, const unsigned int last,
-       const double shift)
+  fill(SparseMatrix      &matrix,
+       const unsigned int first,
+       const unsigned int last,
+       const double       shift)
   {
     matrix = 0.;
     for (unsigned int i = 0; i < n; ++i)
@@ -49,7 +50,7 @@ namespace
     SparseMatrix                     &matrix = system.matrix;
     Vector                           &rhs    = system.rhs;
     Vector                           &x      = system.x;
-    Solver::LinearSolverSettings              settings;
+    Solver::LinearSolverSettings      settings;
     /** One component: the constant is the near-null space. */
     const Solver::NearNullSpace modes{1, {std::vector<double>(n, 1.)}};
   };

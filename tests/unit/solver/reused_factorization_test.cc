@@ -3,19 +3,18 @@
 // small change, and fail cleanly on a singular matrix.
 #include <solver/reused_factorization.h>
 
-#include "tridiagonal_pattern.h"
-
-#include <gtest/gtest.h>
-
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <gtest/gtest.h>
 #include <mpi.h>
+
+#include "tridiagonal_pattern.h"
 
 namespace
 {
   using namespace FloorBlock;
-  using dealii::TrilinosWrappers::MPI::Vector;
   using dealii::TrilinosWrappers::SparseMatrix;
+  using dealii::TrilinosWrappers::MPI::Vector;
   using FloorBlockTest::relative_residual;
 
   constexpr unsigned int n = 200;
@@ -27,8 +26,11 @@ namespace
    * (n + 1)): diagonal 4 is well conditioned, diagonal 2 nearly singular.
    */
   void
-  fill(SparseMatrix &matrix, const unsigned int first, const unsigned int last,
-       const double shift, const double diagonal = 4.)
+  fill(SparseMatrix      &matrix,
+       const unsigned int first,
+       const unsigned int last,
+       const double       shift,
+       const double       diagonal = 4.)
   {
     matrix = 0.;
     for (unsigned int i = 0; i < n; ++i)
@@ -55,7 +57,7 @@ namespace
     SparseMatrix                     &matrix = system.matrix;
     Vector                           &rhs    = system.rhs;
     Vector                           &x      = system.x;
-    Solver::LinearSolverSettings              settings;
+    Solver::LinearSolverSettings      settings;
   };
 
   TEST_F(ReusedFactorizationTest, SmallChangeReusesFactorsAndMeetsTolerance)
@@ -90,7 +92,8 @@ namespace
     EXPECT_EQ(solver.statistics().n_accepted_above_tolerance, 0u);
   }
 
-  TEST_F(ReusedFactorizationTest, IllConditionedMatrixIsNeverWorseThanFreshFactors)
+  TEST_F(ReusedFactorizationTest,
+         IllConditionedMatrixIsNeverWorseThanFreshFactors)
   {
     // GMRES's own residual estimate claimed convergence on stale factors
     // here while the true residual was 4e-3: the solver must check.
@@ -102,7 +105,7 @@ namespace
     const double reused_residual = relative_residual(matrix, x, rhs);
 
     Solver::LinearSolverSettings fresh_only = settings;
-    fresh_only.max_reuse_iterations = 0;
+    fresh_only.max_reuse_iterations         = 0;
     Solver::ReusedFactorization fresh(fresh_only);
     Vector                      y(x);
     ASSERT_TRUE(fresh.solve(matrix, rhs, y).success);
@@ -128,7 +131,7 @@ namespace
     for (unsigned int i = 0; i + 1 < n; ++i) // last row left empty
       matrix.set(i, i, 1.);
     matrix.compress(dealii::VectorOperation::insert);
-    x = 7.;
+    x                                  = 7.;
     const Solver::LinearSolveInfo info = solver.solve(matrix, rhs, x);
     EXPECT_FALSE(info.success);
     EXPECT_FALSE(info.message.empty());
@@ -164,7 +167,7 @@ namespace
     for (unsigned int i = 0; i + 1 < n; ++i)
       matrix.set(i, i, 1.);
     matrix.compress(dealii::VectorOperation::insert);
-    x = 7.;
+    x                                  = 7.;
     const Solver::LinearSolveInfo info = solver.solve(matrix, rhs, x);
     EXPECT_FALSE(info.success);
     EXPECT_NE(info.message.find("UMFPACK"), std::string::npos) << info.message;

@@ -19,7 +19,8 @@ namespace FloorBlockTest
     const dealii::IndexSet all = dealii::complete_index_set(n);
     pattern.reinit(all, all, MPI_COMM_SELF);
     for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1); ++j)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1);
+           ++j)
         pattern.add(i, j);
     pattern.compress();
   }

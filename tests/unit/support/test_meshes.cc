@@ -1,6 +1,6 @@
-#include <geometry/triangulation_reader.h>
-
 #include "test_meshes.h"
+
+#include <geometry/triangulation_reader.h>
 
 #include <unistd.h>
 
@@ -42,15 +42,15 @@ namespace FloorBlock::Geometry::Testing
   AssemblyDescription
   scene_description(const std::string &name)
   {
-    constexpr double degree = M_PI / 180.0;
+    constexpr double    degree = M_PI / 180.0;
     AssemblyDescription description;
     if (name == "default")
       return description;
     if (name == "planar" || name == "non_matching")
       {
-        description.n_blocks      = 4;
-        description.bedding_shape = BeddingShape::planar;
-        description.inclination   = 10.0 * degree;
+        description.n_blocks        = 4;
+        description.bedding_shape   = BeddingShape::planar;
+        description.inclination     = 10.0 * degree;
         description.matching_joints = name == "planar";
         return description;
       }

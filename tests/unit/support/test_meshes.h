@@ -1,9 +1,9 @@
 #pragma once
 
-#include <deal.II/grid/tria.h>
-
 #include <geometry/assembly_description.h>
 #include <geometry/assembly_mesher.h>
+
+#include <deal.II/grid/tria.h>
 
 #include <string>
 

@@ -25,7 +25,7 @@ namespace
     // a^2 = 4 P R / (pi E*), E* = E / (1 - nu^2).
     const double contact_modulus =
       youngs_modulus / (1. - poissons_ratio * poissons_ratio);
-    const double half_width = ratio * radius;
+    const double  half_width = ratio * radius;
     HertzSettings settings;
     settings.radius         = radius;
     settings.youngs_modulus = youngs_modulus;
@@ -39,14 +39,13 @@ namespace
   run(const HertzSettings &settings)
   {
     const HertzResult result = run_hertz_verification(settings);
-    std::cout << "R " << settings.radius << " P " << settings.line_load
-              << " E " << settings.youngs_modulus << " nu "
-              << settings.poissons_ratio << " N "
-              << settings.cells_per_half_width << ": a/R "
+    std::cout << "R " << settings.radius << " P " << settings.line_load << " E "
+              << settings.youngs_modulus << " nu " << settings.poissons_ratio
+              << " N " << settings.cells_per_half_width << ": a/R "
               << result.half_width_exact / settings.radius << ", a error "
               << 100. * result.half_width_error() << " %, p0 error "
-              << 100. * result.peak_pressure_error() << " %, "
-              << result.n_dofs << " DoFs" << std::endl;
+              << 100. * result.peak_pressure_error() << " %, " << result.n_dofs
+              << " DoFs" << std::endl;
     return result;
   }
 
@@ -86,12 +85,11 @@ namespace
   // is Hertz's own problem.
   TEST(Hertz, LargeRatioPeakPressureIsMeshIndependentAndHertzs)
   {
-    HertzSettings settings = case_with_ratio(1., 1e10, 0.3, 0.1);
-    const HertzResult medium = run(settings);
+    HertzSettings     settings    = case_with_ratio(1., 1e10, 0.3, 0.1);
+    const HertzResult medium      = run(settings);
     settings.cells_per_half_width = 64;
-    const HertzResult fine = run(settings);
-    EXPECT_NEAR(medium.peak_pressure_error(), fine.peak_pressure_error(),
-                2e-4);
+    const HertzResult fine        = run(settings);
+    EXPECT_NEAR(medium.peak_pressure_error(), fine.peak_pressure_error(), 2e-4);
     EXPECT_LT(std::abs(fine.peak_pressure_error()),
               hertz_peak_pressure_tolerance);
   }
@@ -105,8 +103,7 @@ namespace
     settings.fe_degree            = 2;
     settings.cells_per_half_width = 16;
     const HertzResult result      = run(settings);
-    EXPECT_LT(std::abs(result.half_width_error()),
-              hertz_half_width_tolerance);
+    EXPECT_LT(std::abs(result.half_width_error()), hertz_half_width_tolerance);
     EXPECT_LT(std::abs(result.peak_pressure_error()),
               hertz_peak_pressure_tolerance);
   }
@@ -115,9 +112,9 @@ namespace
   {
     HertzSettings settings;
     settings.cells_per_half_width = 16;
-    const HertzResult rigid = run(settings);
-    settings.law            = JointLawKind::compliant;
-    const HertzResult compliant = run(settings);
+    const HertzResult rigid       = run(settings);
+    settings.law                  = JointLawKind::compliant;
+    const HertzResult compliant   = run(settings);
     // kn = 1e14 Pa/m within 0.1 % of the exact (rigid) law in the peak
     // pressure (measured 0.07 %). The discrete contacts differ by at most
     // one node at the end (measured: one; the stiff springs let the node
@@ -126,7 +123,8 @@ namespace
     // differ: the compliant law's linear gap puts a stiff joint's end next
     // to its last closed node, the exact law's square-root traction
     // between the nodes.
-    EXPECT_NEAR(compliant.peak_pressure_computed, rigid.peak_pressure_computed,
+    EXPECT_NEAR(compliant.peak_pressure_computed,
+                rigid.peak_pressure_computed,
                 0.001 * rigid.peak_pressure_computed);
     EXPECT_LE(std::abs(compliant.last_closed_position -
                        rigid.last_closed_position),

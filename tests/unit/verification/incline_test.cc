@@ -28,7 +28,7 @@ namespace
   {
     const InclineResult result = run_incline(0.9);
     ASSERT_FALSE(result.slipped) << "block below the friction angle slipped";
-    const double       incline =
+    const double incline =
       std::atan(0.9 * std::tan(InclineSettings().friction_angle));
     const JointReport &joint  = result.stuck->joints.at(0);
     const double       weight = result.weight;
@@ -39,7 +39,9 @@ namespace
     // Side A is the base, tangent (-n_y, n_x) = (-1, 0): the base holds the
     // block back against +x, so the shear traction on the joint is
     // +W sin(alpha) along -x.
-    EXPECT_NEAR(std::abs(joint.shear_force), weight * std::sin(incline), 1e-8 * weight);
+    EXPECT_NEAR(std::abs(joint.shear_force),
+                weight * std::sin(incline),
+                1e-8 * weight);
     EXPECT_NEAR(joint.normal_force, weight * std::cos(incline), 1e-8 * weight);
     // Elastic bodies slip locally at the joint ends (Cattaneo-Mindlin
     // partial slip) even below the limit; the block as a whole sticks.

@@ -20,9 +20,9 @@ namespace
                    Solver::LinearSolverKind::direct)
   {
     PatchSettings settings;
-    settings.law           = law;
-    settings.fe_degree     = degree;
-    settings.linear_solver = linear_solver;
+    settings.law             = law;
+    settings.fe_degree       = degree;
+    settings.linear_solver   = linear_solver;
     const PatchResult result = run_patch_verification(settings);
     EXPECT_EQ(result.n_increments, 1u);
     return result;
@@ -44,7 +44,8 @@ namespace
     for (const auto &sample : report.profile)
       EXPECT_NEAR(sample.normal_traction, pressure, 1e-8 * pressure)
         << "at x = " << sample.position[0];
-    EXPECT_NEAR(report.normal_force, pressure * result.joint_length,
+    EXPECT_NEAR(report.normal_force,
+                pressure * result.joint_length,
                 1e-8 * pressure);
     EXPECT_NEAR(report.shear_force, 0., 1e-8 * pressure);
     EXPECT_LT(result.increment.balance.relative_imbalance, 1e-8);
@@ -65,9 +66,8 @@ namespace
     // ML AMG + GMRES stops at 1e-10 relative residual per Newton step;
     // Newton then drives the nonlinear residual to 1e-12, so the same 1e-8
     // bound holds.
-    expect_uniform_pressure(run_patch_test(JointLawKind::compliant,
-                                           1,
-                                           Solver::LinearSolverKind::iterative));
+    expect_uniform_pressure(run_patch_test(
+      JointLawKind::compliant, 1, Solver::LinearSolverKind::iterative));
   }
 
   TEST(PatchTest, RigidLaw)
@@ -78,6 +78,7 @@ namespace
     // the first iterate already has the right set.
     EXPECT_LE(result.increment.n_newton_iterations, 2u);
     for (const auto &sample : result.increment.joints.at(0).profile)
-      EXPECT_LT(std::abs(sample.gap), 1e-8 * 1e-3) << "rigid law leaves overlap";
+      EXPECT_LT(std::abs(sample.gap), 1e-8 * 1e-3)
+        << "rigid law leaves overlap";
   }
 } // namespace

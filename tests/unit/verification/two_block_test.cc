@@ -40,7 +40,8 @@ namespace
     EXPECT_DOUBLE_EQ(outcome.applied_lateral_force, 4e5 * 0.5);
     // Horizontal equilibrium of the right block on a frictionless base;
     // Newton tolerance 1e-12 relative, so 1e-8 holds with margin.
-    EXPECT_NEAR(outcome.joint_normal_force, outcome.applied_lateral_force,
+    EXPECT_NEAR(outcome.joint_normal_force,
+                outcome.applied_lateral_force,
                 1e-8 * outcome.applied_lateral_force);
     EXPECT_GT(outcome.closed_length, 0.);
     EXPECT_LT(outcome.closed_length, 0.75 * outcome.block_height);
@@ -53,9 +54,12 @@ namespace
     // so the length changes by less than a cell per halving; from h = 1/4
     // to 1/8 it happens to change by only 0.4 % (measured 1.0885, 1.0842,
     // 1.0725, 1.0687 m at 1/4 ... 1/32), so the ladder starts at 1/8.
-    const double coarse = run_two_blocks(8, JointLawKind::rigid, 0.).closed_length;
-    const double medium = run_two_blocks(16, JointLawKind::rigid, 0.).closed_length;
-    const double fine   = run_two_blocks(32, JointLawKind::rigid, 0.).closed_length;
+    const double coarse =
+      run_two_blocks(8, JointLawKind::rigid, 0.).closed_length;
+    const double medium =
+      run_two_blocks(16, JointLawKind::rigid, 0.).closed_length;
+    const double fine =
+      run_two_blocks(32, JointLawKind::rigid, 0.).closed_length;
     std::cout << "closed length (m) at h = 1/8, 1/16, 1/32: " << coarse << " "
               << medium << " " << fine << std::endl;
     // Successive differences must shrink, and the last one be within one
@@ -76,11 +80,14 @@ namespace
               << ", closed length " << rigid.closed_length << " "
               << stiff.closed_length << std::endl;
     // The acceptance bound: within 1 %.
-    EXPECT_NEAR(stiff.right_rotation, rigid.right_rotation,
+    EXPECT_NEAR(stiff.right_rotation,
+                rigid.right_rotation,
                 0.01 * std::abs(rigid.right_rotation));
-    EXPECT_NEAR(stiff.averaged_peak, rigid.averaged_peak,
+    EXPECT_NEAR(stiff.averaged_peak,
+                rigid.averaged_peak,
                 0.01 * rigid.averaged_peak);
-    EXPECT_NEAR(stiff.joint_normal_force, rigid.joint_normal_force,
+    EXPECT_NEAR(stiff.joint_normal_force,
+                rigid.joint_normal_force,
                 1e-8 * rigid.applied_lateral_force);
   }
 } // namespace
@@ -120,19 +127,20 @@ namespace
     settings.cells_per_metre    = 8;
     settings.corner_refinements = 2; // corner cells 1/32 m
     const TwoBlocksResult local = run_two_blocks_verification(settings);
-    EXPECT_NEAR(local.joint_normal_force, local.applied_lateral_force,
+    EXPECT_NEAR(local.joint_normal_force,
+                local.applied_lateral_force,
                 1e-8 * local.applied_lateral_force);
     EXPECT_LT(local.relative_imbalance, 1e-10);
 
-    settings.corner_refinements = 0;
-    const TwoBlocksResult coarse = run_two_blocks_verification(settings);
+    settings.corner_refinements   = 0;
+    const TwoBlocksResult coarse  = run_two_blocks_verification(settings);
     settings.cells_per_metre      = 32;
     const TwoBlocksResult uniform = run_two_blocks_verification(settings);
     std::cout << "closed length: local refinement " << local.closed_length
-              << " m, uniform 1/8 " << coarse.closed_length << " m, uniform 1/32 "
-              << uniform.closed_length << " m; rotation " << local.right_rotation
-              << " / " << coarse.right_rotation << " / " << uniform.right_rotation
-              << std::endl;
+              << " m, uniform 1/8 " << coarse.closed_length
+              << " m, uniform 1/32 " << uniform.closed_length << " m; rotation "
+              << local.right_rotation << " / " << coarse.right_rotation << " / "
+              << uniform.right_rotation << std::endl;
     // The joint is resolved as on the uniform 1/32 mesh (within one of its
     // cells); the rotation also depends on the bulk's far field, which the
     // corner refinement leaves at 1/8: it must be no further from the
@@ -142,4 +150,3 @@ namespace
               std::abs(coarse.right_rotation - uniform.right_rotation));
   }
 } // namespace
-
