@@ -16,9 +16,12 @@ namespace FloorBlock
              std::getenv("PMIX_RANK") != nullptr;
     }
 
-    /** A private directory for the session, or "" if none could be made. */
+    /**
+     * A private directory for Open MPI's session directory, or "" if none
+     * could be made.
+     */
     std::string
-    make_private_session_directory()
+    make_private_temporary_directory()
     {
       std::error_code   ignored;
       const std::string pattern =
@@ -44,7 +47,7 @@ namespace FloorBlock
     constexpr const char *tmpdir_variable = "OMPI_MCA_orte_tmpdir_base";
     if (std::getenv(tmpdir_variable) != nullptr)
       return;
-    directory = make_private_session_directory();
+    directory = make_private_temporary_directory();
     if (!directory.empty())
       ::setenv(tmpdir_variable, directory.c_str(), /*overwrite=*/0);
   }

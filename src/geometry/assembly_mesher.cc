@@ -2,7 +2,7 @@
 #include <geometry/assembly_mesher.h>
 #include <geometry/body_outline.h>
 #include <geometry/gmsh_geometry.h>
-#include <geometry/gmsh_session.h>
+#include <geometry/gmsh_scope.h>
 
 #include <gmsh.h>
 
@@ -206,7 +206,7 @@ namespace FloorBlock::Geometry
     // Gmsh reports some failures by throwing a plain std::string.
     try
       {
-        GmshSession session;
+        GmshScope gmsh_scope;
         gmsh::model::add("floorblock_assembly");
         const GmshAssembly assembly = build_gmsh_geometry(outline);
         set_size_field(outline, description, local_sizes);
@@ -242,7 +242,7 @@ namespace FloorBlock::Geometry
   {
     validate(description);
     const AssemblyOutline outline = build_outline(description);
-    GmshSession           session;
+    GmshScope             gmsh_scope;
     gmsh::model::add("floorblock_areas");
     const GmshAssembly  assembly = build_gmsh_geometry(outline);
     std::vector<double> areas;

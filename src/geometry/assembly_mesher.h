@@ -54,7 +54,7 @@ namespace FloorBlock::Geometry
   /**
    * @brief Area of every body as OpenCASCADE integrates it on the exact
    * CAD geometry (no mesh), in outline order: blocks 1..n, face block,
-   * base. Units: m^2. Opens its own GmshSession.
+   * base. Units: m^2. Opens its own GmshScope.
    */
   std::vector<double>
   cad_body_areas(const AssemblyDescription &description);

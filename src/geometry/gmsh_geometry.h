@@ -26,7 +26,7 @@ namespace FloorBlock::Geometry
    * lexicographically smaller end), so the two sides of a joint are the
    * same parametrised curve and mesh identically.
    *
-   * Pre-condition: a GmshSession is open and a model is current.
+   * Pre-condition: a GmshScope is open and a model is current.
    * A 3D scene would extrude these surfaces by the support width b
    * (gmsh::model::occ::extrude) and map curve groups to surface groups.
    */

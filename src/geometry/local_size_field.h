@@ -74,7 +74,7 @@ namespace FloorBlock::Geometry
    * @p largest_size (the far size: beyond it the request has no effect),
    * then the Min of all classes.
    *
-   * Pre-condition: a GmshSession with the current model is open; the points
+   * Pre-condition: a GmshScope with the current model is open; the points
    * become OCC points that belong to no surface and no physical group.
    * @return The tag of the Min field, or -1 if @p local_sizes is empty.
    */

@@ -99,7 +99,7 @@ namespace FloorBlock::Parameters
       "default lets the exact law on the default scene reach 1 %: level "
       "5's check meets it after about 610 s on a 2-core machine, and "
       "level 6's check, the next candidate, is forecast at about 1200 s "
-      "(README, session 21). Units: s.");
+      "(results/FINDINGS.md). Units: s.");
     prm.declare_entry(
       "Slice size",
       "0.25",

@@ -1,5 +1,5 @@
 // The Open MPI environment of a process that starts MPI by itself: its
-// private session directory and start-up settings (see
+// private environment directory and start-up settings (see
 // common/singleton_mpi_environment.h).
 
 #include <common/singleton_mpi_environment.h>
@@ -51,15 +51,16 @@ namespace
   };
 } // namespace
 
-// The tool shall give a process that starts MPI by itself a session
-// directory of its own, and remove it when done.
+// The tool shall give a process that starts MPI by itself a temporary
+// directory of its own for Open MPI's environment directory, and remove it
+// when done.
 TEST_F(SingletonMpiEnvironmentTest,
        SingletonGetsAPrivateDirectoryRemovedAtTheEnd)
 {
   std::string path;
   {
-    const SingletonMpiEnvironment session;
-    path = session.path();
+    const SingletonMpiEnvironment environment;
+    path = environment.path();
     ASSERT_FALSE(path.empty());
     EXPECT_TRUE(std::filesystem::is_directory(path));
     ASSERT_NE(std::getenv(tmpdir_variable), nullptr);
@@ -77,15 +78,15 @@ TEST_F(SingletonMpiEnvironmentTest, LauncherAndUserSettingAreLeftAlone)
 {
   ::setenv("OMPI_COMM_WORLD_SIZE", "2", 1);
   {
-    const SingletonMpiEnvironment session;
-    EXPECT_TRUE(session.path().empty());
+    const SingletonMpiEnvironment environment;
+    EXPECT_TRUE(environment.path().empty());
     EXPECT_EQ(std::getenv(tmpdir_variable), nullptr);
   }
   ::unsetenv("OMPI_COMM_WORLD_SIZE");
   ::setenv(tmpdir_variable, "/somewhere/of/the/user", 1);
   {
-    const SingletonMpiEnvironment session;
-    EXPECT_TRUE(session.path().empty());
+    const SingletonMpiEnvironment environment;
+    EXPECT_TRUE(environment.path().empty());
     EXPECT_EQ(std::string(std::getenv(tmpdir_variable)),
               "/somewhere/of/the/user");
   }

@@ -55,11 +55,11 @@ namespace FloorBlock::Geometry
 {
   // A sweep meshes many scenes in one process: a scene's mesh must not
   // depend on what was meshed before it (Gmsh keeps global state between
-  // sessions), or a sweep's results depend on the order of its cases.
+  // scopes), or a sweep's results depend on the order of its cases.
   TEST(Mesher, SameSceneMeshesIdenticallyAfterOtherScenes)
   {
     // The mesh without the $Periodic section: Gmsh lists the periodic node
-    // pairs in a different order from one session to the next (measured),
+    // pairs in a different order from one GmshScope to the next (measured),
     // and deal.II does not read them; nodes and elements must be identical.
     const auto read = [](const std::string &path) {
       std::ifstream file(path);

@@ -1,7 +1,7 @@
 #include <common/input_error.h>
 #include <geometry/assembly_description.h>
 #include <geometry/assembly_mesher.h>
-#include <geometry/gmsh_session.h>
+#include <geometry/gmsh_scope.h>
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,7 @@ namespace FloorBlock::Geometry
       std::filesystem::remove(path);
       EXPECT_THROW(write_gmsh_mesh(description, path), InputError);
       EXPECT_FALSE(std::filesystem::exists(path));
-      EXPECT_FALSE(GmshSession::is_open());
+      EXPECT_FALSE(GmshScope::is_open());
     }
 
     constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();

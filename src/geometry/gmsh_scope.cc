@@ -1,4 +1,4 @@
-#include <geometry/gmsh_session.h>
+#include <geometry/gmsh_scope.h>
 
 #include <gmsh.h>
 
@@ -8,29 +8,30 @@ namespace FloorBlock::Geometry
 {
   namespace
   {
-    bool session_open = false;
+    bool gmsh_initialized = false;
   }
 
-  GmshSession::GmshSession(const bool verbose)
+  GmshScope::GmshScope(const bool verbose)
   {
-    if (session_open)
-      throw std::logic_error("a Gmsh session is already open");
+    if (gmsh_initialized)
+      throw std::logic_error(
+        "Gmsh is already initialised by another GmshScope");
     // readConfigFiles = false: a user's ~/.gmshrc must not change our meshes.
     gmsh::initialize(0, nullptr, false);
-    session_open = true;
+    gmsh_initialized = true;
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 0);
   }
 
-  GmshSession::~GmshSession()
+  GmshScope::~GmshScope()
   {
     gmsh::finalize();
-    session_open = false;
+    gmsh_initialized = false;
   }
 
   bool
-  GmshSession::is_open()
+  GmshScope::is_open()
   {
-    return session_open;
+    return gmsh_initialized;
   }
 } // namespace FloorBlock::Geometry

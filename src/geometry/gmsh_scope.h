@@ -6,24 +6,24 @@ namespace FloorBlock::Geometry
    * @brief RAII owner of the Gmsh library state: initialises Gmsh on
    * construction and finalises it on destruction, silent unless asked.
    *
-   * Gmsh is a process-wide singleton, so only one session may be open at a
+   * Gmsh is a process-wide singleton, so only one scope may be open at a
    * time; opening a second one throws std::logic_error. deal.II's
    * GridIn::read_msh(filename) initialises and finalises Gmsh by itself and
-   * must therefore be called with no session open.
+   * must therefore be called with no scope open.
    */
-  class GmshSession
+  class GmshScope
   {
   public:
     /** @param[in] verbose Let Gmsh print to the terminal (General.Terminal =
      * 1). */
-    explicit GmshSession(const bool verbose = false);
-    ~GmshSession();
+    explicit GmshScope(const bool verbose = false);
+    ~GmshScope();
 
-    GmshSession(const GmshSession &) = delete;
-    GmshSession &
-    operator=(const GmshSession &) = delete;
+    GmshScope(const GmshScope &) = delete;
+    GmshScope &
+    operator=(const GmshScope &) = delete;
 
-    /** @brief Whether a session is open in this process. */
+    /** @brief Whether a scope is open in this process. */
     static bool
     is_open();
   };
