@@ -19,7 +19,7 @@ namespace FloorBlock::App
                        std::to_string(scene.geometry.dimension),
                        "must be 2 for `" + command +
                          "`: so far only `floorblock solve` solves 3D "
-                         "scenes (issue 16); `floorblock mesh` builds the 3D "
+                         "scenes; `floorblock mesh` builds the 3D "
                          "mesh");
   }
 

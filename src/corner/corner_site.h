@@ -10,7 +10,7 @@ namespace FloorBlock::Corner
   /**
    * @brief The floor-level (top) corner of a vertical joint in the
    * reference geometry: where the two blocks' top corners meet and the
-   * corner stress concentrates (issue 15).
+   * corner stress concentrates.
    */
   struct CornerSite
   {

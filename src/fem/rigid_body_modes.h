@@ -18,7 +18,7 @@ namespace FloorBlock::Fem
    * on the 3D plane-strain scene refined from 10.5k to 471k DoFs the first
    * twelve solves to 1e-8 took 45-129 and 49-141 GMRES iterations with
    * translations and a V-cycle, and 31-105 at 471k DoFs with these modes
-   * and a W-cycle (tests/benchmark/RESULTS.md).
+   * and a W-cycle.
    *
    * @param[in] space FE space of dim components (FE_Q^dim).
    * @return dim (dim + 1) / 2 modes over the locally owned unknowns,

@@ -15,7 +15,7 @@ namespace FloorBlock::Fem
    * strain linear elasticity has a constant stiffness and loads linear in
    * the load factors, so a Newton iteration needs one matrix copy and one
    * matrix-vector product instead of a cell loop (0.2 ms against 4 ms on
-   * the default mesh, tests/benchmark/RESULTS.md).
+   * the default mesh).
    *
    * Built by assemble_elastic_system, the single cell loop, so it agrees
    * with a fresh assembly to round-off (unit test StoredElasticSystem.*).

@@ -49,8 +49,7 @@ namespace FloorBlock::Parameters
       "0.02",
       Double(1e-4, 0.5),
       "Relative change of the corner intensity K1 between the last two "
-      "zoom levels at or below which it counts as converged (issue 15 "
-      "asks for 2 %); the zoom stops when the peak and K1 have converged "
+      "zoom levels at or below which it counts as converged; the zoom stops when the peak and K1 have converged "
       "and the fit range spans a decade. Units: none (1 = 100 %).");
     prm.declare_entry(
       "Rounding radii",

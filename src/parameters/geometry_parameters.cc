@@ -69,7 +69,7 @@ namespace FloorBlock::Parameters
                       dealii::Patterns::Selection("2|3"),
                       "2: plane strain, per metre of face. 3: the 2D "
                       "assembly extruded along the face over Face length "
-                      "(issue 16; src/geometry/extruded_assembly.h): `mesh` "
+                      "(src/geometry/extruded_assembly.h): `mesh` "
                       "builds it (meshes/<scene>_3d.msh) and `solve` solves "
                       "it on one process, reporting forces per metre of "
                       "face; run, converge and sweep --fem refuse it. "

@@ -81,7 +81,7 @@ namespace FloorBlock::Parameters
       "are reported with their estimate but do not refine the mesh. The "
       "peaks are not targets by default: with exact contact the pointwise "
       "peak at a corner has no mesh limit, and the averaged one depends on "
-      "Solver/Averaging length (issue 15's corner analysis). Units: none.");
+      "Solver/Averaging length (see `floorblock corner`). Units: none.");
     prm.declare_entry(
       "Maximum refinement levels",
       "6",

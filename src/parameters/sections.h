@@ -294,7 +294,7 @@ namespace FloorBlock::Parameters
            const LoadingParameters &loading);
   };
 
-  /** Subsection "Corner": the `corner` command's analysis (issue 15). */
+  /** Subsection "Corner": the `corner` command's analysis. */
   struct CornerParameters
   {
     /** Vertical joint whose floor-level corner is analysed (1..n). */

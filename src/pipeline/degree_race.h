@@ -43,10 +43,10 @@ namespace FloorBlock::Pipeline
    * be over after that step); otherwise the loop with less time spent (a
    * tie goes to degree 1), so neither gets more than one step ahead of
    * the other. The race is over when one meets the target or both have
-   * stopped. Measured (session 22, exact law on the default scene): with
-   * time alone deciding, degree 1's level 5's check met and was waiting
-   * for its confirming level while degree 2 began a 880k-DoF check; the
-   * confirmation comes first now.
+   * stopped. With time alone deciding, a loop whose check met could wait
+   * for its confirming level behind the other degree's far larger check
+   * (on the exact law's default scene, degree 1's level 5 behind an
+   * 880k-DoF degree-2 check); confirming first avoids that.
    */
   RaceTurn
   next_race_turn(const RacerState &degree_1, const RacerState &degree_2);

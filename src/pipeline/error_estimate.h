@@ -30,7 +30,7 @@ namespace FloorBlock::Pipeline
    * figure's error becomes at least the range of the three values
    * (FigureError::oscillating; the method says so when it widened one).
    *
-   * Measured (README, "Exact contact on the default scene"): the exact law
+   * Measured (results/FINDINGS.md, section 7): the exact law
    * at vertical friction 60 deg, levels 2 and 3 and level 3's check gave
    * 190.54, 190.37, 190.38 mm; the pair's estimate (+- 0.046 mm) missed
    * the converged 190.41-190.45 mm, the range (0.17 mm) brackets it.
@@ -50,7 +50,7 @@ namespace FloorBlock::Pipeline
    *
    * A level and its check can agree while both are far off; a third,
    * differently refined mesh shows it (Roache's three grids). Measured
-   * (README, "Accuracy against cost"): the exact law on the default scene
+   * (results/FINDINGS.md, section 11): the exact law on the default scene
    * with FE degree 2, level 0 and its check gave 97.47 and 97.50 mm, a
    * bracket of +- 0.30 % that misses the converged 98.42 mm; level 1
    * (98.04 mm) lies outside it. The distance is a lower bound of the
@@ -102,7 +102,7 @@ namespace FloorBlock::Pipeline
    * Its error is half the coarse one's, so the loop reports the refined
    * solve when the coarse one's estimate misses the target
    * (solve_to_target()): the exact law on the default scene needs it
-   * (README, "Exact contact on the default scene", session 21).
+   * (results/FINDINGS.md, section 7).
    */
   constexpr double refined_error_from_refined_difference = 3.;
 

@@ -42,7 +42,7 @@ namespace FloorBlock::Solver
    * factors of an earlier matrix are then an almost exact preconditioner,
    * and right-preconditioned GMRES converges in a few iterations, each a
    * pair of triangular solves (0.5 ms on the default mesh) instead of a
-   * numeric factorisation (14 ms, tests/benchmark/RESULTS.md). When GMRES
+   * numeric factorisation (14 ms). When GMRES
    * does not reach the tolerance within LinearSolverSettings::
    * max_reuse_iterations the matrix is factorised afresh (symbolic
    * analysis reused: the pattern never changes) and solved with the new

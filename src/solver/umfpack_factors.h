@@ -17,7 +17,7 @@ namespace FloorBlock::Solver
    * UMFPACK is multifrontal and uses BLAS 3, so with OpenBLAS its numeric
    * factorisation grows as DoFs^1.3 against KLU's DoFs^1.9 on the floor
    * scenes (3 times faster at 57k DoFs, slower below about 10k;
-   * tests/benchmark/RESULTS.md). The symbolic analysis is kept while the
+   * results/FINDINGS.md, section 11). The symbolic analysis is kept while the
    * pattern stays the same.
    */
   class UmfpackFactors

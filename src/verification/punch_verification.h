@@ -5,7 +5,7 @@
 
 namespace FloorBlock::Verification
 {
-  /** @brief Settings of the punch verification (issue 15). */
+  /** @brief Settings of the punch verification. */
   struct PunchSettings
   {
     double pressure = 2e6; ///< on the block top (Pa)
@@ -20,7 +20,7 @@ namespace FloorBlock::Verification
 
   /**
    * Largest accepted |fitted - theory| of the corner exponent lambda
-   * (issue 15: 0.03).
+   * (0.03).
    */
   constexpr double punch_exponent_tolerance = 0.03;
 

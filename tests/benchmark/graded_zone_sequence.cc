@@ -1,6 +1,5 @@
 // Which refinement converges the face joint's contact length under the
-// exact (rigid) joint law (issue 14, README "Exact contact on the default
-// scene"). A measurement program, not a test: CTest never runs it.
+// exact (rigid) joint law (results/FINDINGS.md, section 7). A measurement program, not a test: CTest never runs it.
 //
 // From the scene's level-0 mesh (Pipeline::AdaptiveLevels, as `run`), each
 // step refines toward size requests that are halved from step to step

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Strong and weak scaling of the distributed 3D solve (issue 16): not a
-# test (CTest never runs it); its numbers and their reading are in
-# RESULTS.md. Run from the repository root after a Release build:
+# Strong and weak scaling of the distributed 3D solve: not a test (CTest
+# never runs it); its numbers and their reading are in results/FINDINGS.md,
+# section 10. Run from the repository root after a Release build:
 #
 #   tests/benchmark/mpi_scaling.sh [scene.prm] [--set 'Subsection/Entry=value' ...]
 #

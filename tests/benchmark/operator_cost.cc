@@ -1,8 +1,8 @@
 // Cost of one application of the 3D elasticity operator per unknown, as the
 // mesh grows out of the caches: the assembled matrix (Epetra, what GMRES and
 // ML's fine level multiply by today) against deal.II's matrix-free operator
-// (proposed for issue 16 as a fine level whose cost per unknown does not
-// grow; RESULTS.md has what this program measured of that). A measurement
+// (a fine level whose cost per unknown does not grow; results/FINDINGS.md,
+// section 11, has what this program measures). A measurement
 // program, not a test: CTest never runs it.
 //
 // The mesh is a box of hexahedra with a smooth interior distortion, so that

@@ -631,7 +631,7 @@ TEST(HardCases, RigidJointLaw)
 
   // Q is set by friction, not by the joint stiffness: the compliant law
   // (kn = 9 GPa/m) gives nearly the same face Q. Measured -2.2 % on this
-  // 0.1 m mesh (-0.4 % on the default scene, HARD_CASES.md Table 2).
+  // 0.1 m mesh (-0.4 % on the default scene, results/FINDINGS.md, section 12).
   const std::string compliant = fresh_output_folder("hard_rigid_compliant");
   const auto        result =
     run_floorblock("solve tests/scenarios/three_blocks.prm --output " +
@@ -645,13 +645,13 @@ TEST(HardCases, RigidJointLaw)
 
 // The tool shall not stop where only the exact law's complementarity
 // parameter makes the semi-smooth Newton cycle: that parameter changes the
-// iterates, never the answer. Measured before the retry with a tenth of it:
-// the three-block scene at the factor 100 failed in the gravity stage after
-// all cutbacks (every start cycling or over the iteration limit), at 10 it
-// converges; the default scene at vertical friction 80 deg failed the same
+// iterates, never the answer. Without the retry with a tenth of it, the
+// three-block scene at the factor 100 fails in the gravity stage after all
+// cutbacks (every start cycling or over the iteration limit), and at 10 it
+// converges; the default scene at vertical friction 80 deg fails the same
 // way at the default 0.1 and converges at 0.01. A rescued state keeps the
-// smaller parameter: restoring it after each rescue (the first version)
-// failed this scene in its uplift stage on one machine (session 19).
+// smaller parameter: restoring it after each rescue can fail this scene in
+// its uplift stage.
 TEST(HardCases, RigidLawRetriesWithASmallerComplementarityParameter)
 {
   const std::string scene =
@@ -669,8 +669,7 @@ TEST(HardCases, RigidLawRetriesWithASmallerComplementarityParameter)
   ASSERT_EQ(reference.exit_code, 0) << reference.output;
 
   // The same converged state: every joint force to 1e-8 of the largest
-  // (measured: joints.csv of the two runs equal to its printed digits,
-  // session 19; 2.5e-13 with the first version of the retry).
+  // (the two runs' joints.csv agree to its printed digits).
   auto a = joints_by_name(read_json(cycling + "/fem.json"));
   auto b = joints_by_name(read_json(usual + "/fem.json"));
 

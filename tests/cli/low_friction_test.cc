@@ -34,8 +34,8 @@ TEST(LowFriction, RigidJointsMatchNoRotationClosedFormAtTheFace)
   const double q_fem = (*face)["Q_fem_N_per_m"].get<double>();
   const double q_closed =
     (*face)["Q_closed_form"]["no_rotation"]["Q_N_per_m"].get<double>();
-  // The criterion: within 10 % at phi = 10 deg. Measured 2026-11-21:
-  // -2 % at the default mesh, see README "FEM against the closed forms".
+  // Within 10 % at phi = 10 deg: -2 % at the default mesh
+  // (results/FINDINGS.md, section 4).
   EXPECT_NEAR(q_fem / q_closed, 1., 0.10)
     << "FEM " << q_fem << " N/m, closed form " << q_closed << " N/m";
 }

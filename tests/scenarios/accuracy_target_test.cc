@@ -19,7 +19,7 @@ using nlohmann::json;
 // joint (three_blocks_converged_face). With Solver/FE degree = auto (the
 // default) degree 1's level 0 misses (2.5 %), degree 2 joins, and its
 // level 0's check meets, confirmed by its level 1, after about 5 s of its
-// solves; degree 1 alone needs 7 levels and about 40 s (session 22).
+// solves; degree 1 alone needs 7 levels and about 40 s.
 TEST(AccuracyTarget, ThreeBlocksMeetOnePercentWithAnEstimateThatBrackets)
 {
   const std::string folder = fresh_output_folder("accuracy_three_blocks");

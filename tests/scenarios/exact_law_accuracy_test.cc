@@ -1,11 +1,11 @@
-// Issue 14, item 4: the exact (rigid) law on the default scene reaches the
+// The exact (rigid) law on the default scene reaches the
 // 1 % target, and its printed estimate brackets the converged face contact
 // length. A long test (about 10 minutes on 2 cores; label "long"), built
 // only with -DFLOORBLOCK_LONG_TESTS=ON and never by the README's test
 // command: `ctest --test-dir build -L long`.
 //
-// The converged lengths are measured, not assumed (README, "Exact contact
-// on the default scene"): at 30 deg 98.42 mm +- 0.03 mm (nested uniform
+// The converged lengths are measured, not assumed (results/FINDINGS.md,
+// section 7): at 30 deg 98.42 mm +- 0.03 mm (nested uniform
 // ladder on a zone-graded mesh to 2.07 M DoFs, 98.4112 and 98.4163 mm on
 // its last two levels; a degree-2 box at 1.08 M DoFs gave 98.44 mm); at
 // vertical friction 60 deg the Richardson limits of two such ladders,
@@ -54,7 +54,7 @@ namespace
   }
 } // namespace
 
-// Measured (session 21): level 5's check, 98.18 mm +- 0.99 % (374,436
+// Level 5's check, 98.18 mm +- 0.99 % (374,436
 // DoFs), after about 610 s on an idle 2-core machine.
 TEST(ExactLawAccuracy, DefaultSceneMeetsOnePercentAndBracketsTheConvergedLength)
 {
@@ -63,7 +63,7 @@ TEST(ExactLawAccuracy, DefaultSceneMeetsOnePercentAndBracketsTheConvergedLength)
                   0.09845);
 }
 
-// Measured (session 21): level 3, 190.37 mm; its check agreed to
+// Level 3, 190.37 mm; its check agreed to
 // 0.005 mm, and the estimate is the range of levels 2, 3 and the check
 // (0.16 mm), as the check reversed the change from level 2.
 TEST(ExactLawAccuracy, VerticalFrictionSixtyBracketsTheRichardsonLimits)

@@ -31,7 +31,7 @@ namespace
     return outcome;
   }
 
-  // The exact law's default scene, session 21: level 4 and its check.
+  // The exact law's default scene: level 4 and its check.
   const Pipeline::FemOutcome coarse = solve_with_face(0.0978575, 7e-5, 2.7e6);
   const Pipeline::FemOutcome fine   = solve_with_face(0.0981692, 2e-5, 2.701e6);
 } // namespace
@@ -92,7 +92,7 @@ TEST(RefinedSolveError, UnconvergedRefinedSolveGivesNoEstimate)
     }
 }
 
-// The exact law at vertical friction 60 deg (session 21): levels 2 and 3
+// The exact law at vertical friction 60 deg: levels 2 and 3
 // and level 3's check gave 190.54, 190.37 and 190.38 mm. The check moved
 // the length opposite to the step from level 2, so the pair's agreement is
 // no evidence: the tool shall widen both estimates to the range of the
@@ -154,7 +154,7 @@ TEST(WidenWhereOscillating, MonotoneOrNarrowRangeLeavesTheEstimate)
 
 // The tool shall widen an estimate whose next adaptive level lies outside
 // its bracket to the distance to that level (the exact law with FE degree
-// 2 on the default scene, session 22: level 0 97.468 mm, its check 97.499
+// 2 on the default scene: level 0 97.468 mm, its check 97.499
 // mm, level 1 98.04 mm; converged 98.42 mm), and record the level's value.
 TEST(WidenToContain, NextLevelOutsideTheBracketWidensIt)
 {
@@ -179,7 +179,7 @@ TEST(WidenToContain, NextLevelOutsideTheBracketWidensIt)
 }
 
 // The tool shall leave an estimate whose next level lies inside every
-// bracket as it is (the default compliant scene, session 22: level 0
+// bracket as it is (the default compliant scene: level 0
 // 347.07 mm +- 1.18 mm, level 1 347.20 mm).
 TEST(WidenToContain, NextLevelInsideLeavesTheEstimate)
 {
