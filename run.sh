@@ -4,7 +4,7 @@
 # Default scene: params/default.prm. Results go to results/<scene>/.
 set -euo pipefail
 cd "$(dirname "$0")"
-.ci/setup.sh
+.ci/setup.sh floorblock
 scene=params/default.prm
 if [ $# -gt 0 ] && [[ "$1" != --* ]]; then
   scene=$1

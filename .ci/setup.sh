@@ -3,11 +3,14 @@
 # missing (non-interactively, as root), then configures and builds Release
 # into build/. Safe to call repeatedly: it installs and rebuilds only what is
 # missing or stale.
+#
+#   .ci/setup.sh              everything (the program and every test)
+#   .ci/setup.sh floorblock   the given targets only (./run.sh: the program)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  g++ make cmake ccache
+  g++ cmake ninja-build ccache
   libdeal.ii-dev libgmsh-dev gmsh
   libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev gnuplot-nox
@@ -34,6 +37,11 @@ fi
 export CCACHE_BASEDIR="$PWD"
 export CCACHE_NOHASHDIR=1
 
-jobs=$(nproc)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$jobs" -- --no-print-directory
+# Ninja for a new build folder; an existing one keeps the generator it was
+# configured with.
+generator=()
+[ -f build/CMakeCache.txt ] || generator=(-G Ninja)
+cmake "${generator[@]}" -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+targets=()
+for target in "$@"; do targets+=(--target "$target"); done
+cmake --build build -j"$(nproc)" "${targets[@]}"
