@@ -36,4 +36,8 @@ namespace FloorBlock::Units
 
   constexpr double newtons_per_kilonewton = 1.0e3;
   constexpr double pascals_per_megapascal = 1.0e6;
+
+  /** Short names for output in kN and MPa: a value in N divided by kN. */
+  constexpr double kN  = newtons_per_kilonewton;
+  constexpr double MPa = pascals_per_megapascal;
 } // namespace FloorBlock::Units

@@ -127,10 +127,10 @@ namespace FloorBlock::Output
   std::string
   analytic_table(const Scene::ClosedForms &closed_forms)
   {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
-    const double     b   = closed_forms.support_width;
-    std::string      text;
+    using Units::kN;
+    using Units::MPa;
+    const double b = closed_forms.support_width;
+    std::string  text;
     for (const auto &entry : closed_forms.mechanisms)
       {
         const auto &forces = entry.forces;

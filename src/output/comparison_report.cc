@@ -14,8 +14,8 @@ namespace FloorBlock::Output
 
   namespace
   {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
+    using Units::kN;
+    using Units::MPa;
 
     /// (fem - reference)/reference, or null where it is undefined.
     json

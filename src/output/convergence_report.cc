@@ -1,4 +1,5 @@
 #include <output/convergence_report.h>
+#include <output/json_values.h>
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
@@ -62,19 +63,13 @@ namespace FloorBlock::Output
 
     /** CSV field in double quotes (status texts contain commas). */
     std::string
-    quoted(const std::string &text)
+    csv_field(const std::string &text)
     {
       std::string field = "\"";
       for (const char character : text)
         field +=
           character == '"' ? std::string("\"\"") : std::string(1, character);
       return field + "\"";
-    }
-
-    json
-    optional_json(const std::optional<double> &value)
-    {
-      return value ? json(*value) : json(nullptr);
     }
 
     json
@@ -192,7 +187,7 @@ namespace FloorBlock::Output
               csv += "," + number(errors.relative_errors.at(level));
               csv += "," + Convergence::method_name(errors.method);
             }
-          csv += "," + quoted(record.status_text) + "\n";
+          csv += "," + csv_field(record.status_text) + "\n";
         }
     return csv;
   }

@@ -1,4 +1,5 @@
 #include <output/fem_error_estimate.h>
+#include <output/json_values.h>
 
 #include <utility>
 
@@ -14,12 +15,6 @@ namespace FloorBlock::Output
 
   namespace
   {
-    json
-    optional_json(const std::optional<double> &value)
-    {
-      return value ? json(*value) : json(nullptr);
-    }
-
     json
     target_json(const AccuracyTarget &target)
     {

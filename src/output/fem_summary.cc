@@ -10,9 +10,9 @@ namespace FloorBlock::Output
                    const Contact::SolveResult     &result,
                    const Geometry::MeshStatistics &mesh)
   {
-    constexpr double kN     = Units::newtons_per_kilonewton;
-    constexpr double MPa    = Units::pascals_per_megapascal;
-    const bool       meshed = report.mesh.has_value();
+    using Units::kN;
+    using Units::MPa;
+    const bool meshed = report.mesh.has_value();
     // A failed solve keeps only its last converged increment (fem.json
     // "failure"): say so instead of passing it off as the whole run.
     const std::string increments =

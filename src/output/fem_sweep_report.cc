@@ -1,6 +1,7 @@
 #include <common/units.h>
 #include <output/fem_sweep_report.h>
 #include <output/gnuplot.h>
+#include <output/json_values.h>
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
@@ -16,8 +17,8 @@ namespace FloorBlock::Output
 
   namespace
   {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
+    using Units::kN;
+    using Units::MPa;
 
     /** The face joint of the last converged increment, if any. */
     const Contact::JointReport *
@@ -41,19 +42,6 @@ namespace FloorBlock::Output
     as_json(const double value)
     {
       return json(value).dump();
-    }
-
-    json
-    optional_json(const std::optional<double> &value)
-    {
-      return value ? json(*value) : json(nullptr);
-    }
-
-    std::optional<double>
-    optional_value(const json &value)
-    {
-      return value.is_null() ? std::nullopt :
-                               std::optional<double>(value.get<double>());
     }
 
     /// Degrees and tonnes as the user wrote them (30, not 29.999999999999996).

@@ -88,7 +88,7 @@ namespace FloorBlock::Output
     }
 
     std::string
-    quoted(const std::string &text)
+    gnuplot_string(const std::string &text)
     {
       std::string result = "'";
       for (const char character : text)
@@ -143,7 +143,7 @@ namespace FloorBlock::Output
         data += name + " << EOD\n" + points.str() + "EOD\n";
         plot << ", \\\n     " << name << " with points pt 7 ps 0.6 lc rgb '"
              << marker_colour(category, marker_index) << "' title "
-             << quoted(category);
+             << gnuplot_string(category);
         ++marker_index;
       }
     plot << '\n';
@@ -172,7 +172,7 @@ namespace FloorBlock::Output
 
     std::ostringstream script;
     script.precision(17);
-    script << "set title " << quoted(options.title) << '\n'
+    script << "set title " << gnuplot_string(options.title) << '\n'
            << (options.markers.empty() ? "unset key\n" :
                                          "set key outside right top\n")
            << "set size ratio -1\nset xlabel 'x (m)'\n"

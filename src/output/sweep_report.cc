@@ -12,8 +12,8 @@ namespace FloorBlock::Output
 {
   namespace
   {
-    constexpr double kN  = Units::newtons_per_kilonewton;
-    constexpr double MPa = Units::pascals_per_megapascal;
+    using Units::kN;
+    using Units::MPa;
 
     bool
     has_face_force(const Scene::MechanismResult &entry)

@@ -9,7 +9,9 @@
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace InclineModel
   {
     constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
                                          block_top  = 12;
@@ -45,11 +47,12 @@ namespace FloorBlock::Verification
       scene.steps                       = {1, 0, 0};
       return scene;
     }
-  } // namespace
+  } // namespace InclineModel
 
   InclineResult
   run_incline_verification(const InclineSettings &settings)
   {
+    using namespace InclineModel;
     dealii::Triangulation<2> mesh;
     make_block_assembly({{0.,
                           block_width,

@@ -14,7 +14,9 @@
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace PunchModel
   {
     constexpr dealii::types::material_id block = 1, base = 2;
     constexpr dealii::types::boundary_id block_axis = 11, block_side = 12,
@@ -87,12 +89,13 @@ namespace FloorBlock::Verification
         smallest = std::min(smallest, cell->diameter() / std::sqrt(2.));
       return smallest;
     }
-  } // namespace
+  } // namespace PunchModel
 
   PunchCase
   run_punch_case(const PunchSettings           &settings,
                  const Analytic::InterfaceState state)
   {
+    using namespace PunchModel;
     PunchCase result;
     result.state = state;
 

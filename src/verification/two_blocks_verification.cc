@@ -10,7 +10,9 @@
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace TwoBlocksModel
   {
     // Left block (fixed, like the face block), right block, base under it.
     constexpr dealii::types::boundary_id left_outer = 11, left_joint = 12,
@@ -30,11 +32,12 @@ namespace FloorBlock::Verification
     constexpr double density                 = 2500.; // kg/m^3
     constexpr double gravity_acceleration    = 9.81;  // m/s^2
     constexpr double vertical_friction_angle = Units::degrees_to_radians(30.);
-  } // namespace
+  } // namespace TwoBlocksModel
 
   TwoBlocksResult
   run_two_blocks_verification(const TwoBlocksSettings &settings)
   {
+    using namespace TwoBlocksModel;
     const unsigned int       n_x = settings.cells_per_metre;
     const unsigned int       n_y = 2 * settings.cells_per_metre;
     dealii::Triangulation<2> mesh;

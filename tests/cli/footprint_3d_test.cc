@@ -40,17 +40,13 @@ namespace
    */
   constexpr double same_problem_tolerance = 1e-12;
 
-  /** A coarse cross-section: 3.5k DoFs per cross-section. */
-  const std::string coarse_mesh =
-    " --set 'Mesh/Cells per contact length=2' --set 'Mesh/Corner size=0.1'"
-    " --set 'Mesh/Far size=0.5'";
 
   /**
    * params/footprint_3d.prm shrunk: a 0.5 m footprint centred on 1.5 m of
    * face, three 0.5 m slices (four cross-sections, 14k DoFs, a few s).
    */
   const std::string short_footprint_scene =
-    "solve params/footprint_3d.prm" + coarse_mesh +
+    "solve params/footprint_3d.prm" + coarse_3d_mesh +
     " --set 'Geometry/Face length=1.5' --set 'Loading/Footprint length=0.5'";
 
   nlohmann::json
@@ -125,7 +121,7 @@ TEST(Footprint3d, CentredFootprintIsSymmetricAlongTheFace)
 // the same joint figures to round-off and the same applied load.
 TEST(Footprint3d, WholeFaceFootprintIsTheUniformLoad)
 {
-  const std::string scene = "solve params/plane_strain_3d.prm" + coarse_mesh +
+  const std::string scene = "solve params/plane_strain_3d.prm" + coarse_3d_mesh +
                             " --set 'Geometry/Support width=0.5'";
   const auto uniform = solved(scene, "footprint_uniform");
   const auto whole   = solved(scene + " --set 'Loading/Footprint length=0.5'",

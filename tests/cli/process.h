@@ -8,6 +8,14 @@
 
 namespace FloorBlockTest
 {
+  /**
+   * A coarse mesh for the 3D scenes: about 3.5k DoFs per cross-section,
+   * 10.5k in 3D on params/plane_strain_3d.prm, a few seconds a solve.
+   */
+  inline const std::string coarse_3d_mesh =
+    " --set 'Mesh/Cells per contact length=2' --set 'Mesh/Corner size=0.1'"
+    " --set 'Mesh/Far size=0.5'";
+
   /** What a finished floorblock process left behind. */
   struct ProcessResult
   {

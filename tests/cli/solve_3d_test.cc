@@ -26,10 +26,6 @@ namespace
    */
   constexpr double plane_strain_tolerance = 1e-8;
 
-  /** A coarse mesh of the scene: 10.5k DoFs in 3D, a few seconds. */
-  const std::string coarse_mesh =
-    " --set 'Mesh/Cells per contact length=2' --set 'Mesh/Corner size=0.1'"
-    " --set 'Mesh/Far size=0.5'";
 
   /** Face length of params/plane_strain_3d.prm (m). */
   constexpr double face_length = 0.5;
@@ -147,11 +143,11 @@ TEST(Solve3d, FreeEndFacesAreNotPlaneStrain)
 {
   const auto face_3d =
     solve_plane_strain_scene("solve_free_ends_3d",
-                             " --set 'Geometry/End faces=free'" + coarse_mesh)
+                             " --set 'Geometry/End faces=free'" + coarse_3d_mesh)
       .fem.at("joints")[5];
   const auto face_2d =
     solve_plane_strain_scene("solve_free_ends_2d",
-                             " --set 'Geometry/Dimension=2'" + coarse_mesh)
+                             " --set 'Geometry/Dimension=2'" + coarse_3d_mesh)
       .fem.at("joints")[5];
   EXPECT_GT(std::abs(face_3d.at("contact_length_m").get<double>() -
                      face_2d.at("contact_length_m").get<double>()),
@@ -170,7 +166,7 @@ TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
 {
   const auto solved =
     solve_plane_strain_scene("solve_contact_area_3d",
-                             " --set 'Geometry/End faces=free'" + coarse_mesh);
+                             " --set 'Geometry/End faces=free'" + coarse_3d_mesh);
   ASSERT_FALSE(solved.fem.empty());
   const std::string &folder = solved.folder;
   EXPECT_GT(std::filesystem::file_size(folder + "/face_contact_area.png"),
@@ -219,7 +215,7 @@ TEST(Solve3d, FaceContactAreaTableAddsUpToTheSectionContactLengths)
 TEST(Solve3d, ExactLawPlaneStrainGivesTheTwoDimensionalAnswer)
 {
   const std::string exact =
-    coarse_mesh + " --set 'Joints/Law=rigid' --set 'Mesh/Global refinements=0'";
+    coarse_3d_mesh + " --set 'Joints/Law=rigid' --set 'Mesh/Global refinements=0'";
   const auto fem_3d = solve_plane_strain_scene("solve_exact_3d", exact).fem;
   const auto fem_2d =
     solve_plane_strain_scene("solve_exact_2d",
@@ -248,11 +244,11 @@ TEST(Solve3d, IterativeSolverGivesTheDirectAnswer)
   const auto fem_3d =
     solve_plane_strain_scene("solve_iterative_3d",
                              " --set 'Solver/Linear solver=iterative'" +
-                               coarse_mesh)
+                               coarse_3d_mesh)
       .fem;
   const auto fem_2d =
     solve_plane_strain_scene("solve_iterative_2d",
-                             " --set 'Geometry/Dimension=2'" + coarse_mesh +
+                             " --set 'Geometry/Dimension=2'" + coarse_3d_mesh +
                                " --set 'Solver/Linear solver=direct'")
       .fem;
   ASSERT_EQ(fem_3d.at("status"), "converged");
