@@ -77,10 +77,8 @@ namespace FloorBlock::App
                              seconds_left,
                              progress);
 
-    nlohmann::json report = Corner::corner_json(scene, analysis, rounding);
-    report["wall_time_s"] = clock.wall_time();
-    folder.write_json("corner.json", report);
-    Corner::write_corner_tables_and_plots(folder, analysis, rounding);
+    Corner::write_corner_report(
+      folder, scene, analysis, rounding, clock.wall_time());
     folder.write_summary({{"command", "corner"},
                           {"converged", analysis.converged},
                           {"wall_time_s", clock.wall_time()}});

@@ -51,6 +51,125 @@ namespace FloorBlock::Corner
         }
       return best;
     }
+
+    /** The rock and joint of @p scene as the corner theory needs them. */
+    CornerMaterials
+    corner_materials(const Parameters::ScenarioParameters &scene)
+    {
+      CornerMaterials materials;
+      materials.rock = {scene.material.shear_modulus,
+                        scene.material.poissons_ratio()};
+      materials.friction_coefficient =
+        std::tan(scene.joints.vertical_friction_angle);
+      materials.exact_contact =
+        scene.joints.law == Contact::JointLawKind::rigid;
+      materials.compliant_length =
+        scene.material.youngs_modulus() / scene.joints.normal_stiffness;
+      return materials;
+    }
+
+    /**
+     * K1, its change and the fitted exponent of the newest level against
+     * the one before, over the newest level's converged range; the span of
+     * that range (to / from), 0 if it has no samples.
+     */
+    double
+    fit_newest_level(const double tolerance, CornerAnalysis &analysis)
+    {
+      const std::size_t   level  = analysis.levels.size() - 1;
+      const ZoomLevel    &record = analysis.levels[level];
+      const DistanceRange range  = fit_range(record.profile,
+                                            analysis.levels[level - 1].profile,
+                                            tolerance);
+      if (range.n_samples == 0)
+        return 0.;
+      const auto now =
+        theory_intensities(samples_within(record.profile.samples, range),
+                           analysis.theory);
+      const auto before = theory_intensities(
+        samples_within(analysis.levels[level - 1].profile.samples, range),
+        analysis.theory);
+      LevelFigures &figures    = analysis.figures.back();
+      figures.intensity        = now;
+      figures.intensity_change = relative_change(now.first, before.first);
+      figures.exponent =
+        fit_corner(record.profile.samples, range, analysis.theory)
+          .expansion.lambda1;
+      return range.to / range.from;
+    }
+
+    /** The fit and the invariant's fit on the last two levels, and the
+     * averaging length that matches the closed form's peak. */
+    void
+    fit_last_levels(const double tolerance, CornerAnalysis &analysis)
+    {
+      const std::size_t n = analysis.levels.size();
+      if (n >= 2 && analysis.theory.covered)
+        {
+          const ZoomLevel &last   = analysis.levels[n - 1];
+          const ZoomLevel &before = analysis.levels[n - 2];
+          analysis.fit =
+            fit_corner(last.profile.samples,
+                       fit_range(last.profile, before.profile, tolerance),
+                       analysis.theory);
+          // The invariant over its own converged range.
+          analysis.invariant_range =
+            converged_range(last.invariant_samples,
+                            before.invariant_samples,
+                            tolerance,
+                            fit_from_spacings * last.profile.edge_spacing,
+                            invariant_to_peak_fraction *
+                              last.profile.peak_distance);
+          analysis.invariant_fit = fit_invariant(last.invariant_samples,
+                                                 analysis.invariant_range,
+                                                 analysis.theory);
+        }
+      if (n >= 1)
+        {
+          analysis.closed_form_peak = analysis.levels.back().closed_form_peak;
+          analysis.matching_averaging_length =
+            averaging_length_for(analysis.levels.back().profile.samples,
+                                 analysis.closed_form_peak);
+        }
+    }
+
+    /** Why no further zoom level is solved, or "" if one is. */
+    std::string
+    reason_not_to_zoom(const unsigned int             level,
+                       const CornerZoom              &zoom,
+                       const CornerAnalysis          &analysis,
+                       const std::function<double()> &seconds_left)
+    {
+      if (level > 0 && !zoom.can_refine())
+        return "the smallest zoom cell (3e-7 of the block side) is reached";
+      if (level > 0 && !analysis.levels.empty() &&
+          seconds_left() < 2. * analysis.levels.back().wall_time)
+        return "time budget (Corner/Time budget) spent";
+      return "";
+    }
+
+    /** The progress line of zoom level @p level, with the change of K1
+     * the convergence test used (1 where there is no fit, 0 on level 0). */
+    std::string
+    level_line(const unsigned int    level,
+               const double          intensity_change,
+               const CornerAnalysis &analysis)
+    {
+      const ZoomLevel    &record  = analysis.levels[level];
+      const LevelFigures &figures = analysis.figures[level];
+      return fmt::format(
+        "level {:2d}: {:6d} DoFs, cells {:.2e} m, {}, peak {:.4e} Pa "
+        "(change {:.2e}), K1 change {:.2e}, exponent {:.4f}, {:.1f} s",
+        level,
+        record.n_dofs,
+        record.requested_size,
+        to_string(record.profile.kind),
+        record.profile.peak_traction,
+        figures.peak_change,
+        level > 0 ? intensity_change : 0.,
+        figures.exponent,
+        record.wall_time);
+    }
   } // namespace
 
   CornerAnalysis
@@ -60,33 +179,18 @@ namespace FloorBlock::Corner
                  const Progress                       &progress)
   {
     CornerAnalysis analysis;
-    analysis.site           = floor_corner_site(scene, scene.corner.joint);
-    analysis.materials.rock = {scene.material.shear_modulus,
-                               scene.material.poissons_ratio()};
-    analysis.materials.friction_coefficient =
-      std::tan(scene.joints.vertical_friction_angle);
-    analysis.materials.exact_contact =
-      scene.joints.law == Contact::JointLawKind::rigid;
-    analysis.materials.compliant_length =
-      scene.material.youngs_modulus() / scene.joints.normal_stiffness;
+    analysis.site            = floor_corner_site(scene, scene.corner.joint);
+    analysis.materials       = corner_materials(scene);
     const double tolerance   = scene.corner.converged_change;
     const double k_tolerance = scene.corner.intensity_change;
 
     CornerZoom zoom(scene, analysis.site);
     for (unsigned int level = 0; level <= scene.corner.max_zoom_levels; ++level)
       {
-        if (level > 0 && !zoom.can_refine())
-          {
-            analysis.stop_reason =
-              "the smallest zoom cell (3e-7 of the block side) is reached";
-            break;
-          }
-        if (level > 0 && !analysis.levels.empty() &&
-            seconds_left() < 2. * analysis.levels.back().wall_time)
-          {
-            analysis.stop_reason = "time budget (Corner/Time budget) spent";
-            break;
-          }
+        analysis.stop_reason =
+          reason_not_to_zoom(level, zoom, analysis, seconds_left);
+        if (!analysis.stop_reason.empty())
+          break;
         const auto record = zoom.next(Output::ResultFolder(
           folder.path_of("level_" + std::to_string(level))));
         if (!record)
@@ -102,49 +206,17 @@ namespace FloorBlock::Corner
           figures.peak_change = peak_change(analysis.levels, level);
         analysis.figures.push_back(figures);
 
-        analysis.theory         = corner_theory(record->profile,
+        analysis.theory = corner_theory(record->profile,
                                         analysis.materials,
                                         analysis.site.rounding_radius);
-        double intensity_change = 1.;
-        double fit_span         = 0.;
+        double fit_span = 0.;
         if (level > 0 && analysis.theory.covered)
-          {
-            // K1 of this level and the one before over this level's range.
-            const DistanceRange range =
-              fit_range(record->profile,
-                        analysis.levels[level - 1].profile,
-                        tolerance);
-            if (range.n_samples > 0)
-              {
-                fit_span = range.to / range.from;
-                const auto now =
-                  theory_intensities(samples_within(record->profile.samples,
-                                                    range),
-                                     analysis.theory);
-                const auto before = theory_intensities(
-                  samples_within(analysis.levels[level - 1].profile.samples,
-                                 range),
-                  analysis.theory);
-                intensity_change = relative_change(now.first, before.first);
-                analysis.figures.back().intensity        = now;
-                analysis.figures.back().intensity_change = intensity_change;
-                analysis.figures.back().exponent =
-                  fit_corner(record->profile.samples, range, analysis.theory)
-                    .expansion.lambda1;
-              }
-          }
-        progress(fmt::format(
-          "level {:2d}: {:6d} DoFs, cells {:.2e} m, {}, peak {:.4e} Pa "
-          "(change {:.2e}), K1 change {:.2e}, exponent {:.4f}, {:.1f} s",
-          level,
-          record->n_dofs,
-          record->requested_size,
-          to_string(record->profile.kind),
-          record->profile.peak_traction,
-          figures.peak_change,
-          level > 0 ? intensity_change : 0.,
-          analysis.figures.back().exponent,
-          record->wall_time));
+          fit_span = fit_newest_level(tolerance, analysis);
+        const double intensity_change =
+          level > 0 && fit_span > 0. ?
+            analysis.figures.back().intensity_change :
+            1.;
+        progress(level_line(level, intensity_change, analysis));
         // Without a theory there is no K1: the peak alone decides.
         const double exponent_change =
           level > 1 && analysis.figures[level - 1].exponent > 0. ?
@@ -173,35 +245,7 @@ namespace FloorBlock::Corner
       }
     if (analysis.stop_reason.empty())
       analysis.stop_reason = "zoom levels (Corner/Zoom levels) used up";
-
-    const std::size_t n = analysis.levels.size();
-    if (n >= 2 && analysis.theory.covered)
-      {
-        const ZoomLevel &last   = analysis.levels[n - 1];
-        const ZoomLevel &before = analysis.levels[n - 2];
-        analysis.fit =
-          fit_corner(last.profile.samples,
-                     fit_range(last.profile, before.profile, tolerance),
-                     analysis.theory);
-        // The invariant over its own converged range.
-        analysis.invariant_range =
-          converged_range(last.invariant_samples,
-                          before.invariant_samples,
-                          tolerance,
-                          fit_from_spacings * last.profile.edge_spacing,
-                          invariant_to_peak_fraction *
-                            last.profile.peak_distance);
-        analysis.invariant_fit = fit_invariant(last.invariant_samples,
-                                               analysis.invariant_range,
-                                               analysis.theory);
-      }
-    if (n >= 1)
-      {
-        analysis.closed_form_peak = analysis.levels.back().closed_form_peak;
-        analysis.matching_averaging_length =
-          averaging_length_for(analysis.levels.back().profile.samples,
-                               analysis.closed_form_peak);
-      }
+    fit_last_levels(tolerance, analysis);
     return analysis;
   }
 } // namespace FloorBlock::Corner

@@ -35,6 +35,18 @@ namespace FloorBlock::Corner
                                 const CornerAnalysis       &analysis,
                                 const RoundingStudy        &rounding);
 
+  /**
+   * @brief The files of `floorblock corner`: corner.json (corner_json()
+   * with the command's @p wall_time in s) and the tables and plots of
+   * write_corner_tables_and_plots().
+   */
+  void
+  write_corner_report(const Output::ResultFolder           &folder,
+                      const Parameters::ScenarioParameters &scene,
+                      const CornerAnalysis                 &analysis,
+                      const RoundingStudy                  &rounding,
+                      double                                wall_time);
+
   /** @brief The lines `corner` prints at the end. */
   std::string
   corner_summary_lines(const CornerAnalysis &analysis,

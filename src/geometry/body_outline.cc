@@ -299,6 +299,233 @@ namespace FloorBlock::Geometry
       return {corner.centre.x + radius * sum_x / norm,
               corner.centre.y + radius * sum_y / norm};
     }
+
+    /** Indices of the top fillets of every body (frames order), to pair them
+     * across the vertical joints. */
+    struct TopFillets
+    {
+      std::vector<std::optional<unsigned int>> left;
+      std::vector<std::optional<unsigned int>> right;
+    };
+
+    /** The corners of every body, refusing a rounding radius that does not
+     * fit. */
+    std::vector<BodyCorners>
+    all_body_corners(const AssemblyDescription     &description,
+                     const BeddingProfile          &profile,
+                     const std::vector<BlockFrame> &frames)
+    {
+      std::vector<BodyCorners> corners;
+      for (const BlockFrame &frame : frames)
+        {
+          bool fits = true;
+          corners.push_back(body_corners(profile,
+                                         frame,
+                                         description.block_height,
+                                         description.corner_rounding_radius,
+                                         fits));
+          if (!fits)
+            refuse_rounding(description,
+                            "on " + Ids::material_name(frame.material_id));
+        }
+      return corners;
+    }
+
+    /** The outline of every block body (frames order), with the segment
+     * indices of its top fillets. */
+    TopFillets
+    add_block_bodies(const AssemblyDescription      &description,
+                     const BeddingProfile           &profile,
+                     const std::vector<BlockFrame>  &frames,
+                     const std::vector<BodyCorners> &corners,
+                     AssemblyOutline                &outline)
+    {
+      const double height = description.block_height;
+      TopFillets   top_fillets;
+      for (unsigned int index = 0; index < frames.size(); ++index)
+        {
+          const BlockFrame  &frame = frames[index];
+          const BodyCorners &own   = corners[index];
+          const std::string  where =
+            "on " + Ids::material_name(frame.material_id);
+          if (!(own.bottom_left.curve_point.x <
+                  own.bottom_right.curve_point.x &&
+                own.top_left.curve_point.x < own.top_right.curve_point.x &&
+                own.bottom_left.side_point.y < own.top_left.side_point.y &&
+                own.bottom_right.side_point.y < own.top_right.side_point.y))
+            refuse_rounding(description, where);
+
+          std::vector<double> right_breaks;
+          if (index > 0)
+            right_breaks = {corners[index - 1].bottom_left.side_point.y,
+                            corners[index - 1].top_left.side_point.y};
+          std::vector<double> left_breaks;
+          if (index + 1 < frames.size())
+            left_breaks = {corners[index + 1].bottom_right.side_point.y,
+                           corners[index + 1].top_right.side_point.y};
+
+          BodyOutline           body{frame.material_id, {}};
+          std::vector<Segment> &segments = body.segments;
+          segments.push_back(curve_piece(profile,
+                                         own.bottom_left.curve_point.x,
+                                         own.bottom_right.curve_point.x,
+                                         0.0,
+                                         frame.bottom_id));
+          add_fillet(own.bottom_right, false, frame.bottom_id, segments);
+          add_vertical_side(frame.x_right,
+                            own.bottom_right.side_point.y,
+                            own.top_right.side_point.y,
+                            right_breaks,
+                            frame.right_id,
+                            segments);
+          top_fillets.right.push_back(
+            add_fillet(own.top_right, true, frame.right_id, segments));
+          segments.push_back(curve_piece(profile,
+                                         own.top_right.curve_point.x,
+                                         own.top_left.curve_point.x,
+                                         height,
+                                         frame.top_id));
+          top_fillets.left.push_back(
+            add_fillet(own.top_left, false, frame.left_id, segments));
+          add_vertical_side(frame.x_left,
+                            own.top_left.side_point.y,
+                            own.bottom_left.side_point.y,
+                            left_breaks,
+                            frame.left_id,
+                            segments);
+          add_fillet(own.bottom_left, true, frame.bottom_id, segments);
+          outline.bodies.push_back(body);
+        }
+      return top_fillets;
+    }
+
+    /** The base body: the bedding shifted down by its thickness (none on a
+     * rigid base, which the contact solver models as an obstacle, not a
+     * body). */
+    void
+    add_base_body(const AssemblyDescription      &description,
+                  const BeddingProfile           &profile,
+                  const std::vector<BlockFrame>  &frames,
+                  const std::vector<BodyCorners> &corners,
+                  AssemblyOutline                &outline)
+    {
+      if (description.rigid_base)
+        return;
+      // From the outer side of the face block to the free side of block
+      // 1; the top is split under every fillet tangent point so that the
+      // contact part of each bedding joint is a single segment on both
+      // sides.
+      const double thickness = description.base_thickness;
+      const double x_face    = frames.back().x_left;
+      const double x_free    = frames.front().x_right;
+      BodyOutline  base{Ids::base_material, {}};
+      base.segments.push_back(
+        curve_piece(profile, x_face, 0.0, -thickness, Ids::base_bottom));
+      base.segments.push_back(
+        curve_piece(profile, 0.0, x_free, -thickness, Ids::base_bottom));
+      base.segments.push_back({SegmentKind::line,
+                               point_on(profile, x_free, -thickness),
+                               point_on(profile, x_free, 0.0),
+                               {},
+                               Ids::base_end_free_side});
+      for (unsigned int index = 0; index < frames.size(); ++index)
+        {
+          const BlockFrame                &frame = frames[index];
+          const BodyCorners               &own   = corners[index];
+          const dealii::types::boundary_id id    = Ids::bedding_base_side(
+            frame.bottom_id - Ids::bedding_block_side(0));
+          const std::array<double, 4> stations = {
+            frame.x_right,
+            own.bottom_right.curve_point.x,
+            own.bottom_left.curve_point.x,
+            frame.x_left};
+          for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
+            if (stations[piece] != stations[piece + 1])
+              base.segments.push_back(curve_piece(
+                profile, stations[piece], stations[piece + 1], 0.0, id));
+        }
+      base.segments.push_back({SegmentKind::line,
+                               point_on(profile, x_face, 0.0),
+                               point_on(profile, x_face, -thickness),
+                               {},
+                               Ids::base_end_face_side});
+      outline.bodies.push_back(base);
+    }
+
+    /** Every pair of segments of two bodies with the same geometry: a
+     * joint. */
+    void
+    pair_joints(AssemblyOutline &outline)
+    {
+      for (unsigned int first = 0; first < outline.bodies.size(); ++first)
+        for (unsigned int second = first + 1; second < outline.bodies.size();
+             ++second)
+          for (unsigned int a = 0; a < outline.bodies[first].segments.size();
+               ++a)
+            for (unsigned int b = 0; b < outline.bodies[second].segments.size();
+                 ++b)
+              if (same_geometry(outline.bodies[first].segments[a],
+                                outline.bodies[second].segments[b]))
+                outline.joint_pairs.push_back({{first, a}, {second, b}});
+    }
+
+    /** The top fillets facing each other across every vertical joint. */
+    void
+    pair_top_fillets(const AssemblyDescription     &description,
+                     const std::vector<BlockFrame> &frames,
+                     const TopFillets              &top_fillets,
+                     AssemblyOutline               &outline)
+    {
+      // Top fillets across vertical joint j: block j = frames[index] (its
+      // left side is the joint) and its left neighbour frames[index + 1].
+      // Mirror images are recognised to round-off of the block width: the
+      // two arcs come from separate bisections.
+      const double mirror_tolerance =
+        mirror_tolerance_factor * description.block_width;
+      for (unsigned int index = 0; index + 1 < frames.size(); ++index)
+        if (top_fillets.left[index] && top_fillets.right[index + 1])
+          {
+            FilletPair pair{{index, *top_fillets.left[index]},
+                            {index + 1, *top_fillets.right[index + 1]},
+                            frames[index].x_left,
+                            false};
+            pair.mirror = mirror_geometry(
+              outline.bodies[index].segments[pair.master.segment],
+              outline.bodies[index + 1].segments[pair.slave.segment],
+              pair.joint_x,
+              mirror_tolerance);
+            outline.fillet_pairs.push_back(pair);
+          }
+    }
+
+    /** The points the mesh refines toward: the contact corners. */
+    void
+    add_refinement_points(const AssemblyDescription      &description,
+                          const std::vector<BlockFrame>  &frames,
+                          const std::vector<BodyCorners> &corners,
+                          AssemblyOutline                &outline)
+    {
+      // Contact corners: every corner on a vertical joint (both bodies) and
+      // every block corner on the bedding; not the free top corner of block 1
+      // nor the outer corners of the face block, where nothing presses --
+      // unless they are rounded: a fillet needs cells smaller than itself.
+      const unsigned int face_index = frames.size() - 1;
+      const bool         rounded    = description.corner_rounding_radius > 0.0;
+      for (unsigned int index = 0; index < frames.size(); ++index)
+        {
+          const BodyCorners          &own     = corners[index];
+          std::vector<const Corner *> contact = {&own.bottom_right};
+          if (index != 0 || rounded)
+            contact.push_back(&own.top_right);
+          if (index != face_index || rounded)
+            {
+              contact.push_back(&own.bottom_left);
+              contact.push_back(&own.top_left);
+            }
+          for (const Corner *corner : contact)
+            outline.refinement_points.push_back(corner_middle(*corner));
+        }
+    }
   } // namespace
 
   AssemblyOutline
@@ -306,175 +533,19 @@ namespace FloorBlock::Geometry
   {
     const BeddingProfile profile =
       BeddingProfile::geometry_profile(description);
-    const double                  height = description.block_height;
-    const double                  radius = description.corner_rounding_radius;
-    const std::vector<BlockFrame> frames = block_frames(description);
     // frames[0..n-1] = blocks 1..n, frames[n] = face block; the left
     // neighbour of frame f (towards the face) is frame f+1.
-    std::vector<BodyCorners> corners;
-    for (const BlockFrame &frame : frames)
-      {
-        bool fits = true;
-        corners.push_back(body_corners(profile, frame, height, radius, fits));
-        if (!fits)
-          refuse_rounding(description,
-                          "on " + Ids::material_name(frame.material_id));
-      }
+    const std::vector<BlockFrame>  frames = block_frames(description);
+    const std::vector<BodyCorners> corners =
+      all_body_corners(description, profile, frames);
 
-    AssemblyOutline outline;
-    // Segment indices of every body's top fillets, to pair them across the
-    // vertical joints below.
-    std::vector<std::optional<unsigned int>> top_left_fillets;
-    std::vector<std::optional<unsigned int>> top_right_fillets;
-    for (unsigned int index = 0; index < frames.size(); ++index)
-      {
-        const BlockFrame  &frame = frames[index];
-        const BodyCorners &own   = corners[index];
-        const std::string where = "on " + Ids::material_name(frame.material_id);
-        if (!(own.bottom_left.curve_point.x < own.bottom_right.curve_point.x &&
-              own.top_left.curve_point.x < own.top_right.curve_point.x &&
-              own.bottom_left.side_point.y < own.top_left.side_point.y &&
-              own.bottom_right.side_point.y < own.top_right.side_point.y))
-          refuse_rounding(description, where);
-
-        std::vector<double> right_breaks;
-        if (index > 0)
-          right_breaks = {corners[index - 1].bottom_left.side_point.y,
-                          corners[index - 1].top_left.side_point.y};
-        std::vector<double> left_breaks;
-        if (index + 1 < frames.size())
-          left_breaks = {corners[index + 1].bottom_right.side_point.y,
-                         corners[index + 1].top_right.side_point.y};
-
-        BodyOutline           body{frame.material_id, {}};
-        std::vector<Segment> &segments = body.segments;
-        segments.push_back(curve_piece(profile,
-                                       own.bottom_left.curve_point.x,
-                                       own.bottom_right.curve_point.x,
-                                       0.0,
-                                       frame.bottom_id));
-        add_fillet(own.bottom_right, false, frame.bottom_id, segments);
-        add_vertical_side(frame.x_right,
-                          own.bottom_right.side_point.y,
-                          own.top_right.side_point.y,
-                          right_breaks,
-                          frame.right_id,
-                          segments);
-        top_right_fillets.push_back(
-          add_fillet(own.top_right, true, frame.right_id, segments));
-        segments.push_back(curve_piece(profile,
-                                       own.top_right.curve_point.x,
-                                       own.top_left.curve_point.x,
-                                       height,
-                                       frame.top_id));
-        top_left_fillets.push_back(
-          add_fillet(own.top_left, false, frame.left_id, segments));
-        add_vertical_side(frame.x_left,
-                          own.top_left.side_point.y,
-                          own.bottom_left.side_point.y,
-                          left_breaks,
-                          frame.left_id,
-                          segments);
-        add_fillet(own.bottom_left, true, frame.bottom_id, segments);
-        outline.bodies.push_back(body);
-      }
-
-    // Base: bedding shifted down by its thickness (none on a rigid base,
-    // which the contact solver models as an obstacle, not a body)
-    if (!description.rigid_base)
-      {
-        // From the outer side of the face block to the free side of block
-        // 1; the top is split under every fillet tangent point so that the
-        // contact part of each bedding joint is a single segment on both
-        // sides.
-        const double thickness = description.base_thickness;
-        const double x_face    = frames.back().x_left;
-        const double x_free    = frames.front().x_right;
-        BodyOutline  base{Ids::base_material, {}};
-        base.segments.push_back(
-          curve_piece(profile, x_face, 0.0, -thickness, Ids::base_bottom));
-        base.segments.push_back(
-          curve_piece(profile, 0.0, x_free, -thickness, Ids::base_bottom));
-        base.segments.push_back({SegmentKind::line,
-                                 point_on(profile, x_free, -thickness),
-                                 point_on(profile, x_free, 0.0),
-                                 {},
-                                 Ids::base_end_free_side});
-        for (unsigned int index = 0; index < frames.size(); ++index)
-          {
-            const BlockFrame                &frame = frames[index];
-            const BodyCorners               &own   = corners[index];
-            const dealii::types::boundary_id id    = Ids::bedding_base_side(
-              frame.bottom_id - Ids::bedding_block_side(0));
-            const std::array<double, 4> stations = {
-              frame.x_right,
-              own.bottom_right.curve_point.x,
-              own.bottom_left.curve_point.x,
-              frame.x_left};
-            for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
-              if (stations[piece] != stations[piece + 1])
-                base.segments.push_back(curve_piece(
-                  profile, stations[piece], stations[piece + 1], 0.0, id));
-          }
-        base.segments.push_back({SegmentKind::line,
-                                 point_on(profile, x_face, 0.0),
-                                 point_on(profile, x_face, -thickness),
-                                 {},
-                                 Ids::base_end_face_side});
-        outline.bodies.push_back(base);
-      }
-
-    for (unsigned int first = 0; first < outline.bodies.size(); ++first)
-      for (unsigned int second = first + 1; second < outline.bodies.size();
-           ++second)
-        for (unsigned int a = 0; a < outline.bodies[first].segments.size(); ++a)
-          for (unsigned int b = 0; b < outline.bodies[second].segments.size();
-               ++b)
-            if (same_geometry(outline.bodies[first].segments[a],
-                              outline.bodies[second].segments[b]))
-              outline.joint_pairs.push_back({{first, a}, {second, b}});
-
-    // Top fillets across vertical joint j: block j = frames[index] (its
-    // left side is the joint) and its left neighbour frames[index + 1].
-    // Mirror images are recognised to round-off of the block width: the
-    // two arcs come from separate bisections.
-    const double mirror_tolerance =
-      mirror_tolerance_factor * description.block_width;
-    for (unsigned int index = 0; index + 1 < frames.size(); ++index)
-      if (top_left_fillets[index] && top_right_fillets[index + 1])
-        {
-          FilletPair pair{{index, *top_left_fillets[index]},
-                          {index + 1, *top_right_fillets[index + 1]},
-                          frames[index].x_left,
-                          false};
-          pair.mirror = mirror_geometry(
-            outline.bodies[index].segments[pair.master.segment],
-            outline.bodies[index + 1].segments[pair.slave.segment],
-            pair.joint_x,
-            mirror_tolerance);
-          outline.fillet_pairs.push_back(pair);
-        }
-
-    // Contact corners: every corner on a vertical joint (both bodies) and
-    // every block corner on the bedding; not the free top corner of block 1
-    // nor the outer corners of the face block, where nothing presses --
-    // unless they are rounded: a fillet needs cells smaller than itself.
-    const unsigned int face_index = frames.size() - 1;
-    const bool         rounded    = radius > 0.0;
-    for (unsigned int index = 0; index < frames.size(); ++index)
-      {
-        const BodyCorners          &own     = corners[index];
-        std::vector<const Corner *> contact = {&own.bottom_right};
-        if (index != 0 || rounded)
-          contact.push_back(&own.top_right);
-        if (index != face_index || rounded)
-          {
-            contact.push_back(&own.bottom_left);
-            contact.push_back(&own.top_left);
-          }
-        for (const Corner *corner : contact)
-          outline.refinement_points.push_back(corner_middle(*corner));
-      }
+    AssemblyOutline  outline;
+    const TopFillets top_fillets =
+      add_block_bodies(description, profile, frames, corners, outline);
+    add_base_body(description, profile, frames, corners, outline);
+    pair_joints(outline);
+    pair_top_fillets(description, frames, top_fillets, outline);
+    add_refinement_points(description, frames, corners, outline);
     return outline;
   }
 

@@ -173,6 +173,147 @@ namespace FloorBlock::RigidBlocks
           states.push_back(response.state);
       return states;
     }
+
+    /** Forces applied to every block at @p factors, dofs_per_block each. */
+    std::vector<double>
+    applied_forces(const std::vector<BlockLoads> &loads,
+                   const Loading::LoadFactors    &factors)
+    {
+      std::vector<double> applied(dofs_per_block * loads.size());
+      for (unsigned int index = 0; index < loads.size(); ++index)
+        {
+          const auto force =
+            applied_force(loads[index], factors.gravity, factors.support);
+          for (unsigned int r = 0; r < dofs_per_block; ++r)
+            applied[dofs_per_block * index + r] = force[r];
+        }
+      return applied;
+    }
+
+    /**
+     * One increment's Newton iteration: the callbacks of
+     * Contact::solve_newton() over the block motions in @p outcome.
+     */
+    class IncrementIteration
+    {
+    public:
+      IncrementIteration(const JointSet                &joint_set,
+                         const std::vector<BlockLoads> &loads,
+                         const RigidSolverSettings     &settings,
+                         const double                   block_width,
+                         const Loading::LoadFactors    &factors,
+                         const JointHistories          &histories,
+                         IncrementOutcome              &outcome)
+        : joint_set(joint_set)
+        , loads(loads)
+        , settings(settings)
+        , block_width(block_width)
+        , factors(factors)
+        , histories(histories)
+        , outcome(outcome)
+        , motions_at_solve(outcome.motions)
+      {}
+
+      Contact::NewtonIterate
+      assemble()
+      {
+        outcome.responses =
+          joint_set.evaluate(outcome.motions, factors.uplift, histories);
+        assemble_system(joint_set,
+                        outcome.responses,
+                        loads,
+                        factors.gravity,
+                        factors.support,
+                        {&residual, &tangent});
+        Contact::NewtonIterate iterate;
+        iterate.residual_norm = force_norm(residual, block_width);
+        iterate.set_signature =
+          set_signature(joint_set, outcome.responses, histories);
+        iterate.counts = Contact::count_states(all_states(outcome.responses));
+        return iterate;
+      }
+
+      /** A small dense system solved exactly: no forcing term applies. */
+      bool
+      solve_update(std::string &message)
+      {
+        const std::vector<unsigned int> closed =
+          closed_points_per_block(joint_set, outcome.responses);
+        for (unsigned int index = 0; index < closed.size(); ++index)
+          if (closed[index] == 0)
+            {
+              outcome.failure       = SolveStatus::floating_block;
+              outcome.failing_block = index + 1;
+              message               = "block " + std::to_string(index + 1) +
+                        " is floating: all points of its joints are open";
+              return false;
+            }
+        update = residual;
+        DenseSolveResult solved =
+          solve_dense(tangent, update, settings.singular_pivot_tolerance);
+        singular_in_last_solve = !solved.success;
+        if (!solved.success && settings.slip_stabilisation > 0.)
+          {
+            outcome.failing_block = solved.singular_row / dofs_per_block + 1;
+            assemble_system(joint_set,
+                            outcome.responses,
+                            loads,
+                            factors.gravity,
+                            factors.support,
+                            {nullptr, &tangent, settings.slip_stabilisation});
+            update = residual;
+            solved =
+              solve_dense(tangent, update, settings.singular_pivot_tolerance);
+          }
+        if (!solved.success)
+          {
+            outcome.failure       = SolveStatus::no_equilibrium;
+            outcome.failing_block = solved.singular_row / dofs_per_block + 1;
+            message               = "singular tangent at block " +
+                      std::to_string(outcome.failing_block) +
+                      ": its closed joint points slip and nothing resists the "
+                      "motion, no static equilibrium";
+            return false;
+          }
+        motions_at_solve = outcome.motions;
+        return true;
+      }
+
+      /** Newton: q_new = q - step K^{-1} R. */
+      void
+      set_step(const double step)
+      {
+        for (unsigned int index = 0; index < outcome.motions.size(); ++index)
+          {
+            const unsigned int first = dofs_per_block * index;
+            outcome.motions[index].translation[0] =
+              motions_at_solve[index].translation[0] - step * update[first];
+            outcome.motions[index].translation[1] =
+              motions_at_solve[index].translation[1] - step * update[first + 1];
+            outcome.motions[index].rotation =
+              motions_at_solve[index].rotation - step * update[first + 2];
+          }
+      }
+
+      /**
+       * The consistent tangent of the last Newton step was singular (a
+       * mechanism in the tangent): if Newton fails, that is the reason.
+       */
+      bool singular_in_last_solve = false;
+
+    private:
+      const JointSet                &joint_set;
+      const std::vector<BlockLoads> &loads;
+      const RigidSolverSettings     &settings;
+      const double                   block_width;
+      const Loading::LoadFactors    &factors;
+      const JointHistories          &histories;
+      IncrementOutcome              &outcome;
+      std::vector<BlockMotion>       motions_at_solve;
+      std::vector<double>            residual;
+      std::vector<double>            update;
+      DenseMatrix                    tangent;
+    };
   } // namespace
 
   IncrementOutcome
@@ -185,105 +326,22 @@ namespace FloorBlock::RigidBlocks
                    const JointHistories           &histories)
   {
     IncrementOutcome outcome;
-    outcome.motions                           = start_motions;
-    std::vector<BlockMotion> motions_at_solve = start_motions;
-    std::vector<double>      residual;
-    std::vector<double>      update;
-    DenseMatrix              tangent;
-
-    std::vector<double> applied(dofs_per_block * loads.size());
-    for (unsigned int index = 0; index < loads.size(); ++index)
-      {
-        const auto force =
-          applied_force(loads[index], factors.gravity, factors.support);
-        for (unsigned int r = 0; r < dofs_per_block; ++r)
-          applied[dofs_per_block * index + r] = force[r];
-      }
-
-    // The consistent tangent of the last Newton step was singular (a
-    // mechanism in the tangent): if Newton fails, that is the reason.
-    bool singular_in_last_solve = false;
-
+    outcome.motions = start_motions;
+    IncrementIteration iteration(
+      joint_set, loads, settings, block_width, factors, histories, outcome);
     Contact::NewtonCallbacks callbacks;
-    callbacks.assemble = [&]() {
-      outcome.responses =
-        joint_set.evaluate(outcome.motions, factors.uplift, histories);
-      assemble_system(joint_set,
-                      outcome.responses,
-                      loads,
-                      factors.gravity,
-                      factors.support,
-                      {&residual, &tangent});
-      Contact::NewtonIterate iterate;
-      iterate.residual_norm = force_norm(residual, block_width);
-      iterate.set_signature =
-        set_signature(joint_set, outcome.responses, histories);
-      iterate.counts = Contact::count_states(all_states(outcome.responses));
-      return iterate;
-    };
-    // A small dense system solved exactly: the forcing term does not apply.
+    callbacks.assemble     = [&]() { return iteration.assemble(); };
     callbacks.solve_update = [&](double /*forcing*/, std::string &message) {
-      const std::vector<unsigned int> closed =
-        closed_points_per_block(joint_set, outcome.responses);
-      for (unsigned int index = 0; index < closed.size(); ++index)
-        if (closed[index] == 0)
-          {
-            outcome.failure       = SolveStatus::floating_block;
-            outcome.failing_block = index + 1;
-            message               = "block " + std::to_string(index + 1) +
-                      " is floating: all points of its joints are open";
-            return false;
-          }
-      update = residual;
-      DenseSolveResult solved =
-        solve_dense(tangent, update, settings.singular_pivot_tolerance);
-      singular_in_last_solve = !solved.success;
-      if (!solved.success && settings.slip_stabilisation > 0.)
-        {
-          outcome.failing_block = solved.singular_row / dofs_per_block + 1;
-          assemble_system(joint_set,
-                          outcome.responses,
-                          loads,
-                          factors.gravity,
-                          factors.support,
-                          {nullptr, &tangent, settings.slip_stabilisation});
-          update = residual;
-          solved =
-            solve_dense(tangent, update, settings.singular_pivot_tolerance);
-        }
-      if (!solved.success)
-        {
-          outcome.failure       = SolveStatus::no_equilibrium;
-          outcome.failing_block = solved.singular_row / dofs_per_block + 1;
-          message =
-            "singular tangent at block " +
-            std::to_string(outcome.failing_block) +
-            ": its closed joint points slip and nothing resists the motion, "
-            "no static equilibrium";
-          return false;
-        }
-      motions_at_solve = outcome.motions;
-      return true;
+      return iteration.solve_update(message);
     };
-    callbacks.set_step = [&](const double step) {
-      // Newton: q_new = q - step K^{-1} R.
-      for (unsigned int index = 0; index < outcome.motions.size(); ++index)
-        {
-          const unsigned int first = dofs_per_block * index;
-          outcome.motions[index].translation[0] =
-            motions_at_solve[index].translation[0] - step * update[first];
-          outcome.motions[index].translation[1] =
-            motions_at_solve[index].translation[1] - step * update[first + 1];
-          outcome.motions[index].rotation =
-            motions_at_solve[index].rotation - step * update[first + 2];
-        }
-    };
+    callbacks.set_step = [&](const double step) { iteration.set_step(step); };
 
     // The residual cannot be driven below the round-off of the gaps: if
     // that floor is above the requested tolerance, ask for the floor (the
     // increment's force balance is still checked and reported separately).
-    const double            load_norm = force_norm(applied, block_width);
-    Contact::NewtonSettings newton    = settings.newton;
+    const double load_norm =
+      force_norm(applied_forces(loads, factors), block_width);
+    Contact::NewtonSettings newton = settings.newton;
     if (load_norm > 0.)
       newton.relative_tolerance =
         std::max(newton.relative_tolerance,
@@ -294,7 +352,7 @@ namespace FloorBlock::RigidBlocks
     if (!outcome.newton.converged &&
         outcome.failure != SolveStatus::floating_block)
       {
-        if (singular_in_last_solve)
+        if (iteration.singular_in_last_solve)
           outcome.failure = SolveStatus::no_equilibrium;
         else
           {
