@@ -3,6 +3,7 @@
 #include <common/input_error.h>
 #include <common/interrupt.h>
 #include <common/singleton_mpi_environment.h>
+#include <common/wall_clock.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -271,6 +272,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  start_wall_clock();
   install_interrupt_handlers();
 
   CLI::App cli{"FloorBlock: FEM cross-check of the multiple sliding block "

@@ -1,4 +1,5 @@
 #include <common/interrupt.h>
+#include <common/wall_clock.h>
 
 #include <csignal>
 
@@ -33,5 +34,7 @@ namespace FloorBlock
   {
     if (interrupt_requested())
       throw Interrupted();
+    if (solve_deadline_passed())
+      throw DeadlineReached();
   }
 } // namespace FloorBlock

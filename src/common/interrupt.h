@@ -18,7 +18,11 @@ namespace FloorBlock
   struct Interrupted
   {};
 
-  /** @brief Throws Interrupted if an interrupt was requested. */
+  /**
+   * @brief Throws Interrupted if an interrupt was requested, and
+   * DeadlineReached (common/wall_clock.h) if a solve deadline has passed:
+   * the one check long solves make at their safe points.
+   */
   void
   stop_if_interrupted();
 } // namespace FloorBlock

@@ -94,8 +94,12 @@ namespace FloorBlock::Parameters
       "Refinement time budget",
       "1800",
       Double(1, 1e6),
-      "`run` starts no further level once the wall time of its solves "
-      "has passed this or the next level's forecast would pass it. The "
+      "Bounds `run`'s wall time, counted from the command's start and "
+      "shared by both FE degrees of a race: a level or check whose "
+      "forecast would end past it is not started, and one that runs past "
+      "it stops at its next load increment, so that the command ends "
+      "within the budget and one increment; the last checked level is "
+      "reported. The command's first solve always runs to its end. The "
       "default lets the exact law on the default scene reach 1 %: level "
       "5's check meets it after about 610 s on a 2-core machine, and "
       "level 6's check, the next candidate, is forecast at about 1200 s "

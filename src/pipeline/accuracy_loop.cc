@@ -49,6 +49,25 @@ namespace FloorBlock::Pipeline
     }
 
     /**
+     * Why degree 2 joins, in words that agree with what degree 1's loop
+     * printed: its level-0 pair missed the target, or met it and the
+     * confirming level disagreed, or the loop stopped.
+     */
+    std::string
+    degree_2_join_reason(const TargetLoop &degree_1)
+    {
+      const Output::AccuracyTarget &record = degree_1.record();
+      if (record.confirming_level)
+        return fmt::format("FE degree 1's level {} did not confirm the "
+                           "target its level {} met",
+                           *record.confirming_level,
+                           record.reported_level);
+      if (degree_1.finished())
+        return "FE degree 1's loop stopped: " + record.stop_reason;
+      return "FE degree 1's level 0 did not meet the target";
+    }
+
+    /**
      * Solver/FE degree = auto: degree 1's and degree 2's loops take turns
      * (next_race_turn()); the winner's solve is reported, the other
      * loop's record is kept in the estimate (AccuracyTarget::other_degrees).
@@ -73,18 +92,29 @@ namespace FloorBlock::Pipeline
           {
             if (!degree_2)
               {
-                std::cout << "accuracy: FE degree 1's level 0 did not meet "
-                             "the target; FE degree 2 joins (Solver/FE "
-                             "degree = auto), the loop with less time spent "
-                             "solving next"
+                std::cout << "accuracy: " << degree_2_join_reason(degree_1)
+                          << "; FE degree 2 joins (Solver/FE degree = auto), "
+                             "the loop with less time spent solving next"
                           << std::endl;
                 degree_2.emplace(degree_2_scene,
                                  Output::ResultFolder(
                                    folder.path_of("fe_degree_2")),
-                                 folder);
+                                 folder,
+                                 false);
               }
             degree_2->step();
           }
+      // The budget is shared: once one loop ran out of it, so did the
+      // other.
+      for (TargetLoop *const out_of_time :
+           {&degree_1, degree_2 ? &*degree_2 : nullptr})
+        if (out_of_time && out_of_time->racer_state().out_of_time)
+          for (TargetLoop *const other :
+               {&degree_1, degree_2 ? &*degree_2 : nullptr})
+            if (other)
+              other->abandon(fmt::format("in FE degree {}'s loop, {}",
+                                         out_of_time->record().fe_degree,
+                                         out_of_time->record().stop_reason));
       const RacerState   state_1 = degree_1.racer_state();
       const RacerState   state_2 = degree_2_state();
       const unsigned int winner  = race_winner(state_1, state_2);
@@ -92,9 +122,13 @@ namespace FloorBlock::Pipeline
       TargetLoop *const  lost =
         winner == 1 ? (degree_2 ? &*degree_2 : nullptr) : &degree_1;
       std::string choice;
-      if (!degree_2)
+      if (!degree_2 && degree_1.met())
         choice = "auto: FE degree 1's level 0 met the target, which no "
                  "degree-2 solve on the same mesh could do sooner";
+      else if (!degree_2)
+        choice = "auto: FE degree 2 did not join, FE degree 1's loop "
+                 "stopped: " +
+                 degree_1.record().stop_reason;
       else
         {
           if (won.met())

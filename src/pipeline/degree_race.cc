@@ -7,7 +7,8 @@ namespace FloorBlock::Pipeline
   RaceTurn
   next_race_turn(const RacerState &degree_1, const RacerState &degree_2)
   {
-    if (degree_1.met || degree_2.met)
+    if (degree_1.met || degree_2.met || degree_1.out_of_time ||
+        degree_2.out_of_time)
       return RaceTurn::over;
     if (!degree_2.joined)
       {

@@ -16,8 +16,13 @@ namespace FloorBlock::Pipeline
     /** At least one level was checked (the loop has an estimate). */
     bool checked = false;
     /** A checked pair met the target; the next level is to confirm it. */
-    bool   confirming = false;
-    double time_spent = 0.; ///< s of the loop's own solves
+    bool confirming = false;
+    /**
+     * Stopped by Mesh/Refinement time budget, which both loops share: the
+     * race is over.
+     */
+    bool   out_of_time = false;
+    double time_spent  = 0.; ///< s of the loop's own solves
     /** The reported solve's largest target-figure error; none yet. */
     std::optional<double> reported_error;
   };

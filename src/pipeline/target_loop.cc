@@ -1,3 +1,5 @@
+#include <common/interrupt.h>
+#include <common/wall_clock.h>
 #include <compare/joint_name.h>
 #include <convergence/ladder_budget.h>
 #include <pipeline/accuracy_loop.h>
@@ -102,7 +104,8 @@ namespace FloorBlock::Pipeline
 
   TargetLoop::TargetLoop(const Parameters::ScenarioParameters &scene,
                          const Output::ResultFolder           &base_folder,
-                         const Output::ResultFolder           &report_folder)
+                         const Output::ResultFolder           &report_folder,
+                         const bool first_solve_of_command)
     : scene(scene)
     , base_folder(base_folder)
     , report_folder(report_folder)
@@ -110,6 +113,7 @@ namespace FloorBlock::Pipeline
     , levels(scene,
              bounded_refinement(Convergence::RefinementSettings(), scene),
              Convergence::default_coarsen_fraction)
+    , first_solve_of_command(first_solve_of_command)
   {
     target.relative_error = scene.mesh.target_relative_error;
     for (const Parameters::TargetFigure figure : scene.mesh.target_figures)
@@ -153,6 +157,7 @@ namespace FloorBlock::Pipeline
     state.checked        = estimate.has_value();
     state.confirming     = confirming;
     state.time_spent     = spent;
+    state.out_of_time    = out_of_time;
     state.reported_error = reported_error();
     return state;
   }
@@ -188,13 +193,20 @@ namespace FloorBlock::Pipeline
     dealii::Timer timer;
     if (!outcomes.empty())
       ++level;
-    outcomes.push_back(
-      levels.solve_next(level == 0 ?
-                          base_folder :
-                          Output::ResultFolder(base_folder.path_of(
-                            "refined/level_" + std::to_string(level))),
-                        true));
+    const std::string folder =
+      level == 0 ?
+        base_folder.path_of("") :
+        base_folder.path_of("refined/level_" + std::to_string(level));
+    const bool solved = solve_within_budget(
+      [&]() {
+        outcomes.push_back(
+          levels.solve_next(Output::ResultFolder(folder), true));
+      },
+      "level " + std::to_string(level),
+      level == 0 && first_solve_of_command ? "" : folder);
     spent += timer.wall_time();
+    if (!solved)
+      return;
     target.levels.push_back(
       level_record(level, outcomes.back(), timer.wall_time(), scene));
     if (level > 0)
@@ -223,7 +235,8 @@ namespace FloorBlock::Pipeline
     // estimate: successive adaptive levels can agree while both are
     // far off (3-block scene: 678.6 and 678.1 mm, converged 684.2 mm).
     // It only says when the nested check is worth its cost; level 0
-    // is always checked (the default scene meets the target there).
+    // is checked whenever the budget allows (the default scene meets the
+    // target there).
     if (level > 0)
       record.difference_indicator =
         worst_target_error(refined_solve_error(outcomes[level - 1],
@@ -239,14 +252,16 @@ namespace FloorBlock::Pipeline
         return;
       }
     const double forecast = record.wall_time * check_time_factor;
-    if (level > 0 && spent + forecast > scene.mesh.refinement_time_budget)
+    const double end      = seconds_since_start() + forecast;
+    if (end > scene.mesh.refinement_time_budget)
       {
-        target.stop_reason = fmt::format(
-          "the check of level {} would end after about {:.0f} s, past "
-          "Mesh/Refinement time budget = {:g} s",
-          level,
-          spent + forecast,
-          scene.mesh.refinement_time_budget);
+        out_of_time = true;
+        target.stop_reason =
+          fmt::format("the check of level {} would end about {:.0f} s into the "
+                      "command, past Mesh/Refinement time budget = {:g} s",
+                      level,
+                      end,
+                      scene.mesh.refinement_time_budget);
         action = Action::none;
         return;
       }
@@ -258,12 +273,18 @@ namespace FloorBlock::Pipeline
   {
     Output::RefinementLevelRecord &record = target.levels[level];
     dealii::Timer                  timer;
-    const FemOutcome               halved =
-      levels.solve_halved(Output::ResultFolder(base_folder.path_of(
-        "refined/level_" + std::to_string(level) + "_halved")));
+    const std::string              folder =
+      base_folder.path_of("refined/level_" + std::to_string(level) + "_halved");
+    FemOutcome halved;
+    const bool solved = solve_within_budget(
+      [&]() { halved = levels.solve_halved(Output::ResultFolder(folder)); },
+      "the check of level " + std::to_string(level),
+      folder);
+    spent += timer.wall_time();
+    if (!solved)
+      return;
     record.halved_wall_time = timer.wall_time();
-    spent += record.halved_wall_time;
-    record.halved_n_dofs = halved.result.n_dofs;
+    record.halved_n_dofs    = halved.result.n_dofs;
     // One pair, two estimates: Roache's GCI of the level (6 times the
     // difference) and of its check (3 times). The level is reported when
     // it meets the target (the cheaper solve: the default scene's level
@@ -388,6 +409,48 @@ namespace FloorBlock::Pipeline
     return false;
   }
 
+  bool
+  TargetLoop::solve_within_budget(const std::function<void()> &solve,
+                                  const std::string           &what,
+                                  const std::string           &folder)
+  {
+    if (first_solve_of_command && outcomes.empty())
+      {
+        solve();
+        return true;
+      }
+    try
+      {
+        const ScopedSolveDeadline deadline(scene.mesh.refinement_time_budget);
+        solve();
+        return true;
+      }
+    catch (const DeadlineReached &)
+      {
+        // A stopped solve leaves nothing that could be mistaken for a
+        // result.
+        if (!folder.empty())
+          {
+            namespace fs = std::filesystem;
+            fs::remove_all(folder);
+            const fs::path parent = fs::path(folder).parent_path();
+            if (fs::is_directory(parent) && fs::is_empty(parent))
+              fs::remove(parent);
+          }
+        out_of_time        = true;
+        target.stop_reason = fmt::format(
+          "{}{} was stopped {:.0f} s into the command, at Mesh/Refinement "
+          "time budget = {:g} s",
+          confirming ? "the target was met but not confirmed: " : "",
+          what,
+          seconds_since_start(),
+          scene.mesh.refinement_time_budget);
+        std::cout << "accuracy: " << target.stop_reason << std::endl;
+        action = Action::none;
+        return false;
+      }
+  }
+
   void
   TargetLoop::plan_next_level()
   {
@@ -401,14 +464,18 @@ namespace FloorBlock::Pipeline
     else if (!levels.can_refine())
       target.stop_reason =
         fmt::format("level {} left no size request to refine from", level);
-    else if (const double forecast = forecast_wall_time(target.levels);
-             spent + forecast > scene.mesh.refinement_time_budget)
-      target.stop_reason = fmt::format(
-        "level {} would end after about {:.0f} s, past Mesh/Refinement "
-        "time budget = {:g} s",
-        level + 1,
-        spent + forecast,
-        scene.mesh.refinement_time_budget);
+    else if (const double end =
+               seconds_since_start() + forecast_wall_time(target.levels);
+             end > scene.mesh.refinement_time_budget)
+      {
+        out_of_time        = true;
+        target.stop_reason = fmt::format(
+          "level {} would end about {:.0f} s into the command, past "
+          "Mesh/Refinement time budget = {:g} s",
+          level + 1,
+          end,
+          scene.mesh.refinement_time_budget);
+      }
     else
       action = Action::solve_level;
   }

@@ -7,7 +7,9 @@
 #include <pipeline/degree_race.h>
 #include <pipeline/fem_pipeline.h>
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace FloorBlock::Pipeline
@@ -22,14 +24,23 @@ namespace FloorBlock::Pipeline
    * <base_folder>/refined/level_<k>/, level k's check into
    * <base_folder>/refined/level_<k>_halved/. finish() copies the reported
    * solve's files into @p report_folder when they are elsewhere.
-   * Mesh/Refinement time budget bounds the loop's own solving time.
+   *
+   * Mesh/Refinement time budget bounds the command's wall time
+   * (seconds_since_start(), common/wall_clock.h), shared by every loop of a
+   * race: a level or check whose forecast would end past it is not
+   * started, and one that runs past it anyway stops at its next load
+   * increment (its folder is removed); the loop then reports its last
+   * checked level. Only the command's first solve, without which there is
+   * nothing to report, runs to its end whatever the budget
+   * (@p first_solve_of_command).
    */
   class TargetLoop
   {
   public:
     TargetLoop(const Parameters::ScenarioParameters &scene,
                const Output::ResultFolder           &base_folder,
-               const Output::ResultFolder           &report_folder);
+               const Output::ResultFolder           &report_folder,
+               bool first_solve_of_command = true);
 
     /** Solves the next level or check; only while !finished(). */
     void
@@ -88,6 +99,15 @@ namespace FloorBlock::Pipeline
     solve_level();
     void
     check_level();
+    /**
+     * Runs @p solve under the budget's deadline (none for the command's
+     * first solve); false if the deadline stopped it, which then becomes
+     * the stop reason and finishes the loop.
+     */
+    bool
+    solve_within_budget(const std::function<void()> &solve,
+                        const std::string           &what,
+                        const std::string           &folder);
     /** After level `level` is settled: the next level, or a stop. */
     void
     plan_next_level();
@@ -117,5 +137,9 @@ namespace FloorBlock::Pipeline
     double                                  spent  = 0.;
     /** A checked pair met the target; the next level is to confirm it. */
     bool confirming = false;
+    /** Stopped by Mesh/Refinement time budget (forecast or deadline). */
+    bool out_of_time = false;
+    /** Level 0 is the command's first solve: no deadline stops it. */
+    const bool first_solve_of_command;
   };
 } // namespace FloorBlock::Pipeline

@@ -65,6 +65,18 @@ TEST(DegreeRace, LoopWithLessTimeSpentStepsNext)
             RaceTurn::over);
 }
 
+// The tool shall end the race once either loop ran out of the time budget
+// both share: degree 2 does not join, and a running loop steps no more.
+TEST(DegreeRace, SharedBudgetSpentEndsTheRace)
+{
+  RacerState out_of_time  = stopped(9., 0.08);
+  out_of_time.out_of_time = true;
+  EXPECT_EQ(next_race_turn(out_of_time, RacerState()), RaceTurn::over);
+  EXPECT_EQ(next_race_turn(running(5.), out_of_time), RaceTurn::over);
+  EXPECT_EQ(next_race_turn(out_of_time, running(20.)), RaceTurn::over);
+  EXPECT_EQ(race_winner(out_of_time, RacerState()), 1u);
+}
+
 // The tool shall let a loop whose pair met the target confirm it before
 // the other loop steps again, whatever their times.
 TEST(DegreeRace, ConfirmationComesFirst)
