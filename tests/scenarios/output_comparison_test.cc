@@ -142,6 +142,34 @@ TEST(OutputComparison, LooserToleranceAppliesToItsFieldOnly)
     << differences[0];
 }
 
+// The tool shall compare the value of an entry that names its quantity
+// (summary.json's face_joint_figures) under that quantity's tolerance, so
+// that a field declared looser or skipped is so in every file.
+TEST(OutputComparison, NamedEntryValueTakesItsFieldsTolerance)
+{
+  const json reference = {
+    {"face_joint_figures",
+     {{{"field", "contact_length_m"}, {"value", 0.}},
+      {{"field", "normal_force_N_per_m"}, {"value", 0.}}}}};
+  json changed                              = reference;
+  changed["face_joint_figures"][0]["value"] = 2.;
+  changed["face_joint_figures"][1]["value"] = 6e-8;
+  EXPECT_EQ(compare_json(reference, changed, "summary.json").size(), 2u);
+
+  ComparisonSettings settings;
+  settings.skipped_fields = {"contact_length_m"};
+  settings.looser_fields.push_back(
+    {"normal_force_N_per_m", {1e-4, 0.}, "test"});
+  EXPECT_TRUE(
+    compare_json(reference, changed, "summary.json", settings).empty())
+    << listed(compare_json(reference, changed, "summary.json", settings));
+
+  // The tolerance is the named field's, not a free pass.
+  changed["face_joint_figures"][1]["value"] = 1e-3;
+  EXPECT_EQ(compare_json(reference, changed, "summary.json", settings).size(),
+            1u);
+}
+
 // The tool shall ignore the solver's cost counters (they follow round-off:
 // reuse caps, a Newton iteration more or less) and compare the force
 // balance residual to its round-off level, not to 1e-8 of itself.
