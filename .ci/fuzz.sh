@@ -43,7 +43,7 @@ run_libfuzzer() {
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOORBLOCK_SANITIZE=ON \
     -DFLOORBLOCK_LIBFUZZER=ON -DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link \
     >/dev/null
-  cmake --build "$build" -j"$jobs" --target scene_libfuzzer -- --no-print-directory
+  cmake --build "$build" -j"$jobs" --target scene_libfuzzer
   # Seed corpus: the shipped scenes, as .prm ('p') and as JSON/XML ('j', 'x')
   # written by deal.II itself is not available without the tool, so the
   # .prm scenes seed all three; mutations find the other formats' syntax.
@@ -83,7 +83,7 @@ run_gtest() {
   else
     cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
   fi
-  cmake --build "$build" -j"$jobs" --target fuzz_tests -- --no-print-directory
+  cmake --build "$build" -j"$jobs" --target fuzz_tests
   local executable="$build/tests/fuzz/fuzz_tests"
   local inputs_per_round=${FUZZ_INPUTS_PER_ROUND:-2000}
   local deadline=$(($(date +%s) + seconds)) rounds=0 scene_inputs=0 analytic_inputs=0

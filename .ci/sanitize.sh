@@ -69,7 +69,7 @@ export CCACHE_NOHASHDIR=1
 
 start=$(date +%s)
 configure_sanitized_build "$build" "${SANITIZE_BUILD_TYPE:-Debug}"
-cmake --build "$build" -j"$jobs" --target "${targets[@]}" -- --no-print-directory
+cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 built=$(date +%s)
 
 reports="$PWD/$build/sanitizer-reports"

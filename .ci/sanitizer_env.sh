@@ -7,8 +7,12 @@
 # linking. Starting an ASan executable linked to deal.II's debug library
 # takes 1-4 s, close to gtest_discover_tests' 5 s default timeout, and a
 # busy machine made the build itself fail.
+# Ninja for a new build folder, as .ci/setup.sh.
 configure_sanitized_build() { # <build folder> <build type>
-  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE="$2" -DFLOORBLOCK_SANITIZE=ON \
+  local generator=()
+  [ -f "$1/CMakeCache.txt" ] || generator=(-G Ninja)
+  cmake "${generator[@]}" -S . -B "$1" -DCMAKE_BUILD_TYPE="$2" \
+    -DFLOORBLOCK_SANITIZE=ON \
     -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST >/dev/null
 }
 
