@@ -5,6 +5,7 @@
 #include <output/fem_summary.h>
 #include <output/figure_summary.h>
 #include <output/gnuplot.h>
+#include <output/governing_report.h>
 #include <output/report_markdown.h>
 #include <output/result_folder.h>
 #include <output/run_summary.h>
@@ -25,10 +26,18 @@ namespace FloorBlock::App
   namespace
   {
     void
-    write_plots(const Output::ResultFolder     &folder,
-                const Output::RunComparison    &comparison,
-                const Contact::IncrementResult &last)
+    write_plots(const Output::ResultFolder           &folder,
+                const Output::RunComparison          &comparison,
+                const Contact::SolveResult           &result,
+                const Parameters::ScenarioParameters &scene)
     {
+      const Contact::IncrementResult &last = result.increments.back();
+      const std::string               governing =
+        Output::governing_lift_plot(result,
+                                    scene.geometry.n_blocks,
+                                    scene.loading.floor_lift);
+      if (!governing.empty())
+        Output::render_png(governing, folder.path_of("stress_vs_lift.png"));
       const auto &final_joints = comparison.final_joints;
       Output::render_png(Output::force_per_joint_plot(final_joints),
                          folder.path_of("q_per_joint.png"));
@@ -63,10 +72,13 @@ namespace FloorBlock::App
     {
       const Output::RunComparison comparison =
         Pipeline::compare_with_closed_forms(outcome, closed_forms, scene);
-      write_plots(folder, comparison, outcome.result.increments.back());
+      write_plots(folder, comparison, outcome.result, scene);
       const auto lines = Output::verdicts(comparison.final_joints.back());
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
+      std::cout << Output::governing_lines(
+        Compare::governing_joints(outcome.result.increments.back(),
+                                  scene.geometry.n_blocks));
       folder.write(
         "report.md",
         Output::report_markdown(

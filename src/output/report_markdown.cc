@@ -1,6 +1,7 @@
 #include <common/units.h>
 #include <output/comparison_report.h>
 #include <output/fem_report.h>
+#include <output/governing_report.h>
 #include <output/numbering_note.h>
 #include <output/report_markdown.h>
 
@@ -91,6 +92,14 @@ namespace FloorBlock::Output
     text += "## Verdicts (face joint, final lift)\n\n";
     for (const auto &line : verdicts)
       text += "- " + line + "\n";
+    if (!result.increments.empty())
+      text += "\n## Governing joints (final lift)\n\nThe joint with the "
+              "largest value of each figure, beside the face joint's "
+              "(`governing_joints` in summary.json):\n\n" +
+              governing_table_markdown(
+                Compare::governing_joints(result.increments.back(),
+                                          scene.geometry.n_blocks)) +
+              "\n![Peak stress along the lift](stress_vs_lift.png)\n";
     text +=
       "\n## Lateral force per vertical joint\n\n" +
       force_table_markdown(comparison.final_joints, scene.geometry.n_blocks) +

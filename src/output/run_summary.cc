@@ -1,5 +1,6 @@
 #include <output/analytic_report.h>
 #include <output/figure_summary.h>
+#include <output/governing_report.h>
 #include <output/run_summary.h>
 
 namespace FloorBlock::Output
@@ -26,8 +27,13 @@ namespace FloorBlock::Output
     if (estimate)
       summary["fem_error_estimate"] = fem_error_estimate_json(*estimate);
     if (!result.increments.empty())
-      summary["face_joint_figures"] =
-        face_joint_figures(result, estimate, scene.geometry.n_blocks);
+      {
+        summary["face_joint_figures"] =
+          face_joint_figures(result, estimate, scene.geometry.n_blocks);
+        summary["governing_joints"] =
+          governing_json(Compare::governing_joints(result.increments.back(),
+                                                   scene.geometry.n_blocks));
+      }
     if (comparison)
       summary["comparison"] =
         run_comparison_json(*comparison, scene.geometry.n_blocks);

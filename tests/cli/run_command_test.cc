@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 
 #include "estimate_checks.h"
 #include "process.h"
@@ -42,6 +44,56 @@ namespace
   }
 } // namespace
 
+// The tool shall name, for every figure, the joint that carries the most
+// (Q among the vertical joints, the stresses among all joints), where, and
+// the face joint's value beside it: in summary.json, report.md, the
+// terminal and a plot along the lift. On the 3-block scene a bedding joint
+// carries the largest peak stress.
+TEST(RunCommand, NamesTheGoverningJointOfEveryFigure)
+{
+  const std::string folder  = three_block_run();
+  const json        summary = read_json(folder + "/summary.json");
+  ASSERT_TRUE(summary.contains("governing_joints"));
+  const json                              &joints  = summary["fem"]["joints"];
+  const std::map<std::string, std::string> figures = {
+    {"Q_N_per_m", "normal_force_N_per_m"},
+    {"sigma_max_Pa", "sigma_max_Pa"},
+    {"sigma_max_averaged_Pa", "sigma_max_averaged_Pa"},
+    {"sigma_mean_Pa", "sigma_mean_Pa"}};
+  ASSERT_EQ(summary["governing_joints"].size(), figures.size());
+  bool bedding_governs = false;
+  for (const json &entry : summary["governing_joints"])
+    {
+      const std::string figure  = entry["figure"];
+      const std::string key     = figures.at(figure);
+      double            largest = 0., face = 0.;
+      for (const json &joint : joints)
+        {
+          const std::string name = joint["name"];
+          if (name == "vertical 3")
+            face = joint[key].get<double>();
+          if (figure != "Q_N_per_m" || joint["kind"] == "vertical")
+            largest = std::max(largest, joint[key].get<double>());
+        }
+      EXPECT_NEAR(entry["value"].get<double>(), largest, 1e-9 * largest)
+        << figure;
+      EXPECT_NEAR(entry["face_joint_value"].get<double>(), face, 1e-9 * face)
+        << figure;
+      bedding_governs = bedding_governs ||
+                        entry["joint"].get<std::string>().find("bedding") == 0;
+    }
+  EXPECT_TRUE(bedding_governs) << summary["governing_joints"];
+
+  std::ifstream     file(folder + "/report.md");
+  const std::string report((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("## Governing joints"), std::string::npos);
+  EXPECT_NE(report.find("| pointwise peak normal stress | bedding"),
+            std::string::npos)
+    << report;
+  EXPECT_TRUE(std::filesystem::exists(folder + "/stress_vs_lift.png"));
+}
+
 // The tool shall write every result file of a run, summary.json last.
 TEST(RunCommand, WritesEveryFile)
 {
@@ -57,6 +109,7 @@ TEST(RunCommand, WritesEveryFile)
                            "q_per_joint.png",
                            "face_joint_vs_lift.png",
                            "face_joint_traction.png",
+                           "stress_vs_lift.png",
                            "mesh.msh"})
     EXPECT_TRUE(std::filesystem::exists(output + "/" + name)) << name;
   const auto summary_time =
