@@ -72,7 +72,11 @@ namespace FloorBlock::Output
       scene.loading.support_load / Units::tonnes_force_to_newtons(1.),
       fmt::join(scene.loading.loaded_blocks_from_face, ","),
       scene.geometry.support_width,
-      scene.loading.floor_lift,
+      scene.loading.floor_lift_origin.empty() ?
+        fmt::format("{}", scene.loading.floor_lift) :
+        fmt::format("{} ({})",
+                    scene.loading.floor_lift,
+                    scene.loading.floor_lift_origin),
       report.converged() ? "reached" : "not reached",
       scene.joints.law == Contact::JointLawKind::rigid ? "rigid" : "compliant",
       report.model,
@@ -85,6 +89,8 @@ namespace FloorBlock::Output
       report.n_cutbacks,
       force_balance_text(report.force_balance));
 
+    for (const std::string &warning : scene.warnings)
+      text += "**Warning:** " + warning + "\n\n";
     if (report.model != "elastic FEM")
       text += "Columns and verdicts marked FEM hold the numbers of the " +
               report.model + " model.\n\n";

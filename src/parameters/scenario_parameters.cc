@@ -3,6 +3,7 @@
 #include <parameters/scenario_parameters.h>
 #include <parameters/scene_file_checks.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -66,6 +67,146 @@ namespace FloorBlock::Parameters
                            std::to_string(geometry.face_length - length) +
                            " m");
     }
+
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text.precision(6);
+      text << value;
+      return text.str();
+    }
+
+    std::string
+    metres(const double value)
+    {
+      return number_text(value) + " m";
+    }
+
+    /**
+     * The closed forms stand the blocks on the bedding; the FEM starts from
+     * a flat bed (reading lifted) and bends it into that bedding only when
+     * its uplift follows the same profile and reaches the bedding's rise at
+     * the free end. Elsewhere the FEM's lift is a motion the closed forms
+     * do not describe.
+     */
+    void
+    resolve_floor_lift(const GeometryParameters &geometry,
+                       const BeddingParameters  &bedding,
+                       LoadingParameters        &loading,
+                       std::vector<std::string> &warnings)
+    {
+      // Relative to the bedding's rise: a lift within 1 % bends the FEM's
+      // bed into the closed forms' floor up to less than the chapter's
+      // quoted digits.
+      constexpr double tolerance = 0.01;
+      const bool parabolic = bedding.shape == Geometry::BeddingShape::parabolic;
+      const bool follows_bedding =
+        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding &&
+        (parabolic ? loading.uplift_mode == UpliftMode::parabola :
+                     loading.uplift_mode == UpliftMode::slope);
+      const double rise =
+        bedding.rise_at_free_end(geometry.n_blocks, geometry.block_width);
+      const std::string rise_text =
+        (parabolic ?
+           "(nL)^2/k = (" + std::to_string(geometry.n_blocks) + " x " +
+             metres(geometry.block_width) + ")^2 / " +
+             metres(bedding.curvature) :
+           "nL tan(alpha) = " + std::to_string(geometry.n_blocks) + " x " +
+             metres(geometry.block_width) + " x tan(" +
+             number_text(bedding.inclination * 180. / M_PI) + " deg)") +
+        " = " + metres(rise);
+      const std::string how_to_fix =
+        parabolic ? "Bedding/Curvature, Geometry/Number of blocks or Block "
+                    "width" :
+                    "Bedding/Inclination, Geometry/Number of blocks or Block "
+                    "width";
+
+      if (loading.floor_lift_auto)
+        {
+          if (follows_bedding && rise < 0.)
+            throw InputError("Loading/Floor lift",
+                             "auto",
+                             "needs a bedding that rises away from the face: "
+                             "the bedding's " +
+                               rise_text +
+                               "; set Bedding/Inclination >= 0 or give the "
+                               "lift in m (>= 0)");
+          loading.floor_lift        = std::max(rise, 0.);
+          loading.floor_lift_origin = "auto: " + rise_text;
+          if (!follows_bedding)
+            warnings.push_back(
+              "Loading/Floor lift = auto takes the bedding's " + rise_text +
+              ", but the closed forms define no FEM lift for this scene "
+              "(Bedding/Floor uplift reading and Loading/Uplift mode do not "
+              "bend a flat bed into the " +
+              (parabolic ? "parabolic" : "planar") +
+              " bedding): give Loading/Floor lift in m to choose the "
+              "motion");
+          return;
+        }
+
+      const double lift = loading.floor_lift;
+      const bool   contradicts =
+        std::abs(lift - rise) > tolerance * std::abs(rise);
+      if (!follows_bedding)
+        {
+          warnings.push_back(
+            "Loading/Floor lift = " + metres(lift) +
+            " moves the FEM's base in a way the closed forms do not "
+            "describe (Bedding/Floor uplift reading and Loading/Uplift mode "
+            "do not bend a flat bed into the bedding); the closed forms "
+            "stand the blocks on the bedding as it is, whose " +
+            rise_text);
+          return;
+        }
+      if (!contradicts)
+        return;
+      if (!loading.floor_lift_may_differ)
+        throw InputError(
+          "Loading/Floor lift",
+          metres(lift),
+          "must equal the bedding's " + rise_text +
+            " within 1 %: the closed forms stand the blocks on that "
+            "bedding. Set Loading/Floor lift = auto, change " +
+            how_to_fix +
+            ", or set Loading/Floor lift against bedding = may differ to "
+            "lift the FEM's floor by another amount");
+      warnings.push_back("Loading/Floor lift = " + metres(lift) +
+                         " differs from the bedding's " + rise_text +
+                         " (Floor lift against bedding = may differ): the "
+                         "FEM lifts another floor than the closed forms "
+                         "stand the blocks on");
+    }
+
+    /**
+     * Appends "# <note>" to the line "set <entry> = ..." of subsection
+     * @p subsection in a ShortPRM text, so parameters.prm stays readable
+     * as input and still shows a derived value.
+     */
+    std::string
+    annotate_entry(const std::string &text,
+                   const std::string &subsection,
+                   const std::string &entry,
+                   const std::string &note)
+    {
+      std::istringstream lines(text);
+      std::string        line, annotated, current;
+      const std::string  opening = "subsection ";
+      while (std::getline(lines, line))
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind(opening, 0) == 0)
+            current = dealii::Utilities::trim(trimmed.substr(opening.size()));
+          const std::string set = "set " + entry;
+          if (current == subsection && trimmed.rfind(set, 0) == 0 &&
+              dealii::Utilities::trim(trimmed.substr(set.size()))
+                  .rfind("=", 0) == 0)
+            line += " # " + note;
+          annotated += line + "\n";
+        }
+      return annotated;
+    }
   } // namespace
 
   void
@@ -108,6 +249,9 @@ namespace FloorBlock::Parameters
                            std::to_string(geometry.n_blocks));
 
     check_footprint(geometry, loading);
+
+    warnings.clear();
+    resolve_floor_lift(geometry, bedding, loading, warnings);
 
     model.choose(bedding, joints, loading);
 
@@ -185,6 +329,22 @@ namespace FloorBlock::Parameters
     }
   } // namespace
 
+  namespace
+  {
+    /** The expanded parameters with the values derived from others. */
+    std::string
+    expanded_with_notes(const ScenarioParameters &scenario,
+                        const std::string        &expanded)
+    {
+      if (scenario.loading.floor_lift_origin.empty())
+        return expanded;
+      return annotate_entry(expanded,
+                            "Loading",
+                            "Floor lift",
+                            scenario.loading.floor_lift_origin);
+    }
+  } // namespace
+
   ScenarioParameters
   read_scenario(const std::string              &path,
                 const std::vector<std::string> &overrides)
@@ -229,7 +389,7 @@ namespace FloorBlock::Parameters
 
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);
-    scenario.expanded_text = expanded.str();
+    scenario.expanded_text = expanded_with_notes(scenario, expanded.str());
     return scenario;
   }
 
@@ -247,7 +407,7 @@ namespace FloorBlock::Parameters
     scenario.parse_parameters(prm);
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);
-    scenario.expanded_text = expanded.str();
+    scenario.expanded_text = expanded_with_notes(scenario, expanded.str());
     scenario.original_text = expanded.str();
     return scenario;
   }
