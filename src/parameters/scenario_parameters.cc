@@ -336,12 +336,15 @@ namespace FloorBlock::Parameters
     expanded_with_notes(const ScenarioParameters &scenario,
                         const std::string        &expanded)
     {
-      if (scenario.loading.floor_lift_origin.empty())
-        return expanded;
-      return annotate_entry(expanded,
-                            "Loading",
-                            "Floor lift",
-                            scenario.loading.floor_lift_origin);
+      std::string text = expanded;
+      for (const auto &[entry, note] : scenario.material.derived_text)
+        text = annotate_entry(text, "Material", entry, note);
+      if (!scenario.loading.floor_lift_origin.empty())
+        text = annotate_entry(text,
+                              "Loading",
+                              "Floor lift",
+                              scenario.loading.floor_lift_origin);
+      return text;
     }
   } // namespace
 

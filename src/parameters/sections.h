@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -78,6 +79,9 @@ namespace FloorBlock::Parameters
     double bulk_modulus;  ///< K (Pa)
     double shear_modulus; ///< G (Pa)
     double density;       ///< kg/m^3
+    /// The entries left auto and what they were derived as, for
+    /// parameters.prm: {"Young's modulus", "derived from K and G: ..."}.
+    std::vector<std::pair<std::string, std::string>> derived_text;
 
     /** E = 9KG/(3K+G) (Pa). */
     double

@@ -152,6 +152,25 @@ namespace
      "",
      "--set 'Material/Bulk modulus=-9e9'",
      "Bulk modulus"},
+    {"both_pairs_of_moduli",
+     "",
+     "",
+     "--set \"Material/Young's modulus=16e9\" "
+     "--set \"Material/Poisson's ratio=0.2\"",
+     "Young's modulus and Poisson's ratio, and set the other pair to auto"},
+    {"half_a_pair_of_moduli",
+     "",
+     "",
+     "--set 'Material/Bulk modulus=auto' --set 'Material/Shear modulus=auto' "
+     "--set \"Material/Young's modulus=16e9\"",
+     "Material/Poisson's ratio"},
+    {"poissons_ratio_one_half",
+     "",
+     "",
+     "--set 'Material/Bulk modulus=auto' --set 'Material/Shear modulus=auto' "
+     "--set \"Material/Young's modulus=16e9\" "
+     "--set \"Material/Poisson's ratio=0.5\"",
+     "strictly between -1 and 0.5"},
     {"unknown_bedding_shape", "", "", "--set 'Bedding/Shape=curved'", "curved"},
     {"malformed_loaded_list",
      "",

@@ -106,3 +106,27 @@ TEST(FloorLift, MotionTheClosedFormsDoNotDescribeIsWarnedAbout)
     << result.output;
   std::filesystem::remove_all(folder);
 }
+
+// The tool shall take the rock's moduli as a site report gives them,
+// Young's modulus and Poisson's ratio, and echo the bulk and shear moduli
+// it derives from them.
+TEST(Moduli, YoungsModulusAndPoissonsRatioGiveBulkAndShear)
+{
+  const std::string folder = fresh_output_folder("moduli_e_nu");
+  const auto        result = run_floorblock(
+    "analytic params/default.prm --set 'Material/Bulk modulus=auto' "
+           "--set 'Material/Shear modulus=auto' "
+           "--set \"Material/Young's modulus=12e9\" "
+           "--set \"Material/Poisson's ratio=0.25\" --output " +
+    shell_quoted(folder));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const std::string parameters = read_text(folder + "/parameters.prm");
+  // K = E / (3 (1 - 2 nu)) = 8 GPa, G = E / (2 (1 + nu)) = 4.8 GPa.
+  EXPECT_NE(parameters.find("= auto # derived from E and nu: 8e+09 Pa"),
+            std::string::npos)
+    << parameters;
+  EXPECT_NE(parameters.find("= auto # derived from E and nu: 4.8e+09 Pa"),
+            std::string::npos)
+    << parameters;
+  std::filesystem::remove_all(folder);
+}

@@ -219,3 +219,27 @@ TEST(ScenarioParameters, FootprintOutsideTheFaceIsRefused)
   // An offset that puts the footprint's end on the face's end passes.
   EXPECT_EQ(error_of(footprint_scene, {"Loading/Footprint offset=3"}), "");
 }
+
+// The tool shall derive K and G from E and nu, E and nu from K and G, and
+// take the chapter's Table 6.1 when neither pair is given.
+TEST(ScenarioParameters, EitherPairOfModuliDescribesTheRock)
+{
+  const auto from_e_nu =
+    Parameters::read_defaults("moduli",
+                              {"Material/Young's modulus=12e9",
+                               "Material/Poisson's ratio=0.25"});
+  EXPECT_NEAR(from_e_nu.material.bulk_modulus, 8e9, 1e-6);
+  EXPECT_NEAR(from_e_nu.material.shear_modulus, 4.8e9, 1e-6);
+  EXPECT_NEAR(from_e_nu.material.youngs_modulus(), 12e9, 1e-5);
+  EXPECT_NEAR(from_e_nu.material.poissons_ratio(), 0.25, 1e-15);
+
+  const auto table = Parameters::read_defaults("moduli", {});
+  EXPECT_EQ(table.material.bulk_modulus, 9e9);
+  EXPECT_EQ(table.material.shear_modulus, 6.7e9);
+
+  EXPECT_NE(error_of(default_scene,
+                     {"Material/Young's modulus=12e9",
+                      "Material/Poisson's ratio=0.25"})
+              .find("Material/Bulk modulus"),
+            std::string::npos);
+}
