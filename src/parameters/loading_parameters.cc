@@ -50,12 +50,16 @@ namespace FloorBlock::Parameters
       "it). Only differs where the block tops are inclined "
       "(Bedding/Floor uplift reading = inclined). Units: none.");
     prm.declare_entry(
-      "Loaded blocks",
+      "Loaded blocks from face",
       "4,5,6",
       List(Integer(1, largest_block_count), 0, largest_block_count, ","),
       "Blocks under the support, counted from the face "
-      "(1 = the block next to the face block); comma-separated, "
-      "may be empty. Units: none.");
+      "(1 = the block next to the face block, as the chapter counts "
+      "supports: \"the 4th, 5th and 6th block from the face\"); "
+      "comma-separated, may be empty. The output numbers blocks the other "
+      "way, from the free end (block n is next to the face block), and "
+      "report.md and `analytic` name the loaded blocks in that numbering. "
+      "Units: none.");
     prm.declare_entry(
       "Floor lift",
       "auto",
@@ -127,7 +131,7 @@ namespace FloorBlock::Parameters
     gravity = prm.get_double("Gravity");
     support_load =
       Units::tonnes_force_to_newtons(prm.get_double("Support load"));
-    const std::string loaded = prm.get("Loaded blocks");
+    const std::string loaded = prm.get("Loaded blocks from face");
     support_load_direction   = prm.get("Support load direction") == "vertical" ?
                                  SupportLoadDirection::vertical :
                                  SupportLoadDirection::top_normal;
@@ -165,7 +169,7 @@ namespace FloorBlock::Parameters
       {
         const unsigned int block = dealii::Utilities::string_to_int(entry);
         if (!seen.insert(block).second)
-          throw InputError("Loading/Loaded blocks",
+          throw InputError("Loading/Loaded blocks from face",
                            loaded,
                            "each block may appear only once");
         loaded_blocks_from_face.push_back(block);

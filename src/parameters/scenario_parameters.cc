@@ -242,7 +242,7 @@ namespace FloorBlock::Parameters
 
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
-        throw InputError("Loading/Loaded blocks",
+        throw InputError("Loading/Loaded blocks from face",
                          std::to_string(from_face),
                          "each loaded block must be between 1 and "
                          "Geometry/Number of blocks = " +

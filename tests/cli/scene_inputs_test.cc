@@ -130,3 +130,19 @@ TEST(Moduli, YoungsModulusAndPoissonsRatioGiveBulkAndShear)
     << parameters;
   std::filesystem::remove_all(folder);
 }
+
+// The tool shall say which blocks carry the support in the numbering of
+// its output, where block 1 is at the free end.
+TEST(LoadedBlocks, NamedInTheOutputsNumbering)
+{
+  const std::string folder = fresh_output_folder("loaded_blocks");
+  const auto        result = run_floorblock(
+    "analytic params/default.prm --set 'Geometry/Number of blocks=8' "
+           "--set 'Loading/Loaded blocks from face=1,2,3' --output " +
+    shell_quoted(folder));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("Support load on blocks 6, 7, 8 (1 = free end"),
+            std::string::npos)
+    << result.output;
+  std::filesystem::remove_all(folder);
+}

@@ -62,7 +62,7 @@ TEST(ScenarioParameters, DeclaresEveryRequiredName)
                            "Shear stiffness",
                            "Gravity",
                            "Support load",
-                           "Loaded blocks",
+                           "Loaded blocks from face",
                            "Floor lift",
                            "Corner rounding radius",
                            "Corner size",
@@ -153,11 +153,11 @@ TEST(ScenarioParameters, MissingFileAndInconsistentScenes)
   EXPECT_NE(error_of("/nonexistent/scene.prm", {}).find("does not exist"),
             std::string::npos);
   EXPECT_NE(error_of(default_scene, {"Geometry/Number of blocks=2"})
-              .find("Loading/Loaded blocks"),
+              .find("Loading/Loaded blocks from face"),
             std::string::npos);
-  EXPECT_NE(
-    error_of(default_scene, {"Loading/Loaded blocks=1,1"}).find("only once"),
-    std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Loading/Loaded blocks from face=1,1"})
+              .find("only once"),
+            std::string::npos);
   EXPECT_NE(error_of(default_scene, {"Geometry/Corner rounding radius=0.3"})
               .find("quarter"),
             std::string::npos);
@@ -168,7 +168,7 @@ TEST(ScenarioParameters, JsonSceneIsAccepted)
 {
   const std::string path = write_scene(
     "scene.json",
-    R"({"Geometry": {"Number of blocks": "4"}, "Loading": {"Loaded blocks": "1,2"}})");
+    R"({"Geometry": {"Number of blocks": "4"}, "Loading": {"Loaded blocks from face": "1,2"}})");
   const auto scene = read_scenario(path, {});
   EXPECT_EQ(scene.geometry.n_blocks, 4u);
   EXPECT_EQ(scene.loaded_blocks(), (std::vector<unsigned int>{4, 3}));
