@@ -266,6 +266,33 @@ namespace
         }
     return exit_code::bad_input;
   }
+
+  /**
+   * An option written before the command (`floorblock --output DIR run
+   * scene.prm`) belongs to the command: CLI11 reports only that arguments
+   * were not expected. Returns the message that says where it goes, or ""
+   * when the first argument is no such option.
+   */
+  std::string
+  option_before_command(const int argc, char **argv)
+  {
+    if (argc < 3 || argv[1][0] != '-' || std::string(argv[1]) == "-h" ||
+        std::string(argv[1]) == "--help")
+      return "";
+    for (int position = 2; position < argc; ++position)
+      if (command_table().count(argv[position]) > 0)
+        {
+          std::string options, rest;
+          for (int k = 1; k < position; ++k)
+            options += std::string(k > 1 ? " " : "") + argv[k];
+          for (int k = position + 1; k < argc; ++k)
+            rest += std::string(" ") + argv[k];
+          return "'" + options + "' stands before the command '" +
+                 argv[position] + "'; options belong after it: floorblock " +
+                 argv[position] + rest + " " + options;
+        }
+    return "";
+  }
 } // namespace
 
 int
@@ -289,6 +316,12 @@ main(int argc, char **argv)
     }
   catch (const CLI::ParseError &error)
     {
+      const std::string misplaced = option_before_command(argc, argv);
+      if (!misplaced.empty())
+        {
+          std::cerr << "floorblock: error: " << misplaced << std::endl;
+          return exit_code::bad_input;
+        }
       const int code = cli.exit(error);
       return code == 0 ? exit_code::success : exit_code::bad_input;
     }

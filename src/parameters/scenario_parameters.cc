@@ -295,6 +295,49 @@ namespace FloorBlock::Parameters
       return text.str();
     }
 
+    /** Every declared entry as "Subsection/Entry" (nested: "A/B/Entry"). */
+    std::vector<std::string>
+    declared_entry_paths()
+    {
+      ParameterHandler prm;
+      ScenarioParameters::declare_parameters(prm);
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      std::istringstream       lines(text.str());
+      std::string              line;
+      std::vector<std::string> open, paths;
+      while (std::getline(lines, line))
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind("subsection ", 0) == 0)
+            open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+          else if (trimmed == "end" && !open.empty())
+            open.pop_back();
+          else if (trimmed.rfind("set ", 0) == 0)
+            {
+              std::string path;
+              for (const std::string &subsection : open)
+                path += subsection + "/";
+              paths.push_back(path +
+                              dealii::Utilities::trim(
+                                trimmed.substr(4, trimmed.find('=') - 4)));
+            }
+        }
+      return paths;
+    }
+
+    /** parameter_error_text() and, where it helps, what to do about it. */
+    std::string
+    explained(const dealii::ExceptionBase &error,
+              const std::string           &parameter_path,
+              const std::string           &value,
+              const std::string           &file_text)
+    {
+      const std::string text =
+        parameter_error_text(error, parameter_path, value);
+      return text + parse_error_hint(text, file_text, declared_entry_paths());
+    }
+
     /// Splits "Joints/Bedding friction angle=20" into path and value and sets
     /// it.
     void
@@ -322,7 +365,7 @@ namespace FloorBlock::Parameters
       catch (const dealii::ExceptionBase &error)
         {
           throw InputError("--set '" + assignment +
-                           "': " + parameter_error_text(error, path, value));
+                           "': " + explained(error, path, value, ""));
         }
       for (unsigned int level = 0; level + 1 < levels.size(); ++level)
         prm.leave_subsection();
@@ -367,7 +410,8 @@ namespace FloorBlock::Parameters
       }
     catch (const dealii::ExceptionBase &error)
       {
-        throw InputError(path + ": " + parameter_error_text(error, "", ""));
+        throw InputError(path + ": " +
+                         explained(error, "", "", scenario.original_text));
       }
     catch (const boost::property_tree::ptree_error &error)
       {
