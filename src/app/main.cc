@@ -174,7 +174,21 @@ namespace
                       "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
     sweep->add_option("--limit",
                       options.case_limit,
-                      "With --fem: run at most this many cases (0 = all)");
+                      "With --fem: run at most this many of the chosen cases, "
+                      "in grid order (0 = all)");
+    sweep
+      ->add_option("--curvatures",
+                   options.curvatures,
+                   "With --fem: only the grid points with these k (m), e.g. "
+                   "400,50; 0 is the planar bed of Figure 6.5")
+      ->delimiter(',');
+    sweep
+      ->add_option("--loads",
+                   options.load_range,
+                   "With --fem: only the grid points whose support load lies "
+                   "in MIN,MAX (t), e.g. 600,800")
+      ->delimiter(',')
+      ->expected(2);
   }
 
   /** The options of converge beyond the shared ones. */

@@ -146,3 +146,20 @@ TEST(LoadedBlocks, NamedInTheOutputsNumbering)
     << result.output;
   std::filesystem::remove_all(folder);
 }
+
+// The tool shall run the FEM only on the grid points the user chose:
+// a figure, its curvatures and a support load range.
+TEST(SweepFem, RunsTheChosenFigureCurvatureAndLoads)
+{
+  const std::string folder = fresh_output_folder("sweep_chosen");
+  const auto        result = run_floorblock(
+    "sweep tests/scenarios/three_blocks.prm --fem --figure fig6_10_11 "
+           "--curvatures 50 --loads 850,900 --limit 1 --output " +
+    shell_quoted(folder));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  // k = 50 m and 900 t: the six bedding friction angles, one run.
+  EXPECT_NE(result.output.find("1 of 6 chosen FEM cases finished"),
+            std::string::npos)
+    << result.output;
+  std::filesystem::remove_all(folder);
+}
