@@ -256,9 +256,9 @@ namespace FloorBlock::Parameters
     model.choose(bedding, joints, loading);
 
     // The elastic FEM pairs the nodes of both joint sides one to one
-    // (src/contact/README.md). Non-matching sides used to pass here and stop
-    // only after meshing, with a message about a node instead of this entry
-    // and with files already written.
+    // (src/contact/README.md). Refused here, non-matching sides stop before
+    // meshing with this entry's name instead of after it with a message
+    // about a node and files already written.
     if (!mesh.matching_joints && model.chosen == BlockModel::elastic)
       throw InputError("Mesh/Matching joints",
                        "false",
