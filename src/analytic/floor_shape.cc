@@ -51,6 +51,37 @@ namespace FloorBlock::Analytic
   }
 
   double
+  parabolic_bedding_rise(const std::size_t n_blocks,
+                         const double      block_width,
+                         const double      curvature_length)
+  {
+    if (n_blocks == 0)
+      throw InputError("Number of blocks", "0", ">= 1");
+    require_positive(block_width, "Block width", "m");
+    require_positive(curvature_length, "Floor curvature length k", "m");
+    const double chain_length = static_cast<double>(n_blocks) * block_width;
+    return finite_or_throw(chain_length * chain_length / curvature_length,
+                           "Bedding rise (nL)^2/k");
+  }
+
+  double
+  planar_bedding_rise(const std::size_t n_blocks,
+                      const double      block_width,
+                      const double      inclination)
+  {
+    if (n_blocks == 0)
+      throw InputError("Number of blocks", "0", ">= 1");
+    require_positive(block_width, "Block width", "m");
+    if (!(std::abs(inclination) < M_PI_2))
+      throw InputError("Bedding inclination",
+                       std::to_string(inclination),
+                       "finite, between -pi/2 and pi/2 rad");
+    return finite_or_throw(static_cast<double>(n_blocks) * block_width *
+                             std::tan(inclination),
+                           "Bedding rise nL tan(alpha)");
+  }
+
+  double
   joint_floor_lift(const double inclination_away_side,
                    const double inclination_face_side,
                    const double block_width)

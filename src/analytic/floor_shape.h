@@ -26,6 +26,39 @@ namespace FloorBlock::Analytic
                          const double      curvature_length);
 
   /**
+   * @brief Rise of a parabolic bedding \f$y = x^2/k\f$ from the face to the
+   * free end of the chain, \f$(nL)^2/k\f$ (m): the sum of
+   * \f$L\tan\alpha_i\f$ over the chord inclinations of
+   * parabolic_inclinations(), the floor the closed forms stand the blocks
+   * on. The FEM's parabolic uplift reaches this height at x = nL when it
+   * lifts a flat bedding into that floor.
+   * @param[in] n_blocks n >= 1.
+   * @param[in] block_width L (m), > 0.
+   * @param[in] curvature_length k (m), > 0.
+   * @throw FloorBlock::InputError for n = 0 or non-positive L or k.
+   */
+  double
+  parabolic_bedding_rise(const std::size_t n_blocks,
+                         const double      block_width,
+                         const double      curvature_length);
+
+  /**
+   * @brief Rise of a planar bedding of inclination alpha from the face to
+   * the free end of the chain, \f$nL\tan\alpha\f$ (m), negative where the
+   * bed falls away from the face: the sum of \f$L\tan\alpha\f$ over the
+   * n blocks the closed forms stand on it.
+   * @param[in] n_blocks n >= 1.
+   * @param[in] block_width L (m), > 0.
+   * @param[in] inclination alpha (rad), |alpha| < pi/2.
+   * @throw FloorBlock::InputError for n = 0, non-positive L or |alpha| >=
+   * pi/2.
+   */
+  double
+  planar_bedding_rise(const std::size_t n_blocks,
+                      const double      block_width,
+                      const double      inclination);
+
+  /**
    * @brief Floor lift y of eq. 6.51 at a joint: the differential lift
    * across one block width produced by the relative rotation of the two
    * joint faces, \f$y = L\tan(\alpha_{away} - \alpha_{face})\f$.

@@ -3,6 +3,7 @@
 #include <output/result_folder.h>
 #include <scene/closed_forms.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace FloorBlock::App
@@ -18,6 +19,14 @@ namespace FloorBlock::App
     folder.write_json("analytic.json", Output::analytic_json(closed_forms));
     folder.write("analytic.csv", Output::analytic_csv(closed_forms));
 
+    std::vector<unsigned int> loaded = scene.loaded_blocks();
+    std::sort(loaded.begin(), loaded.end());
+    std::cout << "Support load on blocks";
+    for (const unsigned int block : loaded)
+      std::cout << (block == loaded.front() ? " " : ", ") << block;
+    std::cout << (loaded.empty() ? " none" : "")
+              << " (1 = free end, the numbering of every output; "
+                 "Loading/Loaded blocks from face counts from the face)\n";
     std::cout << "Closed forms for scene '" << scene.scene_name << "'"
               << Output::analytic_table(closed_forms) << "\nwrote "
               << folder.path_of("analytic.json") << ", "

@@ -1,13 +1,26 @@
 #include <app/command_options.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <filesystem>
+#include <iostream>
 
 namespace FloorBlock::App
 {
   Parameters::ScenarioParameters
   read_scene(const CommandOptions &options)
   {
-    return Parameters::read_scenario(options.scene_path, options.overrides);
+    auto scene =
+      Parameters::read_scenario(options.scene_path, options.overrides);
+    // The closed-form commands run without MPI; under mpirun one process
+    // speaks for all.
+    int mpi_started = 0;
+    MPI_Initialized(&mpi_started);
+    if (!mpi_started ||
+        dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      for (const std::string &warning : scene.warnings)
+        std::cerr << "warning: " << warning << std::endl;
+    return scene;
   }
 
   void

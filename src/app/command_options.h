@@ -22,6 +22,11 @@ namespace FloorBlock::App
     std::string              verification_case; ///< verify: e.g. "hertz"
     std::string              figure;            ///< sweep: only this figure
     unsigned int             case_limit = 0; ///< sweep --fem: at most this many
+    /// sweep --fem: only grid points with these k (m; 0 = planar); empty: all.
+    std::vector<double> curvatures;
+    /// sweep --fem: only grid points with a support load in [first, second]
+    /// (t); empty: all.
+    std::vector<double> load_range;
     /** converge: ladder length; 0 = not given (default_levels, time-budgeted).
      */
     unsigned int n_levels = 0;

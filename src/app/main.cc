@@ -175,7 +175,21 @@ namespace
                       "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
     sweep->add_option("--limit",
                       options.case_limit,
-                      "With --fem: run at most this many cases (0 = all)");
+                      "With --fem: run at most this many of the chosen cases, "
+                      "in grid order (0 = all)");
+    sweep
+      ->add_option("--curvatures",
+                   options.curvatures,
+                   "With --fem: only the grid points with these k (m), e.g. "
+                   "400,50; 0 is the planar bed of Figure 6.5")
+      ->delimiter(',');
+    sweep
+      ->add_option("--loads",
+                   options.load_range,
+                   "With --fem: only the grid points whose support load lies "
+                   "in MIN,MAX (t), e.g. 600,800")
+      ->delimiter(',')
+      ->expected(2);
   }
 
   /** The options of converge beyond the shared ones. */
@@ -267,6 +281,33 @@ namespace
         }
     return exit_code::bad_input;
   }
+
+  /**
+   * An option written before the command (`floorblock --output DIR run
+   * scene.prm`) belongs to the command: CLI11 reports only that arguments
+   * were not expected. Returns the message that says where it goes, or ""
+   * when the first argument is no such option.
+   */
+  std::string
+  option_before_command(const int argc, char **argv)
+  {
+    if (argc < 3 || argv[1][0] != '-' || std::string(argv[1]) == "-h" ||
+        std::string(argv[1]) == "--help")
+      return "";
+    for (int position = 2; position < argc; ++position)
+      if (command_table().count(argv[position]) > 0)
+        {
+          std::string options, rest;
+          for (int k = 1; k < position; ++k)
+            options += std::string(k > 1 ? " " : "") + argv[k];
+          for (int k = position + 1; k < argc; ++k)
+            rest += std::string(" ") + argv[k];
+          return "'" + options + "' stands before the command '" +
+                 argv[position] + "'; options belong after it: floorblock " +
+                 argv[position] + rest + " " + options;
+        }
+    return "";
+  }
 } // namespace
 
 int
@@ -291,6 +332,12 @@ main(int argc, char **argv)
     }
   catch (const CLI::ParseError &error)
     {
+      const std::string misplaced = option_before_command(argc, argv);
+      if (!misplaced.empty())
+        {
+          std::cerr << "floorblock: error: " << misplaced << std::endl;
+          return exit_code::bad_input;
+        }
       const int code = cli.exit(error);
       return code == 0 ? exit_code::success : exit_code::bad_input;
     }

@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <set>
 
@@ -18,6 +20,83 @@ namespace FloorBlock::App
 {
   namespace
   {
+    std::string
+    number_list(const std::set<double> &values)
+    {
+      std::string text;
+      for (const double value : values)
+        text += (text.empty() ? "" : ", ") + fmt::format("{}", value);
+      return text;
+    }
+
+    /**
+     * The grid points of the chosen figures, curvatures and load range, in
+     * grid order; refuses a choice that selects nothing, naming what the
+     * grid holds.
+     */
+    std::vector<Scene::FigurePoint>
+    chosen_points(const CommandOptions                 &options,
+                  const Parameters::ScenarioParameters &scene)
+    {
+      std::vector<Scene::FigurePoint> figure_points;
+      for (auto &&list : {Scene::lateral_force_figures(scene),
+                          Scene::floor_stress_figures(scene)})
+        for (const auto &point : list)
+          if (options.figure.empty() || point.figure == options.figure)
+            figure_points.push_back(point);
+
+      std::set<double> grid_curvatures, grid_loads;
+      for (const auto &point : figure_points)
+        {
+          grid_curvatures.insert(point.curvature);
+          grid_loads.insert(std::round(point.support_load /
+                                       Units::tonnes_force_to_newtons(1.)));
+        }
+      const std::string figures =
+        options.figure.empty() ? "the figures" : options.figure;
+      for (const double curvature : options.curvatures)
+        if (grid_curvatures.count(curvature) == 0)
+          throw InputError("--curvatures",
+                           fmt::format("{}", curvature),
+                           "one of the k (m) of " + figures + ": " +
+                             number_list(grid_curvatures) +
+                             " (0 = planar bed)");
+      if (!options.load_range.empty() &&
+          !(options.load_range[0] <= options.load_range[1]))
+        throw InputError("--loads",
+                         fmt::format("{},{}",
+                                     options.load_range[0],
+                                     options.load_range[1]),
+                         "MIN,MAX in tonnes with MIN <= MAX");
+
+      std::vector<Scene::FigurePoint> points;
+      for (const auto &point : figure_points)
+        {
+          const double tonnes =
+            point.support_load / Units::tonnes_force_to_newtons(1.);
+          const bool curvature_chosen =
+            options.curvatures.empty() ||
+            std::find(options.curvatures.begin(),
+                      options.curvatures.end(),
+                      point.curvature) != options.curvatures.end();
+          // Half a tonne either side: the grid's loads are whole tonnes.
+          const bool load_chosen = options.load_range.empty() ||
+                                   (tonnes > options.load_range[0] - 0.5 &&
+                                    tonnes < options.load_range[1] + 0.5);
+          if (curvature_chosen && load_chosen)
+            points.push_back(point);
+        }
+      if (points.empty())
+        throw InputError("--loads",
+                         fmt::format("{},{}",
+                                     options.load_range[0],
+                                     options.load_range[1]),
+                         "a range holding a support load of the chosen "
+                         "points: " +
+                           number_list(grid_loads) + " t");
+      return points;
+    }
+
     int
     fem_sweep_command(const CommandOptions                 &options,
                       const Parameters::ScenarioParameters &scene)
@@ -30,12 +109,8 @@ namespace FloorBlock::App
         throw InputError("--figure",
                          options.figure,
                          "one of fig6_5, fig6_6, fig6_7, fig6_10_11");
-      std::vector<Scene::FigurePoint> points;
-      for (auto &&list : {Scene::lateral_force_figures(scene),
-                          Scene::floor_stress_figures(scene)})
-        for (const auto &point : list)
-          if (options.figure.empty() || point.figure == options.figure)
-            points.push_back(point);
+      const std::vector<Scene::FigurePoint> points =
+        chosen_points(options, scene);
 
       const Output::ResultFolder folder(output_directory(options, scene));
       folder.write_inputs(scene);
@@ -43,9 +118,28 @@ namespace FloorBlock::App
         Pipeline::run_fem_sweep(points, folder, options.case_limit);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         std::cout << points.size() - remaining << " of " << points.size()
-                  << " FEM cases finished; results in "
+                  << " chosen FEM cases finished; results in "
                   << output_directory(options, scene) << std::endl;
       return 0;
+    }
+
+    /** Options that choose FEM cases do nothing without --fem. */
+    void
+    refuse_case_options_without_fem(const CommandOptions &options)
+    {
+      const std::vector<std::pair<std::string, bool>> given = {
+        {"--figure", !options.figure.empty()},
+        {"--limit", options.case_limit > 0},
+        {"--curvatures", !options.curvatures.empty()},
+        {"--loads", !options.load_range.empty()}};
+      for (const auto &[name, present] : given)
+        if (present)
+          throw InputError(name +
+                           " chooses the FEM cases of `sweep --fem` and "
+                           "does nothing without --fem (the closed-form "
+                           "sweep evaluates every point of every figure in "
+                           "about a second): add --fem or leave " +
+                           name + " out");
     }
   } // namespace
 
@@ -58,6 +152,7 @@ namespace FloorBlock::App
         require_plane_scene(scene, "sweep --fem");
         return fem_sweep_command(options, scene);
       }
+    refuse_case_options_without_fem(options);
     const Output::ResultFolder folder(output_directory(options, scene));
     folder.write_inputs(scene);
 

@@ -6,6 +6,9 @@
 #include <output/report_markdown.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 namespace FloorBlock::Output
 {
@@ -42,6 +45,16 @@ namespace FloorBlock::Output
                             relative_error(errors.sigma_max));
       return text;
     }
+
+    /** The loaded blocks in the output's numbering (1 = free end), rising. */
+    std::string
+    loaded_blocks_text(const Parameters::ScenarioParameters &scene)
+    {
+      std::vector<unsigned int> blocks = scene.loaded_blocks();
+      std::sort(blocks.begin(), blocks.end());
+      return blocks.empty() ? std::string("none") :
+                              fmt::format("{}", fmt::join(blocks, ", "));
+    }
   } // namespace
 
   std::string
@@ -55,8 +68,8 @@ namespace FloorBlock::Output
     std::string text = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
       "Scene: {} blocks {} m x {} m, bed {}, phi_h = {:.1f} deg, phi_v = "
-      "{:.1f} deg, support load {:.0f} t on blocks {} from the face, b = {} "
-      "m, floor lift {} m ({}), joints {}.\n\n"
+      "{:.1f} deg, support load {:.0f} t on blocks {} from the face (blocks "
+      "{} in this report's numbering), b = {} m, floor lift {} m ({}), joints {}.\n\n"
       "Model: {} ({}): {} ({}); {} DoFs, {} increments, {} Newton "
       "iterations, {} cutbacks, {}.\n\n",
       scene.scene_name,
@@ -72,8 +85,13 @@ namespace FloorBlock::Output
       Units::radians_to_degrees(scene.joints.vertical_friction_angle),
       scene.loading.support_load / Units::tonnes_force_to_newtons(1.),
       fmt::join(scene.loading.loaded_blocks_from_face, ","),
+      loaded_blocks_text(scene),
       scene.geometry.support_width,
-      scene.loading.floor_lift,
+      scene.loading.floor_lift_origin.empty() ?
+        fmt::format("{}", scene.loading.floor_lift) :
+        fmt::format("{} ({})",
+                    scene.loading.floor_lift,
+                    scene.loading.floor_lift_origin),
       report.converged() ? "reached" : "not reached",
       scene.joints.law == Contact::JointLawKind::rigid ? "rigid" : "compliant",
       report.model,
@@ -86,6 +104,8 @@ namespace FloorBlock::Output
       report.n_cutbacks,
       force_balance_text(report.force_balance));
 
+    for (const std::string &warning : scene.warnings)
+      text += "**Warning:** " + warning + "\n\n";
     if (report.model != "elastic FEM")
       text += "Columns and verdicts marked FEM hold the numbers of the " +
               report.model + " model.\n\n";

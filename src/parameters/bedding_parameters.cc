@@ -1,3 +1,4 @@
+#include <analytic/floor_shape.h>
 #include <common/units.h>
 #include <parameters/sections.h>
 
@@ -66,6 +67,15 @@ namespace FloorBlock::Parameters
   {
     return floor_uplift == Geometry::FloorUplift::lifted_flat_bedding ||
            (shape == Geometry::BeddingShape::planar && inclination == 0.);
+  }
+
+  double
+  BeddingParameters::rise_at_free_end(const unsigned int n_blocks,
+                                      const double       block_width) const
+  {
+    if (shape == Geometry::BeddingShape::parabolic)
+      return Analytic::parabolic_bedding_rise(n_blocks, block_width, curvature);
+    return Analytic::planar_bedding_rise(n_blocks, block_width, inclination);
   }
 
   void

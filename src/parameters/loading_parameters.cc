@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <common/units.h>
+#include <parameters/auto_or_double.h>
 #include <parameters/sections.h>
 
 #include <set>
@@ -49,22 +50,43 @@ namespace FloorBlock::Parameters
       "it). Only differs where the block tops are inclined "
       "(Bedding/Floor uplift reading = inclined). Units: none.");
     prm.declare_entry(
-      "Loaded blocks",
+      "Loaded blocks from face",
       "4,5,6",
       List(Integer(1, largest_block_count), 0, largest_block_count, ","),
       "Blocks under the support, counted from the face "
-      "(1 = the block next to the face block); comma-separated, "
-      "may be empty. Units: none.");
-    prm.declare_entry("Floor lift",
-                      "0.09",
-                      Double(0, 10),
-                      "Size of the base motion in the floor-uplift stage of "
-                      "the FEM: the translation distance (vertical, dip "
-                      "modes), the rise of the face end (tilt), the rise of "
-                      "the free end (parabola). The y of Eq. 6.51 is not this "
-                      "input: it follows from the bedding shape (closed "
-                      "forms) or from the computed block rotations (FEM). "
-                      "Units: m.");
+      "(1 = the block next to the face block, as the chapter counts "
+      "supports: \"the 4th, 5th and 6th block from the face\"); "
+      "comma-separated, may be empty. The output numbers blocks the other "
+      "way, from the free end (block n is next to the face block), and "
+      "report.md and `analytic` name the loaded blocks in that numbering. "
+      "Units: none.");
+    prm.declare_entry(
+      "Floor lift",
+      "auto",
+      AutoOrDouble(0, 10),
+      "Size of the base motion in the floor-uplift stage of the FEM: the "
+      "translation distance (vertical, dip modes), the rise of the face end "
+      "(tilt), the rise of the free end (parabola, slope). auto: the rise of "
+      "the bedding the closed forms stand the blocks on, from the face to "
+      "the free end x = nL: (nL)^2/k on a parabolic bed, nL tan(alpha) on a "
+      "planar one (0 where that is negative). With Bedding/Floor uplift "
+      "reading = lifted and Uplift mode = parabola (parabolic bed) or slope "
+      "(planar bed) the FEM then lifts its flat bed into the closed forms' "
+      "floor, and a number that differs from that rise by more than "
+      "1 % of it is refused unless Floor lift against bedding = may "
+      "differ. The y of Eq. 6.51 is not this input: it follows from the "
+      "bedding shape (closed forms) or from the computed block rotations "
+      "(FEM). Units: m.");
+    prm.declare_entry(
+      "Floor lift against bedding",
+      "must match",
+      Selection("must match|may differ"),
+      "must match: a numeric Floor lift that differs from the bedding's "
+      "rise (see Floor lift) by more than 1 % of it is refused, because the "
+      "FEM would lift a different floor than the closed forms stand on. "
+      "may differ: the FEM lifts by Floor lift whatever the bedding; the "
+      "terminal and report.md say that the two models see different "
+      "floors. Units: none.");
     prm.declare_entry("Uplift mode",
                       "parabola",
                       Selection("vertical|dip toward face|dip away from face|"
@@ -109,21 +131,25 @@ namespace FloorBlock::Parameters
     gravity = prm.get_double("Gravity");
     support_load =
       Units::tonnes_force_to_newtons(prm.get_double("Support load"));
-    const std::string loaded = prm.get("Loaded blocks");
+    const std::string loaded = prm.get("Loaded blocks from face");
     support_load_direction   = prm.get("Support load direction") == "vertical" ?
                                  SupportLoadDirection::vertical :
                                  SupportLoadDirection::top_normal;
-    floor_lift               = prm.get_double("Floor lift");
-    const std::string mode   = prm.get("Uplift mode");
-    uplift_mode              = mode == "vertical" ? UpliftMode::vertical :
-                               mode == "dip toward face" ? UpliftMode::dip_toward_face :
-                               mode == "dip away from face" ?
-                                                           UpliftMode::dip_away_from_face :
-                               mode == "tilt"  ? UpliftMode::tilt :
-                               mode == "slope" ? UpliftMode::slope :
-                                                 UpliftMode::parabola;
-    footprint_length         = prm.get_double("Footprint length");
-    const double offset      = prm.get_double("Footprint offset");
+    const std::string lift   = prm.get("Floor lift");
+    floor_lift_auto          = is_auto(lift);
+    floor_lift = floor_lift_auto ? 0. : prm.get_double("Floor lift");
+    floor_lift_may_differ =
+      prm.get("Floor lift against bedding") == "may differ";
+    const std::string mode = prm.get("Uplift mode");
+    uplift_mode            = mode == "vertical"        ? UpliftMode::vertical :
+                             mode == "dip toward face" ? UpliftMode::dip_toward_face :
+                             mode == "dip away from face" ?
+                                                         UpliftMode::dip_away_from_face :
+                             mode == "tilt"  ? UpliftMode::tilt :
+                             mode == "slope" ? UpliftMode::slope :
+                                               UpliftMode::parabola;
+    footprint_length       = prm.get_double("Footprint length");
+    const double offset    = prm.get_double("Footprint offset");
     prm.leave_subsection();
 
     if (offset == centred_offset)
@@ -143,7 +169,7 @@ namespace FloorBlock::Parameters
       {
         const unsigned int block = dealii::Utilities::string_to_int(entry);
         if (!seen.insert(block).second)
-          throw InputError("Loading/Loaded blocks",
+          throw InputError("Loading/Loaded blocks from face",
                            loaded,
                            "each block may appear only once");
         loaded_blocks_from_face.push_back(block);

@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <string>
+#include <vector>
 
 namespace FloorBlock::Parameters
 {
@@ -19,4 +20,25 @@ namespace FloorBlock::Parameters
   parameter_error_text(const dealii::ExceptionBase &error,
                        const std::string           &parameter_path,
                        const std::string           &value);
+
+  /**
+   * @brief Up to three declared "Subsection/Entry" paths whose entry name
+   * is nearest to @p name: at most max(2, length/3) letters apart
+   * (Levenshtein, ignoring case), or containing it or contained in it.
+   */
+  std::vector<std::string>
+  nearest_names(const std::string              &name,
+                const std::vector<std::string> &declared_paths);
+
+  /**
+   * @brief What to do about a ParameterHandler message @p message, or "":
+   * for an unknown entry the nearest declared names ("did you mean ...?");
+   * for a subsection entered inside another, or a file that ends inside
+   * one, the subsection still open, where it was opened and where its
+   * `end` belongs (from @p file_text, the scene file as read).
+   */
+  std::string
+  parse_error_hint(const std::string              &message,
+                   const std::string              &file_text,
+                   const std::vector<std::string> &declared_paths);
 } // namespace FloorBlock::Parameters

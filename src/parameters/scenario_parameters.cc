@@ -3,6 +3,7 @@
 #include <parameters/scenario_parameters.h>
 #include <parameters/scene_file_checks.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -66,6 +67,146 @@ namespace FloorBlock::Parameters
                            std::to_string(geometry.face_length - length) +
                            " m");
     }
+
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream text;
+      text.precision(6);
+      text << value;
+      return text.str();
+    }
+
+    std::string
+    metres(const double value)
+    {
+      return number_text(value) + " m";
+    }
+
+    /**
+     * The closed forms stand the blocks on the bedding; the FEM starts from
+     * a flat bed (reading lifted) and bends it into that bedding only when
+     * its uplift follows the same profile and reaches the bedding's rise at
+     * the free end. Elsewhere the FEM's lift is a motion the closed forms
+     * do not describe.
+     */
+    void
+    resolve_floor_lift(const GeometryParameters &geometry,
+                       const BeddingParameters  &bedding,
+                       LoadingParameters        &loading,
+                       std::vector<std::string> &warnings)
+    {
+      // Relative to the bedding's rise: a lift within 1 % bends the FEM's
+      // bed into the closed forms' floor up to less than the chapter's
+      // quoted digits.
+      constexpr double tolerance = 0.01;
+      const bool parabolic = bedding.shape == Geometry::BeddingShape::parabolic;
+      const bool follows_bedding =
+        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding &&
+        (parabolic ? loading.uplift_mode == UpliftMode::parabola :
+                     loading.uplift_mode == UpliftMode::slope);
+      const double rise =
+        bedding.rise_at_free_end(geometry.n_blocks, geometry.block_width);
+      const std::string rise_text =
+        (parabolic ?
+           "(nL)^2/k = (" + std::to_string(geometry.n_blocks) + " x " +
+             metres(geometry.block_width) + ")^2 / " +
+             metres(bedding.curvature) :
+           "nL tan(alpha) = " + std::to_string(geometry.n_blocks) + " x " +
+             metres(geometry.block_width) + " x tan(" +
+             number_text(bedding.inclination * 180. / M_PI) + " deg)") +
+        " = " + metres(rise);
+      const std::string how_to_fix =
+        parabolic ? "Bedding/Curvature, Geometry/Number of blocks or Block "
+                    "width" :
+                    "Bedding/Inclination, Geometry/Number of blocks or Block "
+                    "width";
+
+      if (loading.floor_lift_auto)
+        {
+          if (follows_bedding && rise < 0.)
+            throw InputError("Loading/Floor lift",
+                             "auto",
+                             "needs a bedding that rises away from the face: "
+                             "the bedding's " +
+                               rise_text +
+                               "; set Bedding/Inclination >= 0 or give the "
+                               "lift in m (>= 0)");
+          loading.floor_lift        = std::max(rise, 0.);
+          loading.floor_lift_origin = "auto: " + rise_text;
+          if (!follows_bedding)
+            warnings.push_back(
+              "Loading/Floor lift = auto takes the bedding's " + rise_text +
+              ", but the closed forms define no FEM lift for this scene "
+              "(Bedding/Floor uplift reading and Loading/Uplift mode do not "
+              "bend a flat bed into the " +
+              (parabolic ? "parabolic" : "planar") +
+              " bedding): give Loading/Floor lift in m to choose the "
+              "motion");
+          return;
+        }
+
+      const double lift = loading.floor_lift;
+      const bool   contradicts =
+        std::abs(lift - rise) > tolerance * std::abs(rise);
+      if (!follows_bedding)
+        {
+          warnings.push_back(
+            "Loading/Floor lift = " + metres(lift) +
+            " moves the FEM's base in a way the closed forms do not "
+            "describe (Bedding/Floor uplift reading and Loading/Uplift mode "
+            "do not bend a flat bed into the bedding); the closed forms "
+            "stand the blocks on the bedding as it is, whose " +
+            rise_text);
+          return;
+        }
+      if (!contradicts)
+        return;
+      if (!loading.floor_lift_may_differ)
+        throw InputError(
+          "Loading/Floor lift",
+          metres(lift),
+          "must equal the bedding's " + rise_text +
+            " within 1 %: the closed forms stand the blocks on that "
+            "bedding. Set Loading/Floor lift = auto, change " +
+            how_to_fix +
+            ", or set Loading/Floor lift against bedding = may differ to "
+            "lift the FEM's floor by another amount");
+      warnings.push_back("Loading/Floor lift = " + metres(lift) +
+                         " differs from the bedding's " + rise_text +
+                         " (Floor lift against bedding = may differ): the "
+                         "FEM lifts another floor than the closed forms "
+                         "stand the blocks on");
+    }
+
+    /**
+     * Appends "# <note>" to the line "set <entry> = ..." of subsection
+     * @p subsection in a ShortPRM text, so parameters.prm stays readable
+     * as input and still shows a derived value.
+     */
+    std::string
+    annotate_entry(const std::string &text,
+                   const std::string &subsection,
+                   const std::string &entry,
+                   const std::string &note)
+    {
+      std::istringstream lines(text);
+      std::string        line, annotated, current;
+      const std::string  opening = "subsection ";
+      while (std::getline(lines, line))
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind(opening, 0) == 0)
+            current = dealii::Utilities::trim(trimmed.substr(opening.size()));
+          const std::string set = "set " + entry;
+          if (current == subsection && trimmed.rfind(set, 0) == 0 &&
+              dealii::Utilities::trim(trimmed.substr(set.size()))
+                  .rfind("=", 0) == 0)
+            line += " # " + note;
+          annotated += line + "\n";
+        }
+      return annotated;
+    }
   } // namespace
 
   void
@@ -101,7 +242,7 @@ namespace FloorBlock::Parameters
 
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       if (from_face > geometry.n_blocks)
-        throw InputError("Loading/Loaded blocks",
+        throw InputError("Loading/Loaded blocks from face",
                          std::to_string(from_face),
                          "each loaded block must be between 1 and "
                          "Geometry/Number of blocks = " +
@@ -109,12 +250,15 @@ namespace FloorBlock::Parameters
 
     check_footprint(geometry, loading);
 
+    warnings.clear();
+    resolve_floor_lift(geometry, bedding, loading, warnings);
+
     model.choose(bedding, joints, loading);
 
     // The elastic FEM pairs the nodes of both joint sides one to one
-    // (src/contact/README.md). Non-matching sides used to pass here and stop
-    // only after meshing, with a message about a node instead of this entry
-    // and with files already written.
+    // (src/contact/README.md). Refused here, non-matching sides stop before
+    // meshing with this entry's name instead of after it with a message
+    // about a node and files already written.
     if (!mesh.matching_joints && model.chosen == BlockModel::elastic)
       throw InputError("Mesh/Matching joints",
                        "false",
@@ -151,6 +295,49 @@ namespace FloorBlock::Parameters
       return text.str();
     }
 
+    /** Every declared entry as "Subsection/Entry" (nested: "A/B/Entry"). */
+    std::vector<std::string>
+    declared_entry_paths()
+    {
+      ParameterHandler prm;
+      ScenarioParameters::declare_parameters(prm);
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      std::istringstream       lines(text.str());
+      std::string              line;
+      std::vector<std::string> open, paths;
+      while (std::getline(lines, line))
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind("subsection ", 0) == 0)
+            open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+          else if (trimmed == "end" && !open.empty())
+            open.pop_back();
+          else if (trimmed.rfind("set ", 0) == 0)
+            {
+              std::string path;
+              for (const std::string &subsection : open)
+                path += subsection + "/";
+              paths.push_back(path +
+                              dealii::Utilities::trim(
+                                trimmed.substr(4, trimmed.find('=') - 4)));
+            }
+        }
+      return paths;
+    }
+
+    /** parameter_error_text() and, where it helps, what to do about it. */
+    std::string
+    explained(const dealii::ExceptionBase &error,
+              const std::string           &parameter_path,
+              const std::string           &value,
+              const std::string           &file_text)
+    {
+      const std::string text =
+        parameter_error_text(error, parameter_path, value);
+      return text + parse_error_hint(text, file_text, declared_entry_paths());
+    }
+
     /// Splits "Joints/Bedding friction angle=20" into path and value and sets
     /// it.
     void
@@ -178,10 +365,29 @@ namespace FloorBlock::Parameters
       catch (const dealii::ExceptionBase &error)
         {
           throw InputError("--set '" + assignment +
-                           "': " + parameter_error_text(error, path, value));
+                           "': " + explained(error, path, value, ""));
         }
       for (unsigned int level = 0; level + 1 < levels.size(); ++level)
         prm.leave_subsection();
+    }
+  } // namespace
+
+  namespace
+  {
+    /** The expanded parameters with the values derived from others. */
+    std::string
+    expanded_with_notes(const ScenarioParameters &scenario,
+                        const std::string        &expanded)
+    {
+      std::string text = expanded;
+      for (const auto &[entry, note] : scenario.material.derived_text)
+        text = annotate_entry(text, "Material", entry, note);
+      if (!scenario.loading.floor_lift_origin.empty())
+        text = annotate_entry(text,
+                              "Loading",
+                              "Floor lift",
+                              scenario.loading.floor_lift_origin);
+      return text;
     }
   } // namespace
 
@@ -204,7 +410,8 @@ namespace FloorBlock::Parameters
       }
     catch (const dealii::ExceptionBase &error)
       {
-        throw InputError(path + ": " + parameter_error_text(error, "", ""));
+        throw InputError(path + ": " +
+                         explained(error, "", "", scenario.original_text));
       }
     catch (const boost::property_tree::ptree_error &error)
       {
@@ -229,7 +436,7 @@ namespace FloorBlock::Parameters
 
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);
-    scenario.expanded_text = expanded.str();
+    scenario.expanded_text = expanded_with_notes(scenario, expanded.str());
     return scenario;
   }
 
@@ -247,7 +454,7 @@ namespace FloorBlock::Parameters
     scenario.parse_parameters(prm);
     std::ostringstream expanded;
     prm.print_parameters(expanded, ParameterHandler::ShortPRM);
-    scenario.expanded_text = expanded.str();
+    scenario.expanded_text = expanded_with_notes(scenario, expanded.str());
     scenario.original_text = expanded.str();
     return scenario;
   }

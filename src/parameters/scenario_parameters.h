@@ -34,6 +34,10 @@ namespace FloorBlock::Parameters
     std::string original_text;
     /// Every parameter after overrides, echoed into results/ as parameters.prm.
     std::string expanded_text;
+    /// Inputs that are accepted but mean something the user may not expect
+    /// (a floor lift the closed forms do not share); each command prints
+    /// them and report.md lists them.
+    std::vector<std::string> warnings;
 
     /** Declares every subsection's entries. */
     static void

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 /**
@@ -58,6 +59,14 @@ namespace FloorBlock::Parameters
     bool
     flat_in_mesh() const;
 
+    /**
+     * @brief Rise of the bedding from the face to the free end x = nL (m),
+     * as the closed forms place the blocks on it:
+     * Analytic::parabolic_bedding_rise() or planar_bedding_rise().
+     */
+    double
+    rise_at_free_end(unsigned int n_blocks, double block_width) const;
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
@@ -70,6 +79,9 @@ namespace FloorBlock::Parameters
     double bulk_modulus;  ///< K (Pa)
     double shear_modulus; ///< G (Pa)
     double density;       ///< kg/m^3
+    /// The entries left auto and what they were derived as, for
+    /// parameters.prm: {"Young's modulus", "derived from K and G: ..."}.
+    std::vector<std::pair<std::string, std::string>> derived_text;
 
     /** E = 9KG/(3K+G) (Pa). */
     double
@@ -129,7 +141,16 @@ namespace FloorBlock::Parameters
     /// Loaded blocks counted from the face (1 = next to the face block), as
     /// the user wrote them; Scene converts to the chapter's numbering.
     std::vector<unsigned int> loaded_blocks_from_face;
-    double                    floor_lift; ///< m
+    /// m; for Floor lift = auto the bedding's rise, set by
+    /// ScenarioParameters::parse_parameters() once the geometry is known.
+    double floor_lift;
+    /// Floor lift = auto: derived from the bedding.
+    bool floor_lift_auto;
+    /// Floor lift against bedding = may differ.
+    bool floor_lift_may_differ;
+    /// Where the floor lift comes from, in words, for parameters.prm and
+    /// report.md ("auto: (nL)^2/k = ..."); empty for a number as written.
+    std::string floor_lift_origin;
     /**
      * 3D scenes: the support's extent along the face (m), the shield
      * width b on which its whole Support load acts; 0 = no footprint, the

@@ -33,20 +33,14 @@ namespace FloorBlock::Scene
             Geometry::FloorUplift::lifted_flat_bedding ||
           !follows_profile)
         return;
-      const double chain_length =
-        variant.geometry.n_blocks * variant.geometry.block_width;
-      if (variant.bedding.shape == Geometry::BeddingShape::parabolic)
-        {
-          variant.loading.uplift_mode = Parameters::UpliftMode::parabola;
-          variant.loading.floor_lift =
-            chain_length * chain_length / variant.bedding.curvature;
-        }
-      else
-        {
-          variant.loading.uplift_mode = Parameters::UpliftMode::slope;
-          variant.loading.floor_lift =
-            chain_length * std::tan(variant.bedding.inclination);
-        }
+      variant.loading.uplift_mode =
+        variant.bedding.shape == Geometry::BeddingShape::parabolic ?
+          Parameters::UpliftMode::parabola :
+          Parameters::UpliftMode::slope;
+      variant.loading.floor_lift =
+        variant.bedding.rise_at_free_end(variant.geometry.n_blocks,
+                                         variant.geometry.block_width);
+      variant.loading.floor_lift_origin = "the figure's bedding rise";
     }
 
     FigurePoint

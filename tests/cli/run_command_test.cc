@@ -94,6 +94,17 @@ TEST(RunCommand, NamesTheGoverningJointOfEveryFigure)
   EXPECT_TRUE(std::filesystem::exists(folder + "/stress_vs_lift.png"));
 }
 
+// The tool shall name the loaded blocks in report.md in both numberings:
+// 2nd and 3rd from the face are blocks 2 and 1 of three.
+TEST(RunCommand, ReportNamesTheLoadedBlocksInItsNumbering)
+{
+  const std::string report = read_text(three_block_run() + "/report.md");
+  EXPECT_NE(report.find("on blocks 2,3 from the face (blocks 1, 2 in this "
+                        "report's numbering)"),
+            std::string::npos)
+    << report;
+}
+
 // The tool shall write every result file of a run, summary.json last.
 TEST(RunCommand, WritesEveryFile)
 {

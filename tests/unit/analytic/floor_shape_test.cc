@@ -39,6 +39,24 @@ TEST(FloorShape, ShallGiveTheFloorElevationAtXEqualLAsLiftAtTheFace)
   EXPECT_LT(joint_floor_lift(0., 0.01, width), 0.);
 }
 
+// The FEM lifts a flat bed to the height the closed forms' block
+// inclinations reach at the free end: the sum of L tan(alpha_i).
+TEST(FloorShape, ShallRiseAsTheClosedFormsInclinationsAtTheFreeEnd)
+{
+  const double      width = 1.2, curvature = 100.;
+  const std::size_t n_blocks  = 8;
+  double            chord_sum = 0.;
+  for (const double alpha : parabolic_inclinations(n_blocks, width, curvature))
+    chord_sum += width * std::tan(alpha);
+  const double rise = parabolic_bedding_rise(n_blocks, width, curvature);
+  EXPECT_NEAR(rise, chord_sum, 1e-14);
+  EXPECT_NEAR(rise, 0.9216, 1e-15); // (8 x 1.2 m)^2 / 100 m
+  EXPECT_NEAR(planar_bedding_rise(6, 1., std::atan(0.02)), 0.12, 1e-15);
+  EXPECT_LT(planar_bedding_rise(6, 1., -0.1), 0.);
+  EXPECT_THROW(parabolic_bedding_rise(0, 1., 100.), InputError);
+  EXPECT_THROW(planar_bedding_rise(3, 1., M_PI_2), InputError);
+}
+
 TEST(FloorShape, ShallConvertBulkAndShearModulusConsistently)
 {
   const double bulk = 9.e9, shear = 6.7e9;

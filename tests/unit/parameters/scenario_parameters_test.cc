@@ -62,7 +62,7 @@ TEST(ScenarioParameters, DeclaresEveryRequiredName)
                            "Shear stiffness",
                            "Gravity",
                            "Support load",
-                           "Loaded blocks",
+                           "Loaded blocks from face",
                            "Floor lift",
                            "Corner rounding radius",
                            "Corner size",
@@ -153,11 +153,11 @@ TEST(ScenarioParameters, MissingFileAndInconsistentScenes)
   EXPECT_NE(error_of("/nonexistent/scene.prm", {}).find("does not exist"),
             std::string::npos);
   EXPECT_NE(error_of(default_scene, {"Geometry/Number of blocks=2"})
-              .find("Loading/Loaded blocks"),
+              .find("Loading/Loaded blocks from face"),
             std::string::npos);
-  EXPECT_NE(
-    error_of(default_scene, {"Loading/Loaded blocks=1,1"}).find("only once"),
-    std::string::npos);
+  EXPECT_NE(error_of(default_scene, {"Loading/Loaded blocks from face=1,1"})
+              .find("only once"),
+            std::string::npos);
   EXPECT_NE(error_of(default_scene, {"Geometry/Corner rounding radius=0.3"})
               .find("quarter"),
             std::string::npos);
@@ -168,7 +168,7 @@ TEST(ScenarioParameters, JsonSceneIsAccepted)
 {
   const std::string path = write_scene(
     "scene.json",
-    R"({"Geometry": {"Number of blocks": "4"}, "Loading": {"Loaded blocks": "1,2"}})");
+    R"({"Geometry": {"Number of blocks": "4"}, "Loading": {"Loaded blocks from face": "1,2"}})");
   const auto scene = read_scenario(path, {});
   EXPECT_EQ(scene.geometry.n_blocks, 4u);
   EXPECT_EQ(scene.loaded_blocks(), (std::vector<unsigned int>{4, 3}));
@@ -218,4 +218,28 @@ TEST(ScenarioParameters, FootprintOutsideTheFaceIsRefused)
     }
   // An offset that puts the footprint's end on the face's end passes.
   EXPECT_EQ(error_of(footprint_scene, {"Loading/Footprint offset=3"}), "");
+}
+
+// The tool shall derive K and G from E and nu, E and nu from K and G, and
+// take the chapter's Table 6.1 when neither pair is given.
+TEST(ScenarioParameters, EitherPairOfModuliDescribesTheRock)
+{
+  const auto from_e_nu =
+    Parameters::read_defaults("moduli",
+                              {"Material/Young's modulus=12e9",
+                               "Material/Poisson's ratio=0.25"});
+  EXPECT_NEAR(from_e_nu.material.bulk_modulus, 8e9, 1e-6);
+  EXPECT_NEAR(from_e_nu.material.shear_modulus, 4.8e9, 1e-6);
+  EXPECT_NEAR(from_e_nu.material.youngs_modulus(), 12e9, 1e-5);
+  EXPECT_NEAR(from_e_nu.material.poissons_ratio(), 0.25, 1e-15);
+
+  const auto table = Parameters::read_defaults("moduli", {});
+  EXPECT_EQ(table.material.bulk_modulus, 9e9);
+  EXPECT_EQ(table.material.shear_modulus, 6.7e9);
+
+  EXPECT_NE(error_of(default_scene,
+                     {"Material/Young's modulus=12e9",
+                      "Material/Poisson's ratio=0.25"})
+              .find("Material/Bulk modulus"),
+            std::string::npos);
 }

@@ -43,7 +43,8 @@ namespace
                                       "Material/Density=2000",
                                       "Loading/Gravity=10",
                                       "Loading/Support load=100",
-                                      "Loading/Loaded blocks=" + loaded_blocks,
+                                      "Loading/Loaded blocks from face=" +
+                                        loaded_blocks,
                                       "Bedding/Shape=planar",
                                       "Bedding/Inclination=10",
                                       "Joints/Bedding friction angle=35",
@@ -107,12 +108,13 @@ namespace
   // L tan(alpha_n) = L^2/k = 1 cm.
   TEST(SceneInputs, ParabolicInclinationsAndFaceLift)
   {
-    const auto scene = Parameters::read_defaults("scene_inputs_test",
-                                                 {"Geometry/Number of blocks=3",
-                                                  "Geometry/Block width=1",
-                                                  "Loading/Loaded blocks=1",
-                                                  "Bedding/Shape=parabolic",
-                                                  "Bedding/Curvature=100"});
+    const auto scene =
+      Parameters::read_defaults("scene_inputs_test",
+                                {"Geometry/Number of blocks=3",
+                                 "Geometry/Block width=1",
+                                 "Loading/Loaded blocks from face=1",
+                                 "Bedding/Shape=parabolic",
+                                 "Bedding/Curvature=100"});
     const Analytic::BlockChain chain = Scene::block_chain(scene);
     ASSERT_EQ(chain.inclination.size(), 3u);
     expect_relative(chain.inclination[0], std::atan(0.05));
@@ -132,7 +134,7 @@ namespace
                                  "Geometry/Face block width=0.8",
                                  "Geometry/Base thickness=0.7",
                                  "Geometry/Corner rounding radius=0.03",
-                                 "Loading/Loaded blocks=1,2",
+                                 "Loading/Loaded blocks from face=1,2",
                                  "Bedding/Shape=planar",
                                  "Bedding/Inclination=5",
                                  "Bedding/Floor uplift reading=inclined",
