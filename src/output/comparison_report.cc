@@ -344,6 +344,17 @@ namespace FloorBlock::Output
       "plot $fem with points pt 7 ps 1.5 lc rgb 'black' title 'FEM'";
     for (std::size_t m = 0; m < joints.front().forces.size(); ++m)
       {
+        const auto &mechanism = joints.front().forces[m];
+        if (mechanism.closed_form_status != Analytic::Status::ok)
+          {
+            // Forces of an inadmissible mechanism are no answer: named in
+            // the key, not drawn.
+            plot += fmt::format(", NaN with dots lc rgb 'white' title '{}: "
+                                "{}, not drawn'",
+                                mechanism.mechanism,
+                                mechanism.status);
+            continue;
+          }
         std::string rows;
         for (const auto &joint : joints)
           if (joint.forces[m].has_value)
@@ -358,7 +369,7 @@ namespace FloorBlock::Output
                             joints.front().forces[m].mechanism);
       }
     return data +
-           "set grid\nset key top left\nset xlabel 'vertical joint j "
+           "set grid\nset key bottom right opaque\nset xlabel 'vertical joint j "
            "(n = face joint)'\nset ylabel 'Q_j (kN per m of face)'\n"
            "set title 'Lateral force per joint: FEM against the closed "
            "forms'\nset xtics 1\n" +
@@ -389,10 +400,12 @@ namespace FloorBlock::Output
       {
         const auto &contact = point.face_joint.contact;
         const auto &formula = contact.closed_form;
-        const bool  defined = has_closed_form(formula);
-        const auto  cell = [defined](const double value, const double scale) {
+        // Only ok values are drawn: contact_longer_than_block has numbers
+        // but lies outside the formulas' range.
+        const bool defined = formula.status == Analytic::Status::ok;
+        const auto cell    = [defined](const double value, const double scale) {
           return defined ? fmt::format("{}", value * scale) :
-                            std::string("NaN");
+                              std::string("NaN");
         };
         data += fmt::format("{} {} {} {} {}\n",
                             point.base_lift * 1e3,
@@ -407,10 +420,10 @@ namespace FloorBlock::Output
            "lift'\nset grid\nset key top left\nset xlabel 'base lift (mm)'\n"
            "set ylabel 'contact area over b (m^2)'\n"
            "plot $h using 1:2 with linespoints title 'FEM', $h using 1:3 "
-           "with linespoints title 'Eq. 6.51'\n"
+           "with linespoints title 'Eq. 6.51 (status ok only)'\n"
            "set ylabel 'sigma_max (MPa)'\n"
            "plot $h using 1:4 with linespoints title 'FEM (averaged peak)', "
-           "$h using 1:5 with linespoints title 'Eq. 6.53'\n"
+           "$h using 1:5 with linespoints title 'Eq. 6.53 (status ok only)'\n"
            "unset multiplot\n";
   }
 
