@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -430,15 +431,29 @@ namespace FloorBlock::Output
   std::string
   traction_profile_plot(const Contact::JointReport &face_joint)
   {
-    std::string data = "$p << EOD\n";
+    // Ordered and plotted by the position along the joint: on a rounded
+    // corner the nodes differ in height by less than a millimetre, so
+    // against height the fillet's falling traction would draw as a line
+    // back to zero at the top.
+    std::vector<const Contact::JointNodeSample *> samples;
     for (const auto &sample : face_joint.profile)
+      samples.push_back(&sample);
+    std::stable_sort(samples.begin(),
+                     samples.end(),
+                     [](const auto *a, const auto *b) {
+                       return a->arc_position < b->arc_position;
+                     });
+    std::string data = "$p << EOD\n";
+    for (const Contact::JointNodeSample *sample : samples)
       data += fmt::format("{} {}\n",
-                          sample.position[1],
-                          sample.normal_traction / MPa);
+                          sample->arc_position,
+                          sample->normal_traction / MPa);
     data += "EOD\n";
-    return data + "set grid\nunset key\nset xlabel 'normal traction (MPa)'\n"
-                  "set ylabel 'height y (m)'\nset title 'Normal traction along "
-                  "the face joint at the final lift'\n"
-                  "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
+    return data +
+           "set grid\nunset key\nset xlabel 'normal traction (MPa, "
+           "compression > 0)'\nset ylabel 'position along the joint (m, "
+           "arc_position_m of joint_profiles.csv)'\nset title 'Normal traction along the face "
+           "joint at the final lift'\n"
+           "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
   }
 } // namespace FloorBlock::Output
