@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <output/admissible_values.h>
 #include <output/analytic_report.h>
 #include <output/numbering_note.h>
 
@@ -14,9 +15,10 @@ namespace FloorBlock::Output
     contact_json(const Scene::MechanismResult &entry,
                  const Scene::ClosedForms     &closed_forms)
     {
-      const auto &contact = entry.contact;
-      return {{"status", Analytic::to_string(contact.status)},
-              {"status_text", Analytic::describe(contact.status)},
+      const auto            &contact = entry.contact;
+      const Analytic::Status status  = face_contact_status(entry);
+      return {{"status", Analytic::to_string(status)},
+              {"status_text", Analytic::describe(status)},
               {"Q_N", entry.face_force_over_width},
               {"y_m", closed_forms.floor_lift},
               {"E_Pa", closed_forms.youngs_modulus},
@@ -91,8 +93,10 @@ namespace FloorBlock::Output
   analytic_csv(const Scene::ClosedForms &closed_forms)
   {
     std::string csv = fmt::format("# {}\n# Forces per metre of face; "
-                                  "empty cells: the mechanism has no finite "
-                                  "answer (see its status column).\n",
+                                  "empty cells: the mechanism has no finite, "
+                                  "admissible answer (see its status column; "
+                                  "no_rotation_h_m follows "
+                                  "no_rotation_status).\n",
                                   numbering_note);
     csv += "block,W_N_per_m,P_N_per_m,alpha_deg";
     for (const auto &entry : closed_forms.mechanisms)
@@ -103,8 +107,12 @@ namespace FloorBlock::Output
     csv += ",no_rotation_h_m\n";
 
     const auto &chain = closed_forms.chain;
-    const auto  cell  = [](const std::vector<double> &values, std::size_t i) {
-      return i < values.size() ? fmt::format("{:.9e}", values[i]) : "";
+    const auto  cell  = [](const Scene::MechanismResult &entry,
+                         const std::vector<double>    &values,
+                         const std::size_t             i) {
+      return has_admissible_forces(entry) && i < values.size() ?
+                 fmt::format("{:.9e}", values[i]) :
+                 std::string();
     };
     for (std::size_t i = 0; i < chain.n_blocks(); ++i)
       {
@@ -116,9 +124,13 @@ namespace FloorBlock::Output
         for (const auto &entry : closed_forms.mechanisms)
           csv += fmt::format(",{},{},{}",
                              Analytic::to_string(entry.forces.status),
-                             cell(entry.forces.lateral_force, i),
-                             cell(entry.forces.normal_force, i));
-        csv += "," + cell(closed_forms.no_rotation_heights.centroid_height, i) +
+                             cell(entry, entry.forces.lateral_force, i),
+                             cell(entry, entry.forces.normal_force, i));
+        // The heights come from no_rotation's Q, so they share its status.
+        csv += "," +
+               cell(closed_forms.mechanisms.front(),
+                    closed_forms.no_rotation_heights.centroid_height,
+                    i) +
                "\n";
       }
     return csv;
@@ -139,6 +151,9 @@ namespace FloorBlock::Output
                             Analytic::describe(forces.status));
         if (forces.lateral_force.empty())
           continue;
+        const bool admissible = has_admissible_forces(entry);
+        if (!admissible)
+          text += "  the equations' values, no answer of the model:\n";
         text += fmt::format("  {:>5} {:>14} {:>16} {:>12}\n",
                             "block",
                             "Q_i (kN/m)",
@@ -150,6 +165,14 @@ namespace FloorBlock::Output
                               forces.lateral_force[i] / kN,
                               forces.lateral_force[i] * b / kN,
                               forces.normal_force[i] / kN);
+        if (!admissible)
+          {
+            text += fmt::format(
+              "  face joint: Eqs. 6.51-6.53 not evaluated, the mechanism is "
+              "{}\n",
+              Analytic::to_string(forces.status));
+            continue;
+          }
         const auto &contact = entry.contact;
         text += fmt::format(
           "  face joint: Q = {:.1f} kN over b = {:.2f} m, y = {:.4f} m -> "

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -344,6 +345,17 @@ namespace FloorBlock::Output
       "plot $fem with points pt 7 ps 1.5 lc rgb 'black' title 'FEM'";
     for (std::size_t m = 0; m < joints.front().forces.size(); ++m)
       {
+        const auto &mechanism = joints.front().forces[m];
+        if (mechanism.closed_form_status != Analytic::Status::ok)
+          {
+            // Forces of an inadmissible mechanism are no answer: named in
+            // the key, not drawn.
+            plot += fmt::format(", NaN with dots lc rgb 'white' title '{}: "
+                                "{}, not drawn'",
+                                mechanism.mechanism,
+                                mechanism.status);
+            continue;
+          }
         std::string rows;
         for (const auto &joint : joints)
           if (joint.forces[m].has_value)
@@ -358,7 +370,7 @@ namespace FloorBlock::Output
                             joints.front().forces[m].mechanism);
       }
     return data +
-           "set grid\nset key top left\nset xlabel 'vertical joint j "
+           "set grid\nset key bottom right opaque\nset xlabel 'vertical joint j "
            "(n = face joint)'\nset ylabel 'Q_j (kN per m of face)'\n"
            "set title 'Lateral force per joint: FEM against the closed "
            "forms'\nset xtics 1\n" +
@@ -389,10 +401,12 @@ namespace FloorBlock::Output
       {
         const auto &contact = point.face_joint.contact;
         const auto &formula = contact.closed_form;
-        const bool  defined = has_closed_form(formula);
-        const auto  cell = [defined](const double value, const double scale) {
+        // Only ok values are drawn: contact_longer_than_block has numbers
+        // but lies outside the formulas' range.
+        const bool defined = formula.status == Analytic::Status::ok;
+        const auto cell    = [defined](const double value, const double scale) {
           return defined ? fmt::format("{}", value * scale) :
-                            std::string("NaN");
+                              std::string("NaN");
         };
         data += fmt::format("{} {} {} {} {}\n",
                             point.base_lift * 1e3,
@@ -407,25 +421,39 @@ namespace FloorBlock::Output
            "lift'\nset grid\nset key top left\nset xlabel 'base lift (mm)'\n"
            "set ylabel 'contact area over b (m^2)'\n"
            "plot $h using 1:2 with linespoints title 'FEM', $h using 1:3 "
-           "with linespoints title 'Eq. 6.51'\n"
+           "with linespoints title 'Eq. 6.51 (status ok only)'\n"
            "set ylabel 'sigma_max (MPa)'\n"
            "plot $h using 1:4 with linespoints title 'FEM (averaged peak)', "
-           "$h using 1:5 with linespoints title 'Eq. 6.53'\n"
+           "$h using 1:5 with linespoints title 'Eq. 6.53 (status ok only)'\n"
            "unset multiplot\n";
   }
 
   std::string
   traction_profile_plot(const Contact::JointReport &face_joint)
   {
-    std::string data = "$p << EOD\n";
+    // Ordered and plotted by the position along the joint: on a rounded
+    // corner the nodes differ in height by less than a millimetre, so
+    // against height the fillet's falling traction would draw as a line
+    // back to zero at the top.
+    std::vector<const Contact::JointNodeSample *> samples;
     for (const auto &sample : face_joint.profile)
+      samples.push_back(&sample);
+    std::stable_sort(samples.begin(),
+                     samples.end(),
+                     [](const auto *a, const auto *b) {
+                       return a->arc_position < b->arc_position;
+                     });
+    std::string data = "$p << EOD\n";
+    for (const Contact::JointNodeSample *sample : samples)
       data += fmt::format("{} {}\n",
-                          sample.position[1],
-                          sample.normal_traction / MPa);
+                          sample->arc_position,
+                          sample->normal_traction / MPa);
     data += "EOD\n";
-    return data + "set grid\nunset key\nset xlabel 'normal traction (MPa)'\n"
-                  "set ylabel 'height y (m)'\nset title 'Normal traction along "
-                  "the face joint at the final lift'\n"
-                  "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
+    return data +
+           "set grid\nunset key\nset xlabel 'normal traction (MPa, "
+           "compression > 0)'\nset ylabel 'position along the joint (m, "
+           "arc_position_m of joint_profiles.csv)'\nset title 'Normal traction along the face "
+           "joint at the final lift'\n"
+           "plot $p using 2:1 with linespoints pt 7 ps 0.6\n";
   }
 } // namespace FloorBlock::Output

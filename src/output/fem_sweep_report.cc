@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <output/admissible_values.h>
 #include <output/fem_sweep_report.h>
 #include <output/gnuplot.h>
 #include <output/json_values.h>
@@ -89,16 +90,15 @@ namespace FloorBlock::Output
     record.wall_times = result.wall_times;
     for (const auto &entry : point.closed_forms.mechanisms)
       {
-        const bool has_q = !entry.forces.lateral_force.empty();
-        const bool has_stress =
-          has_q && entry.contact.status == Analytic::Status::ok;
         record.closed_forms[Scene::to_string(entry.mechanism)] = {
           Analytic::to_string(entry.forces.status),
-          has_q ? std::optional<double>(entry.forces.lateral_force.back()) :
-                  std::nullopt,
-          has_stress ? std::optional<double>(entry.contact.max_stress) :
-                       std::nullopt,
-          Analytic::to_string(entry.contact.status)};
+          has_admissible_forces(entry) ?
+            std::optional<double>(entry.forces.lateral_force.back()) :
+            std::nullopt,
+          has_admissible_contact(entry) ?
+            std::optional<double>(entry.contact.max_stress) :
+            std::nullopt,
+          Analytic::to_string(face_contact_status(entry))};
       }
     return record;
   }
@@ -171,7 +171,7 @@ namespace FloorBlock::Output
     std::string csv = fmt::format(
       "# {}\n# Face joint (Q_n). FEM values are empty where the FEM did not "
       "converge (fem_status); closed-form values are empty where the "
-      "formula has no finite answer (its status).\n"
+      "formula has no finite, admissible answer (its status).\n"
       "k_m,phi_h_deg,phi_v_deg,support_load_t,fem_status,fem_Q_face_N_per_m,"
       "fem_contact_length_m,fem_sigma_max_Pa,fem_sigma_max_averaged_Pa",
       numbering_note);

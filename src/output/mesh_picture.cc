@@ -73,30 +73,30 @@ namespace FloorBlock::Output
       return text.empty() ? std::string("NaN NaN\n") : text;
     }
 
-    /** Marker colour by category: joint states first, others after. */
-    std::string
-    marker_colour(const std::string &category, const unsigned int index)
-    {
-      static const std::map<std::string, std::string> known = {
-        {"stick", "#1a9850"}, {"slip", "#f46d43"}, {"open", "#7b3294"}};
-      constexpr std::array<const char *, 3> others = {"#000000",
-                                                      "#2166ac",
-                                                      "#b2182b"};
-      const auto                            found  = known.find(category);
-      return found != known.end() ? found->second :
-                                    others[index % others.size()];
-    }
-
-    std::string
-    gnuplot_string(const std::string &text)
-    {
-      std::string result = "'";
-      for (const char character : text)
-        result +=
-          character == '\'' ? std::string("''") : std::string(1, character);
-      return result + "'";
-    }
   } // namespace
+
+  /** Marker colour by category: joint states first, others after. */
+  std::string
+  marker_colour(const std::string &category, const unsigned int index)
+  {
+    static const std::map<std::string, std::string> known = {
+      {"stick", "#1a9850"}, {"slip", "#f46d43"}, {"open", "#7b3294"}};
+    constexpr std::array<const char *, 3> others = {"#000000",
+                                                    "#2166ac",
+                                                    "#b2182b"};
+    const auto                            found  = known.find(category);
+    return found != known.end() ? found->second : others[index % others.size()];
+  }
+
+  std::string
+  gnuplot_string(const std::string &text)
+  {
+    std::string result = "'";
+    for (const char character : text)
+      result +=
+        character == '\'' ? std::string("''") : std::string(1, character);
+    return result + "'";
+  }
 
   void
   write_mesh_picture(const dealii::Triangulation<2> &triangulation,

@@ -28,6 +28,14 @@ namespace FloorBlock::Output
     std::vector<PictureMarker> markers;
   };
 
+  /** @brief Marker colour by category: joint states first, others after. */
+  std::string
+  marker_colour(const std::string &category, const unsigned int index);
+
+  /** @brief @p text as a single-quoted gnuplot string. */
+  std::string
+  gnuplot_string(const std::string &text);
+
   /**
    * @brief Draw a block-assembly mesh as a PNG with gnuplot: cells filled
    * with one colour per body (material id), cell edges thin, joint sides

@@ -1,4 +1,5 @@
 #include <common/units.h>
+#include <output/admissible_values.h>
 #include <output/numbering_note.h>
 #include <output/sweep_report.h>
 
@@ -15,12 +16,6 @@ namespace FloorBlock::Output
     using Units::kN;
     using Units::MPa;
 
-    bool
-    has_face_force(const Scene::MechanismResult &entry)
-    {
-      return !entry.forces.lateral_force.empty();
-    }
-
     using PointValue =
       std::function<std::optional<double>(const Scene::FigurePoint &,
                                           const Scene::MechanismResult &)>;
@@ -29,7 +24,8 @@ namespace FloorBlock::Output
     /**
      * A multiplot with one panel per mechanism and one curve per value of
      * @p curve_key; x is the bedding friction in degrees. Points without a
-     * finite value are left out of their curve.
+     * finite, admissible value are left out of their curve, and the panel's
+     * title says how many.
      */
     std::string
     panels_by_mechanism(const std::vector<const Scene::FigurePoint *> &points,
@@ -49,18 +45,27 @@ namespace FloorBlock::Output
       for (std::size_t m = 0; m < mechanisms.size(); ++m)
         {
           std::map<double, std::string> curves;
+          std::size_t                   n_left_out = 0;
           for (const Scene::FigurePoint *point : points)
             if (const auto y = value(*point, point->closed_forms.mechanisms[m]))
               curves[curve_key(*point)] +=
                 fmt::format("{} {}\n",
                             Units::radians_to_degrees(point->bedding_friction),
                             *y);
-          script += fmt::format("set title '{}'\n",
-                                Scene::to_string(mechanisms[m].mechanism));
+            else
+              ++n_left_out;
+          script +=
+            fmt::format("set title \"{}{}\"\n",
+                        Scene::to_string(mechanisms[m].mechanism),
+                        n_left_out == 0 ?
+                          std::string() :
+                          fmt::format("\\n{} of {} points not ok: not drawn",
+                                      n_left_out,
+                                      points.size()));
           if (curves.empty())
             {
-              script += "set label 1 'no finite answer' at graph 0.3,0.5\n"
-                        "plot [10:35] NaN notitle\nunset label 1\n";
+              script += "set label 1 'no admissible answer' at graph 0.25,0.5\n"
+                        "plot [10:35] [0:1] NaN notitle\nunset label 1\n";
               continue;
             }
           std::string  plot = "plot ";
@@ -98,7 +103,8 @@ namespace FloorBlock::Output
   {
     std::string csv = fmt::format(
       "# {}\n# Q_face: Q_n between block n and the face block. Empty cells: "
-      "no finite answer (see the status column).\n",
+      "no finite, admissible answer (see the status columns; the corner "
+      "contact's status is its mechanism's when that is not ok).\n",
       numbering_note);
     csv += "figure,k_m,phi_h_deg,phi_v_deg,support_load_t,y_m";
     for (const auto &entry : points.front().closed_forms.mechanisms)
@@ -121,15 +127,17 @@ namespace FloorBlock::Output
         for (const auto &entry : point.closed_forms.mechanisms)
           {
             csv += "," + Analytic::to_string(entry.forces.status);
-            if (has_face_force(entry))
-              csv += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e},{}",
+            csv += has_admissible_forces(entry) ?
+                     fmt::format(",{:.9e},{:.9e}",
                                  entry.forces.lateral_force.back(),
-                                 entry.face_force_over_width,
+                                 entry.face_force_over_width) :
+                     std::string(",,");
+            csv += has_admissible_contact(entry) ?
+                     fmt::format(",{:.9e},{:.9e}",
                                  entry.contact.contact_area,
-                                 entry.contact.max_stress,
-                                 Analytic::to_string(entry.contact.status));
-            else
-              csv += ",,,,," + Analytic::to_string(entry.contact.status);
+                                 entry.contact.max_stress) :
+                     std::string(",,");
+            csv += "," + Analytic::to_string(face_contact_status(entry));
           }
         csv += "\n";
       }
@@ -152,7 +160,7 @@ namespace FloorBlock::Output
       "phi_v = {:.0f} deg",
       [](const Scene::FigurePoint &,
          const Scene::MechanismResult &entry) -> std::optional<double> {
-        if (!has_face_force(entry))
+        if (!has_admissible_forces(entry))
           return std::nullopt;
         return entry.face_force_over_width / kN;
       });
@@ -176,8 +184,7 @@ namespace FloorBlock::Output
       "{:.0f} t",
       [](const Scene::FigurePoint &,
          const Scene::MechanismResult &entry) -> std::optional<double> {
-        if (!has_face_force(entry) ||
-            entry.contact.status != Analytic::Status::ok)
+        if (!has_admissible_contact(entry))
           return std::nullopt;
         return entry.contact.max_stress / MPa;
       });

@@ -11,7 +11,7 @@ namespace FloorBlock::Output
    * @brief One CSV row per figure point: the varied inputs, then per
    * mechanism its status, Q at the face (per metre and over b) and the
    * corner stress of Eqs. 6.51-6.53. Empty cells where a mechanism has no
-   * finite answer; its status column says why.
+   * finite, admissible answer; its status columns say why.
    */
   std::string
   sweep_csv(const std::vector<Scene::FigurePoint> &points);

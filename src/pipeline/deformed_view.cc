@@ -1,3 +1,4 @@
+#include <fem/cell_stress.h>
 #include <output/deformed_picture.h>
 #include <pipeline/deformed_view.h>
 
@@ -5,6 +6,7 @@ namespace FloorBlock::Pipeline
 {
   void
   write_deformed_view(const Contact::ContactSolver<2> &solver,
+                      const Fem::ElasticModel<2>      &model,
                       const std::string               &png_path)
   {
     const auto &nodes     = solver.contact_nodes();
@@ -18,6 +20,8 @@ namespace FloorBlock::Pipeline
         {nodes[p].position, Contact::state_name(responses[p].state)});
     Output::write_deformed_picture(solver.space().dof_handler(),
                                    solver.solution(),
+                                   Fem::cell_major_compressive_stress(
+                                     solver.space(), model, solver.solution()),
                                    markers,
                                    png_path,
                                    0.,

@@ -278,19 +278,24 @@ namespace FloorBlock::Pipeline
                      const bool                            write_vtu,
                      const SolveExtras                    &extras)
   {
-    return solve_on_mesh<2>(
-      scene,
-      triangulation,
-      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene)),
-      mesh,
-      folder,
-      write_vtu,
-      [&](const Contact::ContactSolver<2> &solver) {
-        if (extras.inspect)
-          extras.inspect(solver);
-        if (write_vtu)
-          write_deformed_view(solver, folder.path_of("deformed.png"));
-      });
+    // Kept here: the picture's stresses need the bodies' elastic laws.
+    const Contact::ContactProblem<2> problem =
+      Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene));
+    return solve_on_mesh<2>(scene,
+                            triangulation,
+                            problem,
+                            mesh,
+                            folder,
+                            write_vtu,
+                            [&](const Contact::ContactSolver<2> &solver) {
+                              if (extras.inspect)
+                                extras.inspect(solver);
+                              if (write_vtu)
+                                write_deformed_view(solver,
+                                                    problem.model,
+                                                    folder.path_of(
+                                                      "deformed.png"));
+                            });
   }
 
   void
