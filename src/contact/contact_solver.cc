@@ -11,7 +11,7 @@
 #include <fem/elastic_assembly.h>
 #include <fem/rigid_body_modes.h>
 #include <fem/sparsity.h>
-#include <solver/linear_solver.h>
+#include <solver/system_solver.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -28,23 +28,6 @@ namespace FloorBlock::Contact
 {
   namespace
   {
-    /**
-     * The numerics on the processes of @p communicator: on several,
-     * `automatic` solves iteratively. Amesos KLU, the distributed direct
-     * solver, gathers the matrix on one process and factorises it afresh
-     * at every Newton iteration (ReusedFactorization keeps UMFPACK factors
-     * on one process only): on params/plane_strain_3d.prm (28.9k DoFs, 2
-     * processes) 18.0 s of linear solves against 9.6 s for GMRES + ML.
-     */
-    ContactSolverSettings
-    on_processes(ContactSolverSettings settings, const MPI_Comm communicator)
-    {
-      if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1 &&
-          settings.linear.kind == Solver::LinearSolverKind::automatic)
-        settings.linear.kind = Solver::LinearSolverKind::iterative;
-      return settings;
-    }
-
     /** kn h / E above which a failure suggests the rigid law (-). */
     constexpr double ill_conditioned_joint_ratio = 3.;
 
@@ -66,7 +49,7 @@ namespace FloorBlock::Contact
     const ContactProblem<dim>        &problem,
     const ContactSolverSettings      &settings)
     : problem(problem)
-    , settings(on_processes(settings, triangulation.get_communicator()))
+    , settings(settings)
     , fe_space(triangulation, settings.fe_degree)
     , console(std::cout,
               settings.verbose && dealii::Utilities::MPI::this_mpi_process(
@@ -116,27 +99,12 @@ namespace FloorBlock::Contact
             "the exact (rigid) joint law runs on one process only");
         setup_exact_system();
       }
-    if (exact)
-      {
-        // The exact law's saddle-point matrix: UMFPACK factorised it
-        // faster than KLU at every size measured (params/s6.prm, 4.0k
-        // unknowns: 0.32 s against 0.70 s for all solves; 1.9k: 0.12
-        // against 0.13 s), unlike the compliant law's stiffness matrix,
-        // where the crossover lies near 8k DoFs.
-        Solver::LinearSolverSettings linear = settings.linear;
-        linear.min_umfpack_dofs             = 0;
-        direct_solver = std::make_unique<Solver::ReusedFactorization>(linear);
-      }
-    else if (!distributed &&
-             Solver::uses_direct_solver(settings.linear,
-                                        fe_space.dof_handler().n_dofs()))
-      direct_solver =
-        std::make_unique<Solver::ReusedFactorization>(settings.linear);
-    else if (!Solver::uses_direct_solver(settings.linear,
-                                         fe_space.dof_handler().n_dofs()))
-      amg_solver =
-        std::make_unique<Solver::ReusedAmg>(settings.linear,
-                                            Fem::rigid_body_modes(fe_space));
+    linear_solver = std::make_unique<Solver::SystemSolver>(
+      settings.linear,
+      Solver::SystemDescription{fe_space.dof_handler().n_dofs(),
+                                exact != nullptr},
+      fe_space.dof_handler().get_communicator(),
+      [this]() { return Fem::rigid_body_modes(fe_space); });
     const dealii::IndexSet &owned = fe_space.locally_owned_dofs();
     // The triangulation's communicator: MPI_COMM_SELF for a serial mesh,
     // so that every rank of a sweep solves its own case independently.
@@ -383,7 +351,7 @@ namespace FloorBlock::Contact
         right_hand_side *= -1.;
         system_update = 0.;
         const Solver::LinearSolveInfo info =
-          direct_solver->solve(matrix, right_hand_side, system_update);
+          linear_solver->solve(matrix, right_hand_side, system_update, 0.);
         message = info.message;
         if (!info.success)
           return false;
@@ -399,17 +367,8 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::MPI::Vector right_hand_side(residual);
     right_hand_side *= -1.;
     update = 0.;
-    // A distributed direct solve (Solver/Linear solver = direct on several
-    // processes) keeps nothing between iterations and needs no near-null
-    // space.
     const Solver::LinearSolveInfo info =
-      direct_solver ? direct_solver->solve(matrix, right_hand_side, update) :
-      amg_solver ? amg_solver->solve(matrix, right_hand_side, update, forcing) :
-                   Solver::solve_linear_system(settings.linear,
-                                               matrix,
-                                               right_hand_side,
-                                               Solver::NearNullSpace(),
-                                               update);
+      linear_solver->solve(matrix, right_hand_side, update, forcing);
     message = info.message;
     return info.success;
   }
@@ -798,21 +757,19 @@ namespace FloorBlock::Contact
   {
     result.wall_times =
       timer.get_summary_data(dealii::TimerOutput::total_wall_time);
-    result.n_linear_solves            = n_linear_solves;
-    result.n_failed_newton_iterations = n_failed_newton_iterations;
-    if (amg_solver)
+    result.n_linear_solves                      = n_linear_solves;
+    result.n_failed_newton_iterations           = n_failed_newton_iterations;
+    const Solver::SystemSolverStatistics linear = linear_solver->statistics();
+    if (linear.iterative)
       {
-        result.n_amg_setups = amg_solver->statistics().n_setups;
-        result.n_amg_krylov_iterations =
-          amg_solver->statistics().n_krylov_iterations;
+        result.n_amg_setups            = linear.n_amg_setups;
+        result.n_amg_krylov_iterations = linear.n_amg_krylov_iterations;
       }
-    if (direct_solver)
+    if (linear.direct)
       {
-        result.n_factorizations = direct_solver->statistics().n_factorizations;
-        result.n_krylov_iterations =
-          direct_solver->statistics().n_krylov_iterations;
-        result.n_solves_above_tolerance =
-          direct_solver->statistics().n_accepted_above_tolerance;
+        result.n_factorizations         = linear.n_factorizations;
+        result.n_krylov_iterations      = linear.n_krylov_iterations;
+        result.n_solves_above_tolerance = linear.n_solves_above_tolerance;
       }
   }
 

@@ -11,8 +11,7 @@
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
 #include <loading/load_path.h>
-#include <solver/reused_amg.h>
-#include <solver/reused_factorization.h>
+#include <solver/system_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -201,10 +200,8 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::SparsityPattern      pattern;
     dealii::TrilinosWrappers::SparseMatrix         matrix;
     std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
-    /** Set when the linear systems are solved directly (see run()). */
-    std::unique_ptr<Solver::ReusedFactorization> direct_solver;
-    /** Set instead when GMRES + ML solves (large or distributed systems). */
-    std::unique_ptr<Solver::ReusedAmg>    amg_solver;
+    /** Solves every Newton system, kept for the whole run. */
+    std::unique_ptr<Solver::SystemSolver> linear_solver;
     unsigned int                          n_linear_solves            = 0;
     unsigned int                          n_failed_newton_iterations = 0;
     dealii::TrilinosWrappers::MPI::Vector current_solution;
