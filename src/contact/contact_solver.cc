@@ -116,13 +116,6 @@ namespace FloorBlock::Contact
     residual.reinit(owned, communicator);
     last_change.reinit(owned, communicator);
     readable_solution.reinit(owned, readable_dofs, communicator);
-    // The members, not the constructor's arguments: it keeps references.
-    post_processor = std::make_unique<IncrementPostProcessor<dim>>(
-      fe_space,
-      this->problem,
-      nodes,
-      dirichlet_dofs,
-      this->settings.averaging_length);
   }
 
   template <int dim>
@@ -559,7 +552,7 @@ namespace FloorBlock::Contact
 
   template <int dim>
   SolveResult
-  ContactSolver<dim>::run()
+  ContactSolver<dim>::run(IncrementObserver<dim> &observer)
   {
     SolveResult result;
     result.n_dofs          = fe_space.dof_handler().n_dofs();
@@ -582,7 +575,7 @@ namespace FloorBlock::Contact
       return solve_increment(state, record_failure, increment, reason);
     };
     callbacks.commit = [&](const Loading::LoadState &state) {
-      commit_increment(state, clock, increment, result);
+      commit_increment(state, clock, observer, increment, result);
     };
     callbacks.discard = [&](const std::string &attempt) {
       discard_attempt(attempt, increment);
@@ -699,6 +692,7 @@ namespace FloorBlock::Contact
   void
   ContactSolver<dim>::commit_increment(const Loading::LoadState &state,
                                        const dealii::Timer      &clock,
+                                       IncrementObserver<dim>   &observer,
                                        IncrementResult          &increment,
                                        SolveResult              &result)
   {
@@ -710,10 +704,7 @@ namespace FloorBlock::Contact
     increment.complementarity_factor                = complementarity_scale;
     increment.counts = count_states(states_of(responses));
     // readable_solution holds current_solution: responses_at_iterate().
-    post_processor->describe(state.factors,
-                             responses,
-                             readable_solution,
-                             increment);
+    observer.describe(state.factors, responses, readable_solution, increment);
     last_change = current_solution;
     last_change -= committed_solution;
     commit(responses);
@@ -726,14 +717,12 @@ namespace FloorBlock::Contact
             << increment.relative_residual << ", imbalance "
             << increment.balance.relative_imbalance << std::endl;
     // The output has its own timer: stop this one, so that the report
-    // does not count the VTU files twice.
+    // does not count the recording twice.
     scope.stop();
-    if (!settings.output_directory.empty())
+    if (observer.records())
       {
         dealii::TimerOutput::Scope output_scope(timer, "Contact: output");
-        post_processor->write_vtu(responses,
-                                  readable_solution,
-                                  settings.output_directory);
+        observer.record(responses, readable_solution);
       }
     result.increments.push_back(increment);
   }
@@ -799,6 +788,20 @@ namespace FloorBlock::Contact
   ContactSolver<dim>::responses_at_solution() const
   {
     return committed_responses;
+  }
+
+  template <int dim>
+  const ContactProblem<dim> &
+  ContactSolver<dim>::contact_problem() const
+  {
+    return problem;
+  }
+
+  template <int dim>
+  const dealii::IndexSet &
+  ContactSolver<dim>::supported_dofs() const
+  {
+    return dirichlet_dofs;
   }
 
   template class ContactSolver<2>;

@@ -4,7 +4,7 @@
 #include <contact/contact_node.h>
 #include <contact/contact_problem.h>
 #include <contact/exact_contact.h>
-#include <contact/increment_post_processor.h>
+#include <contact/increment_observer.h>
 #include <contact/joint_law.h>
 #include <contact/results.h>
 #include <fem/elastic_assembly.h>
@@ -39,8 +39,8 @@ namespace FloorBlock::Contact
    * the joints from CoulombJoint through evaluate_contact/assemble_contact,
    * the iteration from solve_newton, the linear algebra from
    * Solver::solve_linear_system, the stages, increments and cutbacks from
-   * Loading::follow_load_path, the increment reports and VTU files from
-   * IncrementPostProcessor.
+   * Loading::follow_load_path; each converged increment goes to the
+   * IncrementObserver given to run(), which reports and writes it.
    */
   template <int dim>
   class ContactSolver
@@ -60,13 +60,15 @@ namespace FloorBlock::Contact
 
     /**
      * @brief Runs all stages.
-     * @return Every converged increment with its joint tables.
+     * @param[in,out] observer Describes every converged increment (its
+     *   joint tables) and may record it.
+     * @return Every converged increment as described by @p observer.
      * Throws ContactSolveFailure if an increment fails after all cutbacks;
      * solution() then holds the last converged state and the exception's
      * partial_result everything up to the failure.
      */
     SolveResult
-    run();
+    run(IncrementObserver<dim> &observer);
 
     /** @brief Displacement of the last converged increment (m). */
     const dealii::TrilinosWrappers::MPI::Vector &
@@ -77,6 +79,14 @@ namespace FloorBlock::Contact
 
     const std::vector<ContactNode<dim>> &
     contact_nodes() const;
+
+    /** @brief The problem solved (a copy of the constructor's). */
+    const ContactProblem<dim> &
+    contact_problem() const;
+
+    /** @brief The DoFs held by the supports. */
+    const dealii::IndexSet &
+    supported_dofs() const;
 
     /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
     std::vector<JointResponse<dim>>
@@ -101,13 +111,15 @@ namespace FloorBlock::Contact
                     IncrementResult                    &increment,
                     std::string                        &failure_reason);
     /**
-     * Post-processes the converged @p increment into @p result, then makes
-     * it the committed state.
+     * Has @p observer describe the converged @p increment, adds it to
+     * @p result, makes it the committed state, then lets @p observer
+     * record it.
      * @param[in] clock Started when the increment's first start began.
      */
     void
     commit_increment(const Loading::LoadState &state,
                      const dealii::Timer      &clock,
+                     IncrementObserver<dim>   &observer,
                      IncrementResult          &increment,
                      SolveResult              &result);
     /** The starts of solve_increment() with the current parameters. */
@@ -220,10 +232,8 @@ namespace FloorBlock::Contact
     ActiveSet                             active_set;
     StateCounts                           last_iterate_counts;
     /** Appended to a failure message when compliant joints are very stiff. */
-    std::string stiffness_hint;
-    /** Reports and VTU files of the converged increments. */
-    std::unique_ptr<IncrementPostProcessor<dim>> post_processor;
-    dealii::ConditionalOStream                   console;
-    dealii::TimerOutput                          timer;
+    std::string                stiffness_hint;
+    dealii::ConditionalOStream console;
+    dealii::TimerOutput        timer;
   };
 } // namespace FloorBlock::Contact

@@ -5,11 +5,15 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace InclineModel
   {
     constexpr dealii::types::boundary_id block_sides = 10, block_bottom = 11,
                                          block_top  = 12;
@@ -45,11 +49,12 @@ namespace FloorBlock::Verification
       scene.steps                       = {1, 0, 0};
       return scene;
     }
-  } // namespace
+  } // namespace InclineModel
 
   InclineResult
   run_incline_verification(const InclineSettings &settings)
   {
+    using namespace InclineModel;
     dealii::Triangulation<2> mesh;
     make_block_assembly({{0.,
                           block_width,
@@ -76,12 +81,12 @@ namespace FloorBlock::Verification
                         mesh);
     InclineResult result;
     result.weight = density * gravity_acceleration * block_width * block_height;
-    Contact::ContactSolver<2> solver(mesh,
-                                     incline_scene(settings),
-                                     verification_settings());
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2> solver(mesh, incline_scene(settings), numerics);
     try
       {
-        result.stuck = solver.run().increments.back();
+        result.stuck =
+          Postprocess::solve_with_reports(solver, numerics).increments.back();
       }
     catch (const Contact::ContactSolveFailure &failure)
       {

@@ -8,13 +8,17 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace PunchModel
   {
     constexpr dealii::types::material_id block = 1, base = 2;
     constexpr dealii::types::boundary_id block_axis = 11, block_side = 12,
@@ -87,12 +91,13 @@ namespace FloorBlock::Verification
         smallest = std::min(smallest, cell->diameter() / std::sqrt(2.));
       return smallest;
     }
-  } // namespace
+  } // namespace PunchModel
 
   PunchCase
   run_punch_case(const PunchSettings           &settings,
                  const Analytic::InterfaceState state)
   {
+    using namespace PunchModel;
     PunchCase result;
     result.state = state;
 
@@ -135,9 +140,11 @@ namespace FloorBlock::Verification
     scene.joints = {interface};
     scene.steps  = {0, 1, 0};
 
-    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
-    const Contact::SolveResult solved = solver.run();
-    result.n_dofs                     = solved.n_dofs;
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2>            solver(mesh, scene, numerics);
+    const Contact::SolveResult           solved =
+      Postprocess::solve_with_reports(solver, numerics);
+    result.n_dofs = solved.n_dofs;
 
     // Interface pressure against the distance r of its node from the
     // corner, over the fit range.

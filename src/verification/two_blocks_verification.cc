@@ -6,11 +6,15 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 
 namespace FloorBlock::Verification
 {
-  namespace
+  // The model's ids and sizes: a named namespace, as the verification models
+  // share names (block, base, ...) within one unity batch.
+  namespace TwoBlocksModel
   {
     // Left block (fixed, like the face block), right block, base under it.
     constexpr dealii::types::boundary_id left_outer = 11, left_joint = 12,
@@ -30,11 +34,12 @@ namespace FloorBlock::Verification
     constexpr double density                 = 2500.; // kg/m^3
     constexpr double gravity_acceleration    = 9.81;  // m/s^2
     constexpr double vertical_friction_angle = Units::degrees_to_radians(30.);
-  } // namespace
+  } // namespace TwoBlocksModel
 
   TwoBlocksResult
   run_two_blocks_verification(const TwoBlocksSettings &settings)
   {
+    using namespace TwoBlocksModel;
     const unsigned int       n_x = settings.cells_per_metre;
     const unsigned int       n_y = 2 * settings.cells_per_metre;
     dealii::Triangulation<2> mesh;
@@ -116,9 +121,11 @@ namespace FloorBlock::Verification
     // applies gravity with the first pressure increment): under gravity
     // alone, frictionless bedding and an opening joint would leave the
     // right block a horizontal mechanism with no unique answer.
-    scene.steps = {0, 2, 0};
-    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
-    const Contact::SolveResult solved    = solver.run();
+    scene.steps                                   = {0, 2, 0};
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2>            solver(mesh, scene, numerics);
+    const Contact::SolveResult           solved =
+      Postprocess::solve_with_reports(solver, numerics);
     const Contact::IncrementResult &last = solved.increments.back();
     TwoBlocksResult                 result;
     result.applied_lateral_force =

@@ -1,10 +1,11 @@
 #include <common/atomic_file.h>
-#include <fem/vtu_writer.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
+
+#include <postprocess/vtu_writer.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,7 +14,7 @@
 #include <sstream>
 #include <type_traits>
 
-namespace FloorBlock::Fem
+namespace FloorBlock::Postprocess
 {
   namespace
   {
@@ -28,7 +29,7 @@ namespace FloorBlock::Fem
     class StressPostprocessor : public dealii::DataPostprocessor<2>
     {
     public:
-      explicit StressPostprocessor(const ElasticModel<2> &model)
+      explicit StressPostprocessor(const Fem::ElasticModel<2> &model)
         : model(model)
       {}
 
@@ -88,7 +89,7 @@ namespace FloorBlock::Fem
       }
 
     private:
-      const ElasticModel<2> &model;
+      const Fem::ElasticModel<2> &model;
     };
 
     /**
@@ -98,7 +99,7 @@ namespace FloorBlock::Fem
     class SolidStressPostprocessor : public dealii::DataPostprocessor<3>
     {
     public:
-      explicit SolidStressPostprocessor(const ElasticModel<3> &model)
+      explicit SolidStressPostprocessor(const Fem::ElasticModel<3> &model)
         : model(model)
       {}
 
@@ -147,15 +148,15 @@ namespace FloorBlock::Fem
       }
 
     private:
-      const ElasticModel<3> &model;
+      const Fem::ElasticModel<3> &model;
     };
   } // namespace
 
   template <int dim>
   void
   write_vtu_increment(
-    const FeSpace<dim>                                 &space,
-    const ElasticModel<dim>                            &model,
+    const Fem::FeSpace<dim>                            &space,
+    const Fem::ElasticModel<dim>                       &model,
     const dealii::TrilinosWrappers::MPI::Vector        &solution,
     const std::vector<dealii::types::global_dof_index> &state_dofs,
     const std::vector<double>                          &states,
@@ -262,19 +263,19 @@ namespace FloorBlock::Fem
   }
 
   template void
-  write_vtu_increment(const FeSpace<2> &,
-                      const ElasticModel<2> &,
+  write_vtu_increment(const Fem::FeSpace<2> &,
+                      const Fem::ElasticModel<2> &,
                       const dealii::TrilinosWrappers::MPI::Vector &,
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
                       std::vector<std::pair<double, std::string>> &);
   template void
-  write_vtu_increment(const FeSpace<3> &,
-                      const ElasticModel<3> &,
+  write_vtu_increment(const Fem::FeSpace<3> &,
+                      const Fem::ElasticModel<3> &,
                       const dealii::TrilinosWrappers::MPI::Vector &,
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
                       std::vector<std::pair<double, std::string>> &);
-} // namespace FloorBlock::Fem
+} // namespace FloorBlock::Postprocess
