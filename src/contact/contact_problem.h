@@ -129,9 +129,15 @@ namespace FloorBlock::Contact
      * Newton starts, not the equations of the increment.
      */
     bool extrapolate_increments = true;
-    /** Length over which the averaged peak normal stress is taken (m). */
+    /**
+     * Length over which the averaged peak normal stress is taken (m); read
+     * by the post-processing (Postprocess::solve_with_reports).
+     */
     double averaging_length = 0.1;
-    /** If not empty, a .pvd/.vtu series is written here per increment. */
+    /**
+     * If not empty, a .pvd/.vtu series is written here per increment by
+     * the post-processing (Postprocess::solve_with_reports).
+     */
     std::string output_directory;
     /** Print one line per increment to stdout. */
     bool verbose = false;

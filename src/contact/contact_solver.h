@@ -1,18 +1,18 @@
 #pragma once
 
 #include <contact/active_set.h>
+#include <contact/contact_formulation.h>
 #include <contact/contact_node.h>
 #include <contact/contact_problem.h>
-#include <contact/exact_contact.h>
-#include <contact/increment_post_processor.h>
+#include <contact/increment_observer.h>
 #include <contact/joint_law.h>
+#include <contact/newton_driver.h>
 #include <contact/results.h>
 #include <fem/elastic_assembly.h>
 #include <fem/fe_space.h>
 #include <fem/stored_elastic_system.h>
 #include <loading/load_path.h>
-#include <solver/reused_amg.h>
-#include <solver/reused_factorization.h>
+#include <solver/system_solver.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -37,11 +37,13 @@ namespace FloorBlock::Contact
    * converged equilibrium, with automatic cutback.
    *
    * Orchestration only: the bulk comes from Fem::assemble_elastic_system,
-   * the joints from CoulombJoint through evaluate_contact/assemble_contact,
+   * the joints' part of the Newton system and the starts of an increment
+   * from a ContactFormulation (CompliantFormulation, ExactFormulation),
+   * the pair forces from assemble_contact,
    * the iteration from solve_newton, the linear algebra from
-   * Solver::solve_linear_system, the stages, increments and cutbacks from
-   * Loading::follow_load_path, the increment reports and VTU files from
-   * IncrementPostProcessor.
+   * Solver::SystemSolver, the stages, increments and cutbacks from
+   * Loading::follow_load_path; each converged increment goes to the
+   * IncrementObserver given to run(), which reports and writes it.
    */
   template <int dim>
   class ContactSolver
@@ -61,13 +63,15 @@ namespace FloorBlock::Contact
 
     /**
      * @brief Runs all stages.
-     * @return Every converged increment with its joint tables.
+     * @param[in,out] observer Describes every converged increment (its
+     *   joint tables) and may record it.
+     * @return Every converged increment as described by @p observer.
      * Throws ContactSolveFailure if an increment fails after all cutbacks;
      * solution() then holds the last converged state and the exception's
      * partial_result everything up to the failure.
      */
     SolveResult
-    run();
+    run(IncrementObserver<dim> &observer);
 
     /** @brief Displacement of the last converged increment (m). */
     const dealii::TrilinosWrappers::MPI::Vector &
@@ -79,22 +83,25 @@ namespace FloorBlock::Contact
     const std::vector<ContactNode<dim>> &
     contact_nodes() const;
 
+    /** @brief The problem solved (a copy of the constructor's). */
+    const ContactProblem<dim> &
+    contact_problem() const;
+
+    /** @brief The DoFs held by the supports. */
+    const dealii::IndexSet &
+    supported_dofs() const;
+
     /** @brief Joint law evaluations at solution(); empty before the first converged increment. */
     std::vector<JointResponse<dim>>
     responses_at_solution() const;
 
   private:
-    void
-    setup_contact();
     /** Wall times and solve counters of the run so far. */
     void
     add_statistics(SolveResult &result) const;
     /**
-     * One increment of the load path: from the extrapolated state (if the
-     * predictor applies), else or then from the last converged state, and
-     * for the exact law then from a penalty start, and for the exact law
-     * all of these again with the complementarity parameters a tenth;
-     * each start is tried only when the one before failed.
+     * One increment of the load path through the formulation's starts
+     * (ContactFormulation::solve_increment).
      */
     bool
     solve_increment(const Loading::LoadState           &state,
@@ -102,21 +109,17 @@ namespace FloorBlock::Contact
                     IncrementResult                    &increment,
                     std::string                        &failure_reason);
     /**
-     * Post-processes the converged @p increment into @p result, then makes
-     * it the committed state.
+     * Has @p observer describe the converged @p increment, adds it to
+     * @p result, makes it the committed state, then lets @p observer
+     * record it.
      * @param[in] clock Started when the increment's first start began.
      */
     void
     commit_increment(const Loading::LoadState &state,
                      const dealii::Timer      &clock,
+                     IncrementObserver<dim>   &observer,
                      IncrementResult          &increment,
                      SolveResult              &result);
-    /** The starts of solve_increment() with the current parameters. */
-    bool
-    try_starts(const Loading::LoadState           &state,
-               const Loading::FailedStartRecorder &record_failed_start,
-               IncrementResult                    &increment,
-               std::string                        &failure_reason);
     /** Back to the committed state after the failed @p attempt. */
     void
     discard_attempt(const std::string     &attempt,
@@ -127,70 +130,25 @@ namespace FloorBlock::Contact
                      const double                prediction,
                      IncrementResult            &increment,
                      std::string                &failure_reason);
-    /** Builds the multipliers' system (rigid-law pairs only). */
-    void
-    setup_exact_system();
+    /** The Newton matrix and residual at the current iterate. */
+    NewtonIterate
+    assemble_iterate(const Loading::LoadFactors &factors);
+    /** The Newton update at the current iterate. */
+    bool
+    solve_update(const double forcing, std::string &message);
     /** Every pair's law at the current iterate. */
     std::vector<JointResponse<dim>>
     responses_at_iterate();
-    /** The Newton equations include the exact law's multipliers. */
-    bool
-    exact_equations() const;
-    /**
-     * The increment solved with the rigid-law pairs as springs of the
-     * complementarity parameter's stiffness, then with the exact law
-     * from that state (a fallback of the exact law).
-     */
-    bool
-    solve_from_penalty_start(const Loading::LoadFactors &factors,
-                             IncrementResult            &increment,
-                             std::string                &failure_reason);
-    dealii::AffineConstraints<double>
-    constraints_at(const double uplift_factor);
     double
     load_norm(const Loading::LoadFactors &factors);
     /** Sets the rigid obstacles' displacements for the uplift factor. */
     void
     move_obstacles(const double uplift_factor);
-    bool
-    solve_linear(double forcing, std::string &message);
-    void
-    commit(const std::vector<JointResponse<dim>> &responses);
 
-    const ContactProblem<dim>                       problem;
-    const ContactSolverSettings                     settings;
-    const Fem::FeSpace<dim>                         fe_space;
-    std::vector<ContactNode<dim>>                   nodes;
-    std::vector<std::unique_ptr<CoulombJoint<dim>>> joint_laws;
-    std::vector<const CoulombJoint<dim> *>          pair_laws;
-    /** Per pair: the exact law, empty for a compliant pair. */
-    std::vector<std::optional<ExactPairLaw>> exact_laws;
-    /**
-     * Owns the springs of rigid-law pairs: kn = ks = c_n for the penalty
-     * start, E/h for the pairs that yield at crosspoints.
-     */
-    std::vector<std::unique_ptr<CoulombJoint<dim>>> penalty_laws;
-    /** pair_laws with the penalty springs in place of the exact law. */
-    std::vector<const CoulombJoint<dim> *> penalty_pair_laws;
-    /** Solving the penalty start (solve_from_penalty_start). */
-    bool penalty_start = false;
-    /** The exact law's equations; null when every pair is compliant. */
-    std::unique_ptr<ExactContact<dim>> exact;
-    /** Displacements and multipliers (exact law only). */
-    dealii::TrilinosWrappers::SparsityPattern system_pattern;
-    /** K and B^T, the constant part of the Newton matrix (exact law). */
-    dealii::TrilinosWrappers::SparseMatrix base_matrix;
-    dealii::TrilinosWrappers::MPI::Vector  system_residual;
-    dealii::TrilinosWrappers::MPI::Vector  system_update;
-    dealii::Vector<double>                 multiplier_update;
-    dealii::Vector<double>                 multiplier_base;
-    dealii::Vector<double>                 committed_multipliers;
-    /**
-     * The exact law's complementarity parameter per the configured one:
-     * solve_increment() lowers it when every start of a load state fails
-     * and keeps it lowered for the rest of the solve.
-     */
-    double                            complementarity_scale = 1.;
+    const ContactProblem<dim>         problem;
+    const ContactSolverSettings       settings;
+    const Fem::FeSpace<dim>           fe_space;
+    std::vector<ContactNode<dim>>     nodes;
     std::vector<JointHistory<dim>>    committed_history;
     std::vector<JointHistory<dim>>    working_history;
     std::vector<JointResponse<dim>>   committed_responses;
@@ -201,10 +159,10 @@ namespace FloorBlock::Contact
     dealii::TrilinosWrappers::SparsityPattern      pattern;
     dealii::TrilinosWrappers::SparseMatrix         matrix;
     std::unique_ptr<Fem::StoredElasticSystem<dim>> bulk;
-    /** Set when the linear systems are solved directly (see run()). */
-    std::unique_ptr<Solver::ReusedFactorization> direct_solver;
-    /** Set instead when GMRES + ML solves (large or distributed systems). */
-    std::unique_ptr<Solver::ReusedAmg>    amg_solver;
+    /** How the joints enter the Newton system: compliant or exact. */
+    std::unique_ptr<ContactFormulation<dim>> formulation;
+    /** Solves every Newton system, kept for the whole run. */
+    std::unique_ptr<Solver::SystemSolver> linear_solver;
     unsigned int                          n_linear_solves            = 0;
     unsigned int                          n_failed_newton_iterations = 0;
     dealii::TrilinosWrappers::MPI::Vector current_solution;
@@ -223,10 +181,8 @@ namespace FloorBlock::Contact
     ActiveSet                             active_set;
     StateCounts                           last_iterate_counts;
     /** Appended to a failure message when compliant joints are very stiff. */
-    std::string stiffness_hint;
-    /** Reports and VTU files of the converged increments. */
-    std::unique_ptr<IncrementPostProcessor<dim>> post_processor;
-    dealii::ConditionalOStream                   console;
-    dealii::TimerOutput                          timer;
+    std::string                stiffness_hint;
+    dealii::ConditionalOStream console;
+    dealii::TimerOutput        timer;
   };
 } // namespace FloorBlock::Contact

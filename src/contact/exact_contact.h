@@ -78,7 +78,7 @@ namespace FloorBlock::Contact
      *   (Dirichlet and hanging nodes), over DoFs 0..n_u-1.
      * @param[in] n_displacement_dofs n_u.
      * @p nodes and @p constraints are kept by reference: they must outlive
-     * this object and keep their addresses (ContactSolver owns all three).
+     * this object and keep their addresses (ContactSolver owns them).
      */
     ExactContact(const std::vector<ContactNode<dim>>            &nodes,
                  const std::vector<std::optional<ExactPairLaw>> &laws,

@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <contact/joint_pairing.h>
+#include <fem/face_values.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
@@ -82,14 +83,10 @@ namespace FloorBlock::Contact
                  const dealii::types::boundary_id side)
     {
       using namespace dealii;
-      const FiniteElement<dim>            &fe = space.fe();
-      FEFaceValues<dim>                    face_values(space.mapping(),
-                                    fe,
-                                    space.face_quadrature(),
-                                    update_values | update_normal_vectors |
-                                      update_JxW_values);
-      const unsigned int                   n_cell_dofs = fe.n_dofs_per_cell();
-      std::vector<types::global_dof_index> dof_indices(n_cell_dofs);
+      const FiniteElement<dim> &fe          = space.fe();
+      FEFaceValues<dim>         face_values = Fem::boundary_face_values(space);
+      const unsigned int        n_cell_dofs = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index>             dof_indices(n_cell_dofs);
       std::map<types::global_dof_index, SideNode<dim>> nodes;
       for (const auto &cell : space.dof_handler().active_cell_iterators())
         for (const unsigned int face_no : cell->face_indices())

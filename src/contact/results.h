@@ -134,7 +134,7 @@ namespace FloorBlock::Contact
     unsigned int n_newton_iterations = 0;
     /**
      * Rigid law: the increment was solved from a penalty start
-     * (ContactSolver::solve_from_penalty_start), whose iterations are
+     * (ExactFormulation::solve_from_penalty_start), whose iterations are
      * included in n_newton_iterations.
      */
     bool started_from_penalty = false;
@@ -143,7 +143,7 @@ namespace FloorBlock::Contact
     /**
      * Rigid law: the complementarity parameter in force when this
      * increment converged, as a fraction of the configured one
-     * (ContactSolver::solve_increment lowers it to 0.1 or 0.01 to rescue a
+     * (ExactFormulation::solve_increment lowers it to 0.1 or 0.01 to rescue a
      * load state whose active set cycles, and keeps it from then on);
      * 1 for the compliant law, which has no such parameter.
      */

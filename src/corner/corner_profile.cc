@@ -1,5 +1,6 @@
-#include <contact/joint_report.h>
 #include <corner/corner_profile.h>
+
+#include <postprocess/joint_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +90,7 @@ namespace FloorBlock::Corner
             if (p_b > p_c)
               beyond =
                 std::min(segment,
-                         Contact::square_root_edge_extent(
+                         Postprocess::square_root_edge_extent(
                            p_c, p_b, s_c - height(nodes[top_closed - 1])));
           }
         profile.edge_arc     = s_c + beyond;

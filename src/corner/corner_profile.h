@@ -70,7 +70,7 @@ namespace FloorBlock::Corner
    * The end between that node c and the open node above it lies where
    * t_n^2, extrapolated linearly from c and the closed node below it,
    * reaches zero (the exact law's square-root fall, the rule of
-   * Contact::make_joint_reports' closed length), at most the open node.
+   * Postprocess::make_joint_reports' closed length), at most the open node.
    * @throws std::runtime_error if the profile has no closed node.
    */
   CornerProfile

@@ -1,3 +1,4 @@
+#include <fem/face_values.h>
 #include <fem/surface_load.h>
 
 #include <deal.II/base/mpi.h>
@@ -32,11 +33,11 @@ namespace FloorBlock::Fem
     dealii::DoFHandler<dim> dof_handler(triangulation);
     dof_handler.distribute_dofs(fe);
     const dealii::QGauss<dim - 1> quadrature(2);
-    dealii::FEFaceValues<dim>     face_values(fe,
-                                          quadrature,
-                                          dealii::update_normal_vectors |
-                                            dealii::update_JxW_values);
-    SurfaceLoad<dim>              load;
+    dealii::FEFaceValues<dim>     face_values = boundary_face_values(
+      fe.reference_cell().template get_default_linear_mapping<dim>(),
+      fe,
+      quadrature);
+    SurfaceLoad<dim> load;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         {

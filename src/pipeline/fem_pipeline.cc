@@ -3,7 +3,6 @@
 #include <common/units.h>
 #include <compare/joint_name.h>
 #include <contact/contact_solver.h>
-#include <contact/joint_report.h>
 #include <fem/surface_load.h>
 #include <geometry/extruded_assembly.h>
 #include <geometry/refinement_manifolds.h>
@@ -29,6 +28,8 @@
 #include <deal.II/grid/tria.h>
 
 #include <fmt/format.h>
+#include <postprocess/increment_post_processor.h>
+#include <postprocess/joint_report.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -69,7 +70,7 @@ namespace FloorBlock::Pipeline
       const double overlap =
         result.increments.empty() ?
           0. :
-          Contact::largest_overlap(result.increments.back().joints);
+          Postprocess::largest_overlap(result.increments.back().joints);
       const bool large = overlap > limit;
       return {overlap,
               limit,
@@ -108,16 +109,15 @@ namespace FloorBlock::Pipeline
     {
       FemOutcome outcome;
       outcome.mesh = mesh;
-      Contact::ContactSolver<dim> solver(
-        triangulation,
-        problem,
+      const Contact::ContactSolverSettings numerics =
         Scene::contact_solver_settings(scene,
-                                       write_vtu ? folder.path_of("vtu") : ""));
+                                       write_vtu ? folder.path_of("vtu") : "");
+      Contact::ContactSolver<dim> solver(triangulation, problem, numerics);
       std::string status_text = "every loading increment converged";
       std::optional<Output::SolveFailureRecord> failure_record;
       try
         {
-          outcome.result    = solver.run();
+          outcome.result    = Postprocess::solve_with_reports(solver, numerics);
           outcome.converged = true;
         }
       catch (const Contact::ContactSolveFailure &failure)

@@ -122,7 +122,7 @@ namespace FloorBlock::Pipeline
    * mesh_swept_scene(), the scene's 2D contact problem swept along the
    * face with Geometry/End faces (Scene::swept_contact_problem), the same
    * contact solver and files, forces per metre of face and contact areas
-   * (Contact::make_swept_joint_reports), each joint along the face. With a
+   * (Postprocess::make_swept_joint_reports), each joint along the face. With a
    * footprint the support's whole load acts on it
    * (Scene::load_support_footprint); fem.json reports the support force
    * the mesh carries (applied_load_N, Fem::applied_surface_load). No

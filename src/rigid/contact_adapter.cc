@@ -1,6 +1,7 @@
-#include <contact/joint_report.h>
 #include <geometry/ids.h>
 #include <rigid/contact_adapter.h>
+
+#include <postprocess/joint_report.h>
 
 namespace FloorBlock::RigidBlocks
 {
@@ -51,7 +52,7 @@ namespace FloorBlock::RigidBlocks
           report.profile.push_back(sample);
           weights.push_back(geometry.points[p].weight);
         }
-      Contact::add_peak_stresses(report, weights);
+      Postprocess::add_peak_stresses(report, weights);
       return report;
     }
 

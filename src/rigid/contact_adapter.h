@@ -23,7 +23,7 @@ namespace FloorBlock::RigidBlocks
    *   force on the block away from the face, the opposite of the rigid
    *   model's sign;
    * - pointwise and averaged peak from the point profile with
-   *   Contact::add_peak_stresses(), the FEM's own definition;
+   *   Postprocess::add_peak_stresses(), the FEM's own definition;
    * Per increment: stage factor of the increment's stage, Newton
    * iterations, cutbacks, residual; block motions keyed by material id
    * (Geometry::Ids: blocks 1..n, face block with zero motion; the base is

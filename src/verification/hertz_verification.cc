@@ -6,6 +6,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -142,8 +144,9 @@ namespace FloorBlock::Verification
     Contact::ContactSolverSettings numerics;
     numerics.fe_degree   = settings.fe_degree;
     numerics.linear.kind = Solver::LinearSolverKind::direct;
-    Contact::ContactSolver<2>   solver(mesh, scene, numerics);
-    const Contact::SolveResult  solved = solver.run();
+    Contact::ContactSolver<2>  solver(mesh, scene, numerics);
+    const Contact::SolveResult solved =
+      Postprocess::solve_with_reports(solver, numerics);
     const Contact::JointReport &report = solved.increments.back().joints.at(0);
     result.n_dofs                      = solved.n_dofs;
     for (const Contact::IncrementResult &increment : solved.increments)

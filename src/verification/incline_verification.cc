@@ -5,6 +5,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 
 namespace FloorBlock::Verification
@@ -79,12 +81,12 @@ namespace FloorBlock::Verification
                         mesh);
     InclineResult result;
     result.weight = density * gravity_acceleration * block_width * block_height;
-    Contact::ContactSolver<2> solver(mesh,
-                                     incline_scene(settings),
-                                     verification_settings());
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2> solver(mesh, incline_scene(settings), numerics);
     try
       {
-        result.stuck = solver.run().increments.back();
+        result.stuck =
+          Postprocess::solve_with_reports(solver, numerics).increments.back();
       }
     catch (const Contact::ContactSolveFailure &failure)
       {

@@ -5,6 +5,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 namespace FloorBlock::Verification
 {
   namespace
@@ -72,8 +74,9 @@ namespace FloorBlock::Verification
       verification_settings(settings.fe_degree);
     numerics.linear.kind = settings.linear_solver;
     Contact::ContactSolver<2>  solver(mesh, scene, numerics);
-    const Contact::SolveResult solved = solver.run();
-    PatchResult                result;
+    const Contact::SolveResult solved =
+      Postprocess::solve_with_reports(solver, numerics);
+    PatchResult result;
     result.increment        = solved.increments.back();
     result.n_increments     = solved.increments.size();
     result.joint_length     = joint_length;

@@ -8,6 +8,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -138,9 +140,11 @@ namespace FloorBlock::Verification
     scene.joints = {interface};
     scene.steps  = {0, 1, 0};
 
-    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
-    const Contact::SolveResult solved = solver.run();
-    result.n_dofs                     = solved.n_dofs;
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2>            solver(mesh, scene, numerics);
+    const Contact::SolveResult           solved =
+      Postprocess::solve_with_reports(solver, numerics);
+    result.n_dofs = solved.n_dofs;
 
     // Interface pressure against the distance r of its node from the
     // corner, over the fit range.

@@ -6,6 +6,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 
 namespace FloorBlock::Verification
@@ -119,9 +121,11 @@ namespace FloorBlock::Verification
     // applies gravity with the first pressure increment): under gravity
     // alone, frictionless bedding and an opening joint would leave the
     // right block a horizontal mechanism with no unique answer.
-    scene.steps = {0, 2, 0};
-    Contact::ContactSolver<2>  solver(mesh, scene, verification_settings());
-    const Contact::SolveResult solved    = solver.run();
+    scene.steps                                   = {0, 2, 0};
+    const Contact::ContactSolverSettings numerics = verification_settings();
+    Contact::ContactSolver<2>            solver(mesh, scene, numerics);
+    const Contact::SolveResult           solved =
+      Postprocess::solve_with_reports(solver, numerics);
     const Contact::IncrementResult &last = solved.increments.back();
     TwoBlocksResult                 result;
     result.applied_lateral_force =

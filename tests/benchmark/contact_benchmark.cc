@@ -13,6 +13,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -69,8 +71,9 @@ main(int argc, char **argv)
   clock.restart();
   Contact::ContactSolver<2> solver(
     mesh, Scene::make_floor_contact_problem(scene_settings), settings);
-  const Contact::SolveResult result     = solver.run();
-  const double               solve_time = clock.wall_time();
+  const Contact::SolveResult result =
+    Postprocess::solve_with_reports(solver, settings);
+  const double solve_time = clock.wall_time();
 
   std::printf(
     "cells %u, dofs %u, contact pairs %u, mesh %.2f s, solve %.2f s\n",

@@ -6,6 +6,7 @@
 #include <verification/hertz_verification.h>
 
 #include <benchmark/benchmark.h>
+#include <postprocess/increment_post_processor.h>
 
 #include <filesystem>
 #include <memory>
@@ -290,12 +291,17 @@ namespace FloorBlock::Benchmark
           const Stopwatch clock;
           try
             {
+              const Contact::ContactSolverSettings numerics =
+                Scene::contact_solver_settings(scene, "");
               Contact::ContactSolver<2> solver(
                 level.triangulation,
                 Scene::make_floor_contact_problem(
                   Scene::floor_problem_settings(scene)),
-                Scene::contact_solver_settings(scene, ""));
-              fill_solve_record(solver.run(), scene.geometry.n_blocks, record);
+                numerics);
+              fill_solve_record(Postprocess::solve_with_reports(solver,
+                                                                numerics),
+                                scene.geometry.n_blocks,
+                                record);
               record.converged = true;
             }
           catch (const Contact::ContactSolveFailure &failure)

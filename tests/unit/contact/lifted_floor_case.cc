@@ -2,6 +2,8 @@
 
 #include <scene/floor_contact_problem.h>
 
+#include <postprocess/increment_post_processor.h>
+
 #include <cmath>
 
 #include "rounded_mesh.h"
@@ -62,8 +64,9 @@ namespace FloorBlock::Testing
     solver_settings.extrapolate_increments = floor_case.extrapolate_increments;
     Contact::ContactSolver<2> solver(
       mesh, Scene::make_floor_contact_problem(settings), solver_settings);
-    const Contact::SolveResult result = solver.run();
-    LiftedFloorOutcome         outcome;
+    const Contact::SolveResult result =
+      Postprocess::solve_with_reports(solver, solver_settings);
+    LiftedFloorOutcome outcome;
     outcome.last    = result.increments.back();
     outcome.n_cells = mesh.n_active_cells();
     outcome.n_pairs = result.n_contact_pairs;

@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <gtest/gtest.h>
+#include <postprocess/increment_post_processor.h>
 
 #include <cmath>
 
@@ -65,17 +66,18 @@ namespace
     base.moves_with_uplift    = true;
     scene.supports            = {base};
     JointDefinition<2> joint;
-    joint.name                        = "bedding";
-    joint.side_a                      = base_top;
-    joint.side_b                      = block_bottom;
-    joint.parameters.normal_stiffness = 9e9;
-    joint.parameters.shear_stiffness  = 6.7e9;
-    joint.parameters.friction_angle   = 30. * M_PI / 180.;
-    scene.joints                      = {joint};
-    scene.uplift                      = uplift;
-    scene.steps                       = {1, 0, n_uplift};
-    ContactSolver<2> solver(mesh, scene, Testing::test_settings());
-    return solver.run();
+    joint.name                           = "bedding";
+    joint.side_a                         = base_top;
+    joint.side_b                         = block_bottom;
+    joint.parameters.normal_stiffness    = 9e9;
+    joint.parameters.shear_stiffness     = 6.7e9;
+    joint.parameters.friction_angle      = 30. * M_PI / 180.;
+    scene.joints                         = {joint};
+    scene.uplift                         = uplift;
+    scene.steps                          = {1, 0, n_uplift};
+    const ContactSolverSettings settings = Testing::test_settings();
+    ContactSolver<2>            solver(mesh, scene, settings);
+    return Postprocess::solve_with_reports(solver, settings);
   }
 
   IncrementResult

@@ -1,8 +1,7 @@
 // Issue 16: the joint reports of a 3D joint swept along the face, per
 // metre of face, with the contact area as an area.
-#include <contact/swept_joint_report.h>
-
 #include <gtest/gtest.h>
+#include <postprocess/swept_joint_report.h>
 
 #include <vector>
 
@@ -59,7 +58,7 @@ namespace
     std::vector<Contact::ContactNode<3>>   nodes;
     std::vector<Contact::JointResponse<3>> responses;
     make_joint({true, true, false}, nodes, responses);
-    const auto reports = Contact::make_swept_joint_reports(
+    const auto reports = Postprocess::make_swept_joint_reports(
       nodes, responses, {"vertical 1"}, 0.1, 1.);
     ASSERT_EQ(reports.size(), 1u);
     const Contact::JointReport &report = reports.front();
@@ -85,7 +84,7 @@ namespace
     std::vector<Contact::ContactNode<3>>   nodes;
     std::vector<Contact::JointResponse<3>> responses;
     make_joint({true, true, false}, nodes, responses);
-    const auto report = Contact::make_swept_joint_reports(
+    const auto report = Postprocess::make_swept_joint_reports(
                           nodes, responses, {"vertical 1"}, 0.1, 1.)
                           .front();
     ASSERT_EQ(report.along_face.size(), 3u);
@@ -121,7 +120,7 @@ namespace
     std::vector<Contact::ContactNode<3>>   nodes;
     std::vector<Contact::JointResponse<3>> responses;
     make_joint({true, true, true}, nodes, responses);
-    const auto report = Contact::make_swept_joint_reports(
+    const auto report = Postprocess::make_swept_joint_reports(
                           nodes, responses, {"vertical 1"}, 0.1, 1.)
                           .front();
     EXPECT_NEAR(report.normal_force, traction, 1e-9 * traction);

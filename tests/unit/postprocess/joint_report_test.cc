@@ -3,9 +3,9 @@
 // synthetic gap and pressure profiles, evaluated with the real joint law,
 // have a known interpolated contact end.
 #include <contact/joint_law.h>
-#include <contact/joint_report.h>
 
 #include <gtest/gtest.h>
+#include <postprocess/joint_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,7 @@
 namespace
 {
   using namespace FloorBlock::Contact;
+  using namespace FloorBlock::Postprocess;
 
   TEST(JointReport, LinearProfileHasExactForceAndWindowAverage)
   {
@@ -457,11 +458,10 @@ namespace
 TEST(SquareRootEdgeExtent, ExtrapolatesTheSquaredTractionToZero)
 {
   const double c = 7.3e6;
-  EXPECT_NEAR(FloorBlock::Contact::square_root_edge_extent(c * std::sqrt(0.3),
-                                                           c * std::sqrt(0.5),
-                                                           0.2),
+  EXPECT_NEAR(FloorBlock::Postprocess::square_root_edge_extent(
+                c * std::sqrt(0.3), c * std::sqrt(0.5), 0.2),
               0.3,
               1e-12);
-  EXPECT_DOUBLE_EQ(FloorBlock::Contact::square_root_edge_extent(-1e3, 5e6, 0.2),
-                   0.);
+  EXPECT_DOUBLE_EQ(
+    FloorBlock::Postprocess::square_root_edge_extent(-1e3, 5e6, 0.2), 0.);
 }

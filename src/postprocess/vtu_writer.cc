@@ -1,10 +1,11 @@
 #include <common/atomic_file.h>
-#include <fem/vtu_writer.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
+
+#include <postprocess/vtu_writer.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,7 +14,7 @@
 #include <sstream>
 #include <type_traits>
 
-namespace FloorBlock::Fem
+namespace FloorBlock::Postprocess
 {
   namespace
   {
@@ -28,7 +29,7 @@ namespace FloorBlock::Fem
     class StressPostprocessor : public dealii::DataPostprocessor<2>
     {
     public:
-      explicit StressPostprocessor(const ElasticModel<2> &model)
+      explicit StressPostprocessor(const Fem::ElasticModel<2> &model)
         : model(model)
       {}
 
@@ -88,7 +89,7 @@ namespace FloorBlock::Fem
       }
 
     private:
-      const ElasticModel<2> &model;
+      const Fem::ElasticModel<2> &model;
     };
 
     /**
@@ -98,7 +99,7 @@ namespace FloorBlock::Fem
     class SolidStressPostprocessor : public dealii::DataPostprocessor<3>
     {
     public:
-      explicit SolidStressPostprocessor(const ElasticModel<3> &model)
+      explicit SolidStressPostprocessor(const Fem::ElasticModel<3> &model)
         : model(model)
       {}
 
@@ -147,28 +148,85 @@ namespace FloorBlock::Fem
       }
 
     private:
-      const ElasticModel<3> &model;
+      const Fem::ElasticModel<3> &model;
     };
+
+    /**
+     * Writes the patches of @p data_out as the next increment of the
+     * series in @p directory and updates the .pvd record.
+     */
+    template <int dim>
+    void
+    write_series_files(const dealii::DataOut<dim> &data_out,
+                       const std::string          &directory,
+                       const MPI_Comm              communicator,
+                       std::vector<std::pair<double, std::string>> &records)
+    {
+      const unsigned int rank =
+        dealii::Utilities::MPI::this_mpi_process(communicator);
+      const unsigned int n_processes =
+        dealii::Utilities::MPI::n_mpi_processes(communicator);
+      // One process: solution-NNNN.vtu. Several: each writes its piece
+      // solution-NNNN.RRRR.vtu and process 0 the record solution-NNNN.pvtu
+      // that ParaView opens; solution.pvd lists one file per increment.
+      std::ostringstream stem;
+      stem << "solution-" << std::setw(4) << std::setfill('0')
+           << records.size();
+      const auto piece_name = [&](const unsigned int process) {
+        std::ostringstream name;
+        name << stem.str();
+        if (n_processes > 1)
+          name << "." << std::setw(4) << std::setfill('0') << process;
+        return name.str() + ".vtu";
+      };
+      // The folder exists before any process writes into it.
+      const int barrier = MPI_Barrier(communicator);
+      AssertThrowMPI(barrier);
+      const std::string path      = directory + "/" + piece_name(rank);
+      const std::string temporary = temporary_name_for(path);
+      {
+        std::ofstream file(temporary);
+        data_out.write_vtu(file);
+      }
+      commit_temporary_file(temporary, path);
+      std::string listed = piece_name(0);
+      if (n_processes > 1)
+        {
+          listed = stem.str() + ".pvtu";
+          if (rank == 0)
+            {
+              std::vector<std::string> pieces;
+              for (unsigned int process = 0; process < n_processes; ++process)
+                pieces.push_back(piece_name(process));
+              std::ostringstream record;
+              data_out.write_pvtu_record(record, pieces);
+              write_file_atomically(directory + "/" + listed, record.str());
+            }
+        }
+      records.emplace_back(static_cast<double>(records.size()), listed);
+      if (rank == 0)
+        {
+          std::ostringstream pvd;
+          dealii::DataOutBase::write_pvd_record(pvd, records);
+          write_file_atomically(directory + "/solution.pvd", pvd.str());
+        }
+    }
   } // namespace
 
   template <int dim>
   void
   write_vtu_increment(
-    const FeSpace<dim>                                 &space,
-    const ElasticModel<dim>                            &model,
+    const Fem::FeSpace<dim>                            &space,
+    const Fem::ElasticModel<dim>                       &model,
     const dealii::TrilinosWrappers::MPI::Vector        &solution,
     const std::vector<dealii::types::global_dof_index> &state_dofs,
     const std::vector<double>                          &states,
     const std::string                                  &directory,
     std::vector<std::pair<double, std::string>>        &records)
   {
-    const auto        &dof_handler  = space.dof_handler();
-    const MPI_Comm     communicator = dof_handler.get_communicator();
-    const unsigned int rank =
-      dealii::Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_processes =
-      dealii::Utilities::MPI::n_mpi_processes(communicator);
-    if (rank == 0)
+    const auto    &dof_handler  = space.dof_handler();
+    const MPI_Comm communicator = dof_handler.get_communicator();
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       std::filesystem::create_directories(directory);
     // Every process writes the cells it owns, which read only its
     // locally relevant DoFs; the rest stay zero.
@@ -216,65 +274,23 @@ namespace FloorBlock::Fem
       dealii::DataOutBase::VtkFlags::ZlibCompressionLevel::best_speed;
     data_out.set_flags(flags);
 
-    // One process: solution-NNNN.vtu. Several: each writes its piece
-    // solution-NNNN.RRRR.vtu and process 0 the record solution-NNNN.pvtu
-    // that ParaView opens; solution.pvd lists one file per increment.
-    std::ostringstream stem;
-    stem << "solution-" << std::setw(4) << std::setfill('0') << records.size();
-    const auto piece_name = [&](const unsigned int process) {
-      std::ostringstream name;
-      name << stem.str();
-      if (n_processes > 1)
-        name << "." << std::setw(4) << std::setfill('0') << process;
-      return name.str() + ".vtu";
-    };
-    // The folder exists before any process writes into it.
-    const int barrier = MPI_Barrier(communicator);
-    AssertThrowMPI(barrier);
-    const std::string path      = directory + "/" + piece_name(rank);
-    const std::string temporary = temporary_name_for(path);
-    {
-      std::ofstream file(temporary);
-      data_out.write_vtu(file);
-    }
-    commit_temporary_file(temporary, path);
-    std::string listed = piece_name(0);
-    if (n_processes > 1)
-      {
-        listed = stem.str() + ".pvtu";
-        if (rank == 0)
-          {
-            std::vector<std::string> pieces;
-            for (unsigned int process = 0; process < n_processes; ++process)
-              pieces.push_back(piece_name(process));
-            std::ostringstream record;
-            data_out.write_pvtu_record(record, pieces);
-            write_file_atomically(directory + "/" + listed, record.str());
-          }
-      }
-    records.emplace_back(static_cast<double>(records.size()), listed);
-    if (rank == 0)
-      {
-        std::ostringstream pvd;
-        dealii::DataOutBase::write_pvd_record(pvd, records);
-        write_file_atomically(directory + "/solution.pvd", pvd.str());
-      }
+    write_series_files(data_out, directory, communicator, records);
   }
 
   template void
-  write_vtu_increment(const FeSpace<2> &,
-                      const ElasticModel<2> &,
+  write_vtu_increment(const Fem::FeSpace<2> &,
+                      const Fem::ElasticModel<2> &,
                       const dealii::TrilinosWrappers::MPI::Vector &,
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
                       std::vector<std::pair<double, std::string>> &);
   template void
-  write_vtu_increment(const FeSpace<3> &,
-                      const ElasticModel<3> &,
+  write_vtu_increment(const Fem::FeSpace<3> &,
+                      const Fem::ElasticModel<3> &,
                       const dealii::TrilinosWrappers::MPI::Vector &,
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
                       std::vector<std::pair<double, std::string>> &);
-} // namespace FloorBlock::Fem
+} // namespace FloorBlock::Postprocess

@@ -1,4 +1,4 @@
-#include <contact/joint_report.h>
+#include <postprocess/joint_report.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,10 @@
 #include <tuple>
 #include <utility>
 
-namespace FloorBlock::Contact
+namespace FloorBlock::Postprocess
 {
+  using namespace Contact;
+
   namespace
   {
     /** Rotates the normal by +90 degrees: the 2D joint tangent. */
@@ -428,4 +430,4 @@ namespace FloorBlock::Contact
         largest = std::max(largest, -sample.gap);
     return largest;
   }
-} // namespace FloorBlock::Contact
+} // namespace FloorBlock::Postprocess

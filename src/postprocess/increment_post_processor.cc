@@ -1,31 +1,33 @@
 #include <contact/contact_assembly.h>
-#include <contact/increment_post_processor.h>
-#include <contact/joint_report.h>
-#include <contact/swept_joint_report.h>
 #include <contact/swept_sections.h>
 #include <fem/rigid_motion.h>
-#include <fem/vtu_writer.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <postprocess/increment_post_processor.h>
+#include <postprocess/joint_report.h>
+#include <postprocess/swept_joint_report.h>
+#include <postprocess/vtu_writer.h>
+
 #include <cmath>
 
-namespace FloorBlock::Contact
+namespace FloorBlock::Postprocess
 {
+  using namespace Contact;
+
   template <int dim>
   IncrementPostProcessor<dim>::IncrementPostProcessor(
-    const Fem::FeSpace<dim>             &fe_space,
-    const ContactProblem<dim>           &problem,
-    const std::vector<ContactNode<dim>> &nodes,
-    const dealii::IndexSet              &dirichlet_dofs,
-    const double                         averaging_length)
-    : fe_space(fe_space)
-    , problem(problem)
-    , nodes(nodes)
-    , dirichlet_dofs(dirichlet_dofs)
+    const ContactSolver<dim> &solver,
+    const double              averaging_length,
+    const std::string        &vtu_directory)
+    : fe_space(solver.space())
+    , problem(solver.contact_problem())
+    , nodes(solver.contact_nodes())
+    , dirichlet_dofs(solver.supported_dofs())
     , averaging_length(averaging_length)
+    , vtu_directory(vtu_directory)
     , face_length(face_length_of(fe_space.dof_handler().get_triangulation()))
   {
     for (const auto &joint : problem.joints)
@@ -157,11 +159,17 @@ namespace FloorBlock::Contact
   }
 
   template <int dim>
+  bool
+  IncrementPostProcessor<dim>::records() const
+  {
+    return !vtu_directory.empty();
+  }
+
+  template <int dim>
   void
-  IncrementPostProcessor<dim>::write_vtu(
+  IncrementPostProcessor<dim>::record(
     const std::vector<JointResponse<dim>>       &responses,
-    const dealii::TrilinosWrappers::MPI::Vector &solution,
-    const std::string                           &directory)
+    const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
     std::vector<double> node_states(nodes.size());
     for (unsigned int p = 0; p < nodes.size(); ++p)
@@ -169,15 +177,30 @@ namespace FloorBlock::Contact
     std::vector<dealii::types::global_dof_index> state_dofs;
     for (const auto &node : nodes)
       state_dofs.push_back(node.dofs_a[0]);
-    Fem::write_vtu_increment(fe_space,
-                             problem.model,
-                             solution,
-                             state_dofs,
-                             node_states,
-                             directory,
-                             output_records);
+    write_vtu_increment(fe_space,
+                        problem.model,
+                        solution,
+                        state_dofs,
+                        node_states,
+                        vtu_directory,
+                        output_records);
+  }
+
+  template <int dim>
+  SolveResult
+  solve_with_reports(ContactSolver<dim>          &solver,
+                     const ContactSolverSettings &settings)
+  {
+    IncrementPostProcessor<dim> reports(solver,
+                                        settings.averaging_length,
+                                        settings.output_directory);
+    return solver.run(reports);
   }
 
   template class IncrementPostProcessor<2>;
   template class IncrementPostProcessor<3>;
-} // namespace FloorBlock::Contact
+  template SolveResult
+  solve_with_reports(ContactSolver<2> &, const ContactSolverSettings &);
+  template SolveResult
+  solve_with_reports(ContactSolver<3> &, const ContactSolverSettings &);
+} // namespace FloorBlock::Postprocess

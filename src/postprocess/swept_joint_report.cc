@@ -1,13 +1,16 @@
-#include <contact/joint_report.h>
-#include <contact/swept_joint_report.h>
 #include <contact/swept_sections.h>
+
+#include <postprocess/joint_report.h>
+#include <postprocess/swept_joint_report.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace FloorBlock::Contact
+namespace FloorBlock::Postprocess
 {
+  using namespace Contact;
+
   namespace
   {
     /** Section peaks closer than this (relative) count as equal. */
@@ -179,4 +182,4 @@ namespace FloorBlock::Contact
       }
     return reports;
   }
-} // namespace FloorBlock::Contact
+} // namespace FloorBlock::Postprocess

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace FloorBlock::Fem
+namespace FloorBlock::Postprocess
 {
   /**
    * @brief Writes one increment as `<directory>/solution-NNNN.vtu` and
@@ -32,11 +32,11 @@ namespace FloorBlock::Fem
   template <int dim>
   void
   write_vtu_increment(
-    const FeSpace<dim>                                 &space,
-    const ElasticModel<dim>                            &model,
+    const Fem::FeSpace<dim>                            &space,
+    const Fem::ElasticModel<dim>                       &model,
     const dealii::TrilinosWrappers::MPI::Vector        &solution,
     const std::vector<dealii::types::global_dof_index> &state_dofs,
     const std::vector<double>                          &states,
     const std::string                                  &directory,
     std::vector<std::pair<double, std::string>>        &records);
-} // namespace FloorBlock::Fem
+} // namespace FloorBlock::Postprocess

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock::Contact
+namespace FloorBlock::Postprocess
 {
   /**
    * @brief Contact indicator of one pair: positive when closed, negative
@@ -34,7 +34,7 @@ namespace FloorBlock::Contact
    *   closure stiffness (nothing to scale with).
    */
   double
-  contact_indicator(const JointResponse<2> &response);
+  contact_indicator(const Contact::JointResponse<2> &response);
 
   /**
    * @brief How far beyond its last closed node an exact-law contact zone
@@ -91,11 +91,11 @@ namespace FloorBlock::Contact
    * @param[in] names One name per joint; pairs refer to it by index.
    * @param[in] averaging_length Window length (m).
    */
-  std::vector<JointReport>
-  make_joint_reports(const std::vector<ContactNode<2>>   &nodes,
-                     const std::vector<JointResponse<2>> &responses,
-                     const std::vector<std::string>      &names,
-                     const double                         averaging_length);
+  std::vector<Contact::JointReport>
+  make_joint_reports(const std::vector<Contact::ContactNode<2>>   &nodes,
+                     const std::vector<Contact::JointResponse<2>> &responses,
+                     const std::vector<std::string>               &names,
+                     const double averaging_length);
 
   /**
    * @brief Pointwise peak (and where), and the largest mean of t_n over a
@@ -115,7 +115,8 @@ namespace FloorBlock::Contact
    * @param[in] weights Length each profile node stands for (m).
    */
   void
-  add_peak_stresses(JointReport &report, const std::vector<double> &weights);
+  add_peak_stresses(Contact::JointReport      &report,
+                    const std::vector<double> &weights);
 
   /**
    * @brief Largest overlap of the two sides of any joint (m, >= 0): minus
@@ -125,5 +126,5 @@ namespace FloorBlock::Contact
    * means that k_n is too soft for the loads.
    */
   double
-  largest_overlap(const std::vector<JointReport> &joints);
-} // namespace FloorBlock::Contact
+  largest_overlap(const std::vector<Contact::JointReport> &joints);
+} // namespace FloorBlock::Postprocess

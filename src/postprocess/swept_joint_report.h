@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace FloorBlock::Contact
+namespace FloorBlock::Postprocess
 {
   /**
    * @brief The joint reports of a 3D assembly swept along the face (z,
@@ -43,10 +43,11 @@ namespace FloorBlock::Contact
    * @param[in] face_length Extent of the mesh along z (m), > 0.
    * @return One report per joint, JointReport::face_length = face_length.
    */
-  std::vector<JointReport>
-  make_swept_joint_reports(const std::vector<ContactNode<3>>   &nodes,
-                           const std::vector<JointResponse<3>> &responses,
-                           const std::vector<std::string>      &names,
-                           const double averaging_length,
-                           const double face_length);
-} // namespace FloorBlock::Contact
+  std::vector<Contact::JointReport>
+  make_swept_joint_reports(
+    const std::vector<Contact::ContactNode<3>>   &nodes,
+    const std::vector<Contact::JointResponse<3>> &responses,
+    const std::vector<std::string>               &names,
+    const double                                  averaging_length,
+    const double                                  face_length);
+} // namespace FloorBlock::Postprocess
