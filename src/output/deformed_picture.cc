@@ -95,6 +95,100 @@ namespace FloorBlock::Output
                             x);
       return "set xtics (" + tics + ")\n";
     }
+
+    /**
+     * The cells as closed polygons with their stress (gnuplot data), the
+     * blocks apart from the base, with the drawing's extent and the
+     * blocks' peak stress (MPa).
+     */
+    struct CellPolygons
+    {
+      std::string blocks;
+      std::string base;
+      double      x_min = std::numeric_limits<double>::max();
+      double      x_max = -std::numeric_limits<double>::max();
+      double      y_min = std::numeric_limits<double>::max();
+      double      y_max = -std::numeric_limits<double>::max();
+      double      peak  = 0.;
+    };
+
+    CellPolygons
+    cell_polygons(const dealii::Triangulation<2> &reference,
+                  const PicturePlacement         &place,
+                  const std::vector<double>      &cell_stress)
+    {
+      CellPolygons polygons;
+      // deal.II vertex order is lexicographic; this visits them around the
+      // cell.
+      constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
+      // The base is bent into the bedding's shape by a prescribed uplift;
+      // its bending stresses would set the colour scale and wash out the
+      // blocks', so it is drawn in one colour and the scale is the blocks'
+      // own.
+      for (const auto &cell : reference.active_cell_iterators())
+        {
+          const bool in_base =
+            cell->material_id() == Geometry::Ids::base_material;
+          std::string &text = in_base ? polygons.base : polygons.blocks;
+          const double stress =
+            cell_stress[cell->active_cell_index()] / Units::MPa;
+          if (!in_base)
+            polygons.peak = std::max(polygons.peak, stress);
+          for (const unsigned int v : around)
+            {
+              const dealii::Point<2> point = place(cell->vertex_index(v));
+              polygons.x_min               = std::min(polygons.x_min, point[0]);
+              polygons.x_max               = std::max(polygons.x_max, point[0]);
+              polygons.y_min               = std::min(polygons.y_min, point[1]);
+              polygons.y_max               = std::max(polygons.y_max, point[1]);
+              text += fmt::format("{} {} {}\n", point[0], point[1], stress);
+            }
+          text += "\n";
+        }
+      return polygons;
+    }
+
+    /**
+     * The markers' data blocks (appended to @p data) and their plot
+     * clauses, one per category, at the deformed nodes nearest them.
+     */
+    std::string
+    marker_clauses(const dealii::Triangulation<2>          &reference,
+                   const std::vector<dealii::Tensor<1, 2>> &vertex_motion,
+                   const std::vector<PictureMarker>        &markers,
+                   const double                             factor,
+                   std::string                             &data)
+    {
+      std::map<std::string, std::string> marker_points;
+      const std::vector<bool>           &used = reference.get_used_vertices();
+      for (const PictureMarker &marker : markers)
+        {
+          const unsigned int vertex =
+            dealii::GridTools::find_closest_vertex(reference,
+                                                   marker.position,
+                                                   used);
+          const dealii::Point<2> point = PicturePlacement::mirrored(
+            marker.position + factor * vertex_motion[vertex]);
+          marker_points[marker.category] +=
+            fmt::format("{} {}\n", point[0], point[1]);
+        }
+      std::string  plot;
+      unsigned int marker_index = 0;
+      for (const auto &[category, points] : marker_points)
+        {
+          const std::string name = "$markers" + std::to_string(marker_index);
+          data += name + " << EOD\n" + points + "EOD\n";
+          // Small points: the joint nodes crowd at the corners, where the
+          // stress colours matter most.
+          plot += fmt::format(
+            ", \\\n     {} with points pt 7 ps 0.35 lc rgb '{}' title {}",
+            name,
+            marker_colour(category, marker_index),
+            gnuplot_string(category));
+          ++marker_index;
+        }
+      return plot;
+    }
   } // namespace
 
   std::string
@@ -109,36 +203,12 @@ namespace FloorBlock::Output
     const PicturePlacement place{reference.get_vertices(),
                                  vertex_motion,
                                  factor};
-    constexpr double       huge = std::numeric_limits<double>::max();
-    double x_min = huge, x_max = -huge, y_min = huge, y_max = -huge;
-    double peak = 0.;
-    // deal.II vertex order is lexicographic; this visits them around the
-    // cell.
-    constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
-    namespace Ids                                = Geometry::Ids;
-    // The base is bent into the bedding's shape by a prescribed uplift; its
-    // bending stresses would set the colour scale and wash out the blocks',
-    // so it is drawn in one colour and the scale is the blocks' own.
-    std::string cells, base;
-    for (const auto &cell : reference.active_cell_iterators())
-      {
-        const bool   in_base = cell->material_id() == Ids::base_material;
-        std::string &text    = in_base ? base : cells;
-        const double stress =
-          cell_stress[cell->active_cell_index()] / Units::MPa;
-        if (!in_base)
-          peak = std::max(peak, stress);
-        for (const unsigned int v : around)
-          {
-            const dealii::Point<2> point = place(cell->vertex_index(v));
-            x_min                        = std::min(x_min, point[0]);
-            x_max                        = std::max(x_max, point[0]);
-            y_min                        = std::min(y_min, point[1]);
-            y_max                        = std::max(y_max, point[1]);
-            text += fmt::format("{} {} {}\n", point[0], point[1], stress);
-          }
-        text += "\n";
-      }
+    namespace Ids               = Geometry::Ids;
+    const CellPolygons polygons = cell_polygons(reference, place, cell_stress);
+    const double       x_min = polygons.x_min, x_max = polygons.x_max;
+    const double       y_min = polygons.y_min, y_max = polygons.y_max;
+    const double       peak  = polygons.peak;
+    const std::string &cells = polygons.blocks, &base = polygons.base;
 
     std::string data = "$cells << EOD\n" + cells + "EOD\n$base << EOD\n" +
                        (base.empty() ? std::string("NaN NaN NaN\n") : base) +
@@ -160,33 +230,7 @@ namespace FloorBlock::Output
       "\\\n     $joints with lines lc rgb '#202020' lw 1.5 notitle, "
       "\\\n     $floor with lines lc rgb '#1030d0' lw 2.5 notitle";
 
-    std::map<std::string, std::string> marker_points;
-    const std::vector<bool>           &used = reference.get_used_vertices();
-    for (const PictureMarker &marker : markers)
-      {
-        const unsigned int vertex =
-          dealii::GridTools::find_closest_vertex(reference,
-                                                 marker.position,
-                                                 used);
-        const dealii::Point<2> point = PicturePlacement::mirrored(
-          marker.position + factor * vertex_motion[vertex]);
-        marker_points[marker.category] +=
-          fmt::format("{} {}\n", point[0], point[1]);
-      }
-    unsigned int marker_index = 0;
-    for (const auto &[category, points] : marker_points)
-      {
-        const std::string name = "$markers" + std::to_string(marker_index);
-        data += name + " << EOD\n" + points + "EOD\n";
-        // Small points: the joint nodes crowd at the corners, where the
-        // stress colours matter most.
-        plot += fmt::format(
-          ", \\\n     {} with points pt 7 ps 0.35 lc rgb '{}' title {}",
-          name,
-          marker_colour(category, marker_index),
-          gnuplot_string(category));
-        ++marker_index;
-      }
+    plot += marker_clauses(reference, vertex_motion, markers, factor, data);
 
     constexpr double relative_margin = 0.03; // white border around the mesh
     const double     margin =
