@@ -2,11 +2,15 @@
 #include <compare/joint_name.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace FloorBlock::Compare
 {
   namespace
   {
+    /** Relative difference below which two joints carry the same value. */
+    constexpr double same_value_tolerance = 1e-9;
+
     struct Figure
     {
       const char *key;
@@ -53,13 +57,18 @@ namespace FloorBlock::Compare
                    [&face](const auto &joint) { return joint.name == face; });
     for (const Figure &figure : figures)
       {
-        // The face joint unless another joint carries strictly more.
+        // The face joint unless another joint carries more by more than
+        // round-off: unloaded blocks pass the face joint's Q on unchanged,
+        // to 1e-12 of it.
         const Contact::JointReport *largest =
           face_report != increment.joints.end() ? &*face_report : nullptr;
         for (const Contact::JointReport &joint : increment.joints)
           if ((!figure.vertical_only ||
                parse_joint_name(joint.name).kind == "vertical") &&
-              (!largest || joint.*figure.value > largest->*figure.value))
+              (!largest ||
+               joint.*figure.value >
+                 largest->*figure.value +
+                   same_value_tolerance * std::abs(largest->*figure.value)))
             largest = &joint;
         if (!largest)
           continue;

@@ -32,7 +32,7 @@ namespace FloorBlock::Compare
     std::string face_joint;
     double      face_value = 0.;
 
-    /** The governing joint is the face joint (it is on ties). */
+    /** The governing joint is the face joint (it is on ties, to 1e-9). */
     bool
     is_face_joint() const;
   };
