@@ -17,6 +17,15 @@ namespace FloorBlock::Analytic
         throw InputError(name, std::to_string(value), "> 0 " + units);
     }
 
+    /// A chain of @p n_blocks blocks of width @p block_width.
+    void
+    require_chain(const std::size_t n_blocks, const double block_width)
+    {
+      if (n_blocks == 0)
+        throw InputError("Number of blocks", "0", ">= 1");
+      require_positive(block_width, "Block width", "m");
+    }
+
     /// Finite inputs can still overflow; say so instead of returning inf.
     double
     finite_or_throw(const double value, const std::string &name)
@@ -34,9 +43,7 @@ namespace FloorBlock::Analytic
                          const double      block_width,
                          const double      curvature_length)
   {
-    if (n_blocks == 0)
-      throw InputError("Number of blocks", "0", ">= 1");
-    require_positive(block_width, "Block width", "m");
+    require_chain(n_blocks, block_width);
     require_positive(curvature_length, "Floor curvature length k", "m");
     std::vector<double> inclinations;
     for (std::size_t block = 0; block < n_blocks; ++block)
@@ -55,9 +62,7 @@ namespace FloorBlock::Analytic
                          const double      block_width,
                          const double      curvature_length)
   {
-    if (n_blocks == 0)
-      throw InputError("Number of blocks", "0", ">= 1");
-    require_positive(block_width, "Block width", "m");
+    require_chain(n_blocks, block_width);
     require_positive(curvature_length, "Floor curvature length k", "m");
     const double chain_length = static_cast<double>(n_blocks) * block_width;
     return finite_or_throw(chain_length * chain_length / curvature_length,
@@ -69,9 +74,7 @@ namespace FloorBlock::Analytic
                       const double      block_width,
                       const double      inclination)
   {
-    if (n_blocks == 0)
-      throw InputError("Number of blocks", "0", ">= 1");
-    require_positive(block_width, "Block width", "m");
+    require_chain(n_blocks, block_width);
     if (!(std::abs(inclination) < M_PI_2))
       throw InputError("Bedding inclination",
                        std::to_string(inclination),

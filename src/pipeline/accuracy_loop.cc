@@ -106,15 +106,17 @@ namespace FloorBlock::Pipeline
           }
       // The budget is shared: once one loop ran out of it, so did the
       // other.
-      for (TargetLoop *const out_of_time :
-           {&degree_1, degree_2 ? &*degree_2 : nullptr})
-        if (out_of_time && out_of_time->racer_state().out_of_time)
-          for (TargetLoop *const other :
-               {&degree_1, degree_2 ? &*degree_2 : nullptr})
-            if (other)
-              other->abandon(fmt::format("in FE degree {}'s loop, {}",
-                                         out_of_time->record().fe_degree,
-                                         out_of_time->record().stop_reason));
+      TargetLoop *const out_of_time =
+        degree_1.racer_state().out_of_time              ? &degree_1 :
+        degree_2 && degree_2->racer_state().out_of_time ? &*degree_2 :
+                                                          nullptr;
+      TargetLoop *const other = out_of_time == &degree_1 ?
+                                  (degree_2 ? &*degree_2 : nullptr) :
+                                  &degree_1;
+      if (out_of_time && other)
+        other->abandon(fmt::format("in FE degree {}'s loop, {}",
+                                   out_of_time->record().fe_degree,
+                                   out_of_time->record().stop_reason));
       const RacerState   state_1 = degree_1.racer_state();
       const RacerState   state_2 = degree_2_state();
       const unsigned int winner  = race_winner(state_1, state_2);
