@@ -1,8 +1,9 @@
 #pragma once
 
 #include <common/input_error.h>
-#include <convergence/size_targets.h>
 #include <parameters/scenario_parameters.h>
+
+#include <refinement/size_targets.h>
 
 #include <cstddef>
 #include <limits>
@@ -35,8 +36,8 @@ namespace FloorBlock::App
     double bulk_fraction =
       0.1; ///< converge: cells refined by the Kelly indicator
     double coarsen_fraction =
-      Convergence::default_coarsen_fraction; ///< converge adaptive: cells
-                                             ///< flagged for coarsening
+      Refinement::default_coarsen_fraction; ///< converge adaptive: cells
+                                            ///< flagged for coarsening
     double jump_fraction = 0.25; ///< converge: joint traction-jump threshold
     double target_error =
       0.01; ///< converge: relative error of the equal-error comparison

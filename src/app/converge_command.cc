@@ -1,15 +1,15 @@
 #include <app/command_options.h>
-#include <convergence/equal_error.h>
 #include <output/convergence_report.h>
 #include <output/gnuplot.h>
 #include <output/result_folder.h>
-#include <pipeline/convergence_ladder.h>
-#include <pipeline/convergence_study.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/timer.h>
 
 #include <fmt/format.h>
+#include <refinement/equal_error.h>
+#include <studies/convergence_ladder.h>
+#include <studies/convergence_study.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,8 +22,8 @@ namespace FloorBlock::App
 {
   namespace
   {
-    using Convergence::Ladder;
-    using Convergence::Quantity;
+    using Refinement::Ladder;
+    using Refinement::Quantity;
 
     constexpr unsigned int max_levels = 10;
     /** Levels without --levels: at most this many, within
@@ -107,116 +107,36 @@ namespace FloorBlock::App
         .string();
     }
 
-    /// Partial results after every level; the final JSON adds the comparison.
+    Studies::StudySettings
+    study_settings(const CommandOptions &options)
+    {
+      Studies::StudySettings settings;
+      settings.fe_degrees                        = options.fe_degrees;
+      settings.refinement_mode                   = options.refinement_mode;
+      settings.n_levels                          = n_levels(options);
+      settings.budget_seconds                    = budget_seconds(options);
+      settings.max_dofs                          = options.max_dofs;
+      settings.refinement.bulk_fraction          = options.bulk_fraction;
+      settings.refinement.traction_jump_fraction = options.jump_fraction;
+      settings.coarsen_fraction                  = options.coarsen_fraction;
+      settings.target_error                      = options.target_error;
+      return settings;
+    }
+
+    /** The verdicts on the adaptive target and on the FE degrees. */
     void
-    write_tables(const Output::ResultFolder  &folder,
-                 const std::vector<Ladder>   &ladders,
-                 const std::vector<Quantity> &quantities)
+    print_verdicts(const Studies::ConvergenceStudy &study,
+                   const double                     target_error)
     {
-      folder.write("convergence.csv",
-                   Output::convergence_csv(ladders, quantities));
-      folder.write_json("convergence.json",
-                        Output::convergence_json(ladders, quantities, {}));
-    }
-
-
-    /** Runs each ladder, writing the tables after every level. */
-    bool
-    run_ladders(const CommandOptions                 &options,
-                const Parameters::ScenarioParameters &scene,
-                const std::vector<Quantity>          &quantities,
-                const Output::ResultFolder           &folder,
-                const dealii::Timer                  &command_timer,
-                std::vector<Ladder>                  &ladders)
-    {
-      Convergence::RefinementSettings refinement;
-      refinement.bulk_fraction                      = options.bulk_fraction;
-      refinement.traction_jump_fraction             = options.jump_fraction;
-      bool                            all_converged = true;
-      const std::vector<unsigned int> degrees =
-        options.fe_degrees.empty() ?
-          std::vector<unsigned int>{scene.solver.fe_degree} :
-          options.fe_degrees;
-      for (const unsigned int degree : degrees)
-        {
-          Parameters::ScenarioParameters degree_scene = scene;
-          degree_scene.solver.fe_degree               = degree;
-          for (const Pipeline::RefinementMode mode :
-               Pipeline::refinement_modes(options.refinement_mode))
-            {
-              ladders.push_back(
-                {Pipeline::ladder_name(mode, degree), {}, {}, {}});
-              // One budget for the whole command: each ladder gets what the
-              // ladders before it left.
-              Convergence::LadderBudget budget;
-              budget.seconds =
-                budget_seconds(options) - command_timer.wall_time();
-              budget.max_dofs = options.max_dofs;
-              const auto run  = Pipeline::run_ladder(
-                degree_scene,
-                mode,
-                n_levels(options),
-                refinement,
-                options.coarsen_fraction,
-                folder,
-                [&](const std::vector<Convergence::LevelRecord> &so_far) {
-                  ladders.back().levels = so_far;
-                  Convergence::estimate_ladder_errors(ladders.back(),
-                                                      quantities);
-                  write_tables(folder, ladders, quantities);
-                },
-                budget);
-              ladders.back().stopped_because = run.stopped_because;
-              for (const auto &record : run.levels)
-                all_converged = all_converged && record.converged();
-              std::cout << Output::ladder_text(ladders.back(), quantities);
-            }
-        }
-      return all_converged;
-    }
-
-    /** convergence.json with the verdicts, and the error-time plot. */
-    Output::TargetVerdict
-    write_study(const CommandOptions                 &options,
-                const Parameters::ScenarioParameters &scene,
-                const std::vector<Ladder>            &ladders,
-                const std::vector<Quantity>          &quantities,
-                const Output::ResultFolder           &folder)
-    {
-      const auto comparisons =
-        Pipeline::equal_error_comparisons(ladders,
-                                          quantities,
-                                          options.target_error);
-      const Output::TargetVerdict verdict =
-        Pipeline::target_verdict(comparisons, "adaptive");
-      folder.write_json("convergence.json",
-                        Output::convergence_study_json(
-                          ladders,
-                          quantities,
-                          comparisons,
-                          verdict,
-                          options.refinement_mode == "all" ?
-                            std::optional(
-                              Pipeline::target_verdict(comparisons, "remesh")) :
-                            std::nullopt));
-      Output::render_png(
-        Output::error_vs_time_plot(ladders,
-                                   quantities,
-                                   scene.scene_name +
-                                     ": error estimate against wall time"),
-        folder.path_of("error_vs_wall_time.png"),
-        1300,
-        700);
-      std::cout << "adaptive target (<= " << Pipeline::target_dofs_ratio
-                << " of the DoFs and less time at "
-                << options.target_error * 100
-                << " % error): " << verdict.status() << ". " << verdict.text
-                << std::endl;
-      const std::string degrees = Pipeline::degree_comparison_text(comparisons);
+      std::cout << "adaptive target (<= " << Studies::target_dofs_ratio
+                << " of the DoFs and less time at " << target_error * 100
+                << " % error): " << study.adaptive_target.status() << ". "
+                << study.adaptive_target.text << std::endl;
+      const std::string degrees =
+        Studies::degree_comparison_text(study.comparisons);
       if (!degrees.empty())
-        std::cout << "FE degrees at " << options.target_error * 100
+        std::cout << "FE degrees at " << target_error * 100
                   << " % error: " << degrees << std::endl;
-      return verdict;
     }
   } // namespace
 
@@ -238,21 +158,25 @@ namespace FloorBlock::App
     folder.mark_unfinished();
     folder.write_inputs(scene);
 
-    const auto quantities =
-      Convergence::quantities_of_interest(scene.geometry.n_blocks);
-    std::vector<Ladder> ladders;
-    const bool          all_converged =
-      run_ladders(options, scene, quantities, folder, timer, ladders);
-    const Output::TargetVerdict verdict =
-      write_study(options, scene, ladders, quantities, folder);
+    const Studies::ConvergenceStudy study = Studies::run_convergence_study(
+      scene,
+      study_settings(options),
+      folder,
+      [](const Refinement::Ladder                &ladder,
+         const std::vector<Refinement::Quantity> &quantities) {
+        std::cout << Output::ladder_text(ladder, quantities);
+      });
+    print_verdicts(study, options.target_error);
 
     // Written last: its presence marks a finished study.
-    folder.write_summary(Output::convergence_summary_json(
-      scene.scene_name, all_converged, verdict, timer.wall_time()));
+    folder.write_summary(Output::convergence_summary_json(scene.scene_name,
+                                                          study.all_converged,
+                                                          study.adaptive_target,
+                                                          timer.wall_time()));
     std::cout << "wrote " << folder.path_of("convergence.csv") << ", "
               << folder.path_of("convergence.json") << ", "
               << folder.path_of("error_vs_wall_time.png") << " in "
               << fmt::format("{:.1f}", timer.wall_time()) << " s" << std::endl;
-    return all_converged ? exit_code::success : exit_code::failure;
+    return study.all_converged ? exit_code::success : exit_code::failure;
   }
 } // namespace FloorBlock::App

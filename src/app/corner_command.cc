@@ -1,13 +1,13 @@
 #include <app/command_options.h>
 #include <common/input_error.h>
-#include <corner/corner_report.h>
-#include <corner/rounding_study.h>
 #include <geometry/body_outline.h>
 #include <scene/assembly_inputs.h>
 
 #include <deal.II/base/timer.h>
 
 #include <fmt/format.h>
+#include <studies/corner_report.h>
+#include <studies/rounding_study.h>
 
 #include <iostream>
 
@@ -65,24 +65,21 @@ namespace FloorBlock::App
       std::cout << line << std::endl;
     };
 
-    const Corner::CornerAnalysis analysis =
-      Corner::analyse_corner(scene,
-                             Output::ResultFolder(folder.path_of("zoom")),
-                             seconds_left,
-                             progress);
-    const Corner::RoundingStudy rounding =
-      Corner::rounding_study(scene,
-                             analysis,
-                             Output::ResultFolder(folder.path_of("rounding")),
-                             seconds_left,
-                             progress);
+    const Studies::CornerAnalysis analysis =
+      Studies::analyse_corner(scene,
+                              Output::ResultFolder(folder.path_of("zoom")),
+                              seconds_left,
+                              progress);
+    const Studies::RoundingStudy rounding =
+      Studies::rounding_study(scene,
+                              analysis,
+                              Output::ResultFolder(folder.path_of("rounding")),
+                              seconds_left,
+                              progress);
 
-    Corner::write_corner_report(
+    Studies::write_corner_report(
       folder, scene, analysis, rounding, clock.wall_time());
-    folder.write_summary({{"command", "corner"},
-                          {"converged", analysis.converged},
-                          {"wall_time_s", clock.wall_time()}});
-    std::cout << Corner::corner_summary_lines(analysis, rounding) << "wrote "
+    std::cout << Studies::corner_summary_lines(analysis, rounding) << "wrote "
               << folder.path_of("corner.json") << std::endl;
     return analysis.levels.empty() ? exit_code::failure : exit_code::success;
   }

@@ -7,7 +7,7 @@
 #include <output/mesh_picture.h>
 #include <output/result_folder.h>
 #include <scene/assembly_inputs.h>
-#include <scene/contact_zone_sizing.h>
+#include <scene/mesh_sizing.h>
 #include <scene/support_footprint.h>
 
 #include <deal.II/base/timer.h>

@@ -9,7 +9,6 @@
 #include <output/report_markdown.h>
 #include <output/result_folder.h>
 #include <output/run_summary.h>
-#include <pipeline/accuracy_loop.h>
 #include <pipeline/closed_form_comparison.h>
 #include <pipeline/fem_pipeline.h>
 #include <scene/closed_forms.h>
@@ -17,6 +16,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fmt/format.h>
+#include <studies/accuracy_loop.h>
 
 #include <iostream>
 #include <optional>
@@ -140,8 +140,8 @@ namespace FloorBlock::App
 
     const auto closed_forms = Scene::evaluate_closed_forms(scene);
     write_closed_forms(folder, closed_forms);
-    const Pipeline::TargetedSolve solve =
-      Pipeline::solve_to_target(scene, folder);
+    const Studies::TargetedSolve solve =
+      Studies::solve_to_target(scene, folder);
     const Pipeline::FemOutcome &outcome  = solve.outcome;
     const auto                 &estimate = solve.estimate;
     print_target(estimate);

@@ -434,11 +434,10 @@ namespace FloorBlock::Geometry
           const BodyCorners               &own   = corners[index];
           const dealii::types::boundary_id id    = Ids::bedding_base_side(
             frame.bottom_id - Ids::bedding_block_side(0));
-          const std::array<double, 4> stations = {
-            frame.x_right,
-            own.bottom_right.curve_point.x,
-            own.bottom_left.curve_point.x,
-            frame.x_left};
+          const std::array<double, 4> stations{{frame.x_right,
+                                                own.bottom_right.curve_point.x,
+                                                own.bottom_left.curve_point.x,
+                                                frame.x_left}};
           for (unsigned int piece = 0; piece + 1 < stations.size(); ++piece)
             if (stations[piece] != stations[piece + 1])
               base.segments.push_back(curve_piece(

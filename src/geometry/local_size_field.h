@@ -15,7 +15,7 @@ namespace FloorBlock::Geometry
    * add_local_size_field() (a size field is global and the joint sides stay
    * periodic copies of each other, so both sides of every joint get the
    * same new nodes); `--mode adaptive` flags the deal.II cells the requests
-   * touch (Convergence::refine_matched, which keeps the joint sides
+   * touch (Refinement::refine_matched, which keeps the joint sides
    * matched itself).
    */
   struct LocalSize

@@ -10,10 +10,10 @@
 
 namespace FloorBlock::Output
 {
-  using Convergence::Ladder;
-  using Convergence::LevelRecord;
-  using Convergence::Quantity;
   using nlohmann::json;
+  using Refinement::Ladder;
+  using Refinement::LevelRecord;
+  using Refinement::Quantity;
 
   namespace
   {
@@ -185,7 +185,7 @@ namespace FloorBlock::Output
                          std::nullopt);
               csv += "," + number(errors.errors.at(level));
               csv += "," + number(errors.relative_errors.at(level));
-              csv += "," + Convergence::method_name(errors.method);
+              csv += "," + Refinement::method_name(errors.method);
             }
           csv += "," + csv_field(record.status_text) + "\n";
         }
@@ -194,9 +194,9 @@ namespace FloorBlock::Output
 
   json
   convergence_json(
-    const std::vector<Ladder>                            &ladders,
-    const std::vector<Quantity>                          &quantities,
-    const std::vector<Convergence::EqualErrorComparison> &comparisons)
+    const std::vector<Ladder>                           &ladders,
+    const std::vector<Quantity>                         &quantities,
+    const std::vector<Refinement::EqualErrorComparison> &comparisons)
   {
     json modes = json::object();
     for (const Ladder &ladder : ladders)
@@ -210,7 +210,7 @@ namespace FloorBlock::Output
             const auto &errors            = ladder.errors.at(q);
             estimates[quantities[q].name] = {
               {"unit", quantities[q].unit},
-              {"method", Convergence::method_name(errors.method)},
+              {"method", Refinement::method_name(errors.method)},
               {"reason", errors.reason},
               {"observed_orders", optional_list(errors.observed_orders)},
               {"reference_value", optional_json(errors.reference)},
@@ -279,7 +279,7 @@ namespace FloorBlock::Output
               const auto &relative =
                 ladder.errors.at(q).relative_errors.at(level);
               // Round-off differences are no discretisation error.
-              if (relative && *relative > Convergence::round_off_level &&
+              if (relative && *relative > Refinement::round_off_level &&
                   ladder.levels[level].cost_wall_time > 0.)
                 rows += fmt::format("{:.6e} {:.6e}\n",
                                     ladder.levels[level].cost_wall_time,
@@ -326,11 +326,11 @@ namespace FloorBlock::Output
 
   json
   convergence_study_json(
-    const std::vector<Convergence::Ladder>               &ladders,
-    const std::vector<Convergence::Quantity>             &quantities,
-    const std::vector<Convergence::EqualErrorComparison> &comparisons,
-    const TargetVerdict                                  &adaptive_target,
-    const std::optional<TargetVerdict>                   &remesh_target)
+    const std::vector<Refinement::Ladder>               &ladders,
+    const std::vector<Refinement::Quantity>             &quantities,
+    const std::vector<Refinement::EqualErrorComparison> &comparisons,
+    const TargetVerdict                                 &adaptive_target,
+    const std::optional<TargetVerdict>                  &remesh_target)
   {
     json report = convergence_json(ladders, quantities, comparisons);
     report["adaptive_target"] = target_verdict_json(adaptive_target);
@@ -353,8 +353,8 @@ namespace FloorBlock::Output
   }
 
   std::string
-  ladder_text(const Convergence::Ladder                &ladder,
-              const std::vector<Convergence::Quantity> &quantities)
+  ladder_text(const Refinement::Ladder                &ladder,
+              const std::vector<Refinement::Quantity> &quantities)
   {
     std::string text = fmt::format("{} refinement:\n", ladder.mode);
     if (!ladder.stopped_because.empty())
@@ -364,13 +364,13 @@ namespace FloorBlock::Output
         const auto &errors = ladder.errors[q];
         // The order used by the extrapolation; all orders are in the JSON.
         std::string order = "-";
-        if (errors.method == Convergence::ErrorMethod::richardson)
+        if (errors.method == Refinement::ErrorMethod::richardson)
           for (const auto &observed : errors.observed_orders)
             if (observed)
               order = fmt::format("{:.2f}", *observed);
         text += fmt::format("  {:<26} {:<18} order {:>6}  ref {:>13}  ({})\n",
                             quantities[q].name,
-                            Convergence::method_name(errors.method),
+                            Refinement::method_name(errors.method),
                             order,
                             errors.reference ?
                               fmt::format("{:.6e}", *errors.reference) :

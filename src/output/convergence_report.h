@@ -1,8 +1,7 @@
 #pragma once
 
-#include <convergence/equal_error.h>
-
 #include <nlohmann/json.hpp>
+#include <refinement/equal_error.h>
 
 #include <optional>
 #include <string>
@@ -20,8 +19,8 @@ namespace FloorBlock::Output
    * estimate) are empty; status and status_text say why.
    */
   std::string
-  convergence_csv(const std::vector<Convergence::Ladder>   &ladders,
-                  const std::vector<Convergence::Quantity> &quantities);
+  convergence_csv(const std::vector<Refinement::Ladder>   &ladders,
+                  const std::vector<Refinement::Quantity> &quantities);
 
   /**
    * @brief convergence.json: per mode the levels and, per quantity, the
@@ -30,9 +29,9 @@ namespace FloorBlock::Output
    */
   nlohmann::json
   convergence_json(
-    const std::vector<Convergence::Ladder>               &ladders,
-    const std::vector<Convergence::Quantity>             &quantities,
-    const std::vector<Convergence::EqualErrorComparison> &comparisons);
+    const std::vector<Refinement::Ladder>               &ladders,
+    const std::vector<Refinement::Quantity>             &quantities,
+    const std::vector<Refinement::EqualErrorComparison> &comparisons);
 
   /** Whether a refinement mode meets the target against uniform. */
   struct TargetVerdict
@@ -65,11 +64,11 @@ namespace FloorBlock::Output
    */
   nlohmann::json
   convergence_study_json(
-    const std::vector<Convergence::Ladder>               &ladders,
-    const std::vector<Convergence::Quantity>             &quantities,
-    const std::vector<Convergence::EqualErrorComparison> &comparisons,
-    const TargetVerdict                                  &adaptive_target,
-    const std::optional<TargetVerdict>                   &remesh_target);
+    const std::vector<Refinement::Ladder>               &ladders,
+    const std::vector<Refinement::Quantity>             &quantities,
+    const std::vector<Refinement::EqualErrorComparison> &comparisons,
+    const TargetVerdict                                 &adaptive_target,
+    const std::optional<TargetVerdict>                  &remesh_target);
 
   /** @brief converge's summary.json, written last. */
   nlohmann::json
@@ -83,17 +82,17 @@ namespace FloorBlock::Output
    * the order used by the extrapolation, the reference value and why.
    */
   std::string
-  ladder_text(const Convergence::Ladder                &ladder,
-              const std::vector<Convergence::Quantity> &quantities);
+  ladder_text(const Refinement::Ladder                &ladder,
+              const std::vector<Refinement::Quantity> &quantities);
 
   /**
    * @brief gnuplot script: relative error estimate against the cost wall
    * time, log-log, one curve per quantity and mode (uniform solid, adaptive
    * dashed). Levels without an estimate, or with one at round-off level
-   * (Convergence::round_off_level), are left out.
+   * (Refinement::round_off_level), are left out.
    */
   std::string
-  error_vs_time_plot(const std::vector<Convergence::Ladder>   &ladders,
-                     const std::vector<Convergence::Quantity> &quantities,
-                     const std::string                        &title);
+  error_vs_time_plot(const std::vector<Refinement::Ladder>   &ladders,
+                     const std::vector<Refinement::Quantity> &quantities,
+                     const std::string                       &title);
 } // namespace FloorBlock::Output

@@ -19,7 +19,7 @@ namespace FloorBlock::Output
     double value         = 0.; ///< the reported solve's figure (SI unit)
     double refined_value = 0.; ///< the refined solve's figure
     /**
-     * Estimated error of value: Pipeline::error_per_difference() times
+     * Estimated error of value: Studies::error_per_difference() times
      * |coarse_value - refined_value|, plus for a contact length the
      * reported solve's ends' location uncertainty.
      */
@@ -29,14 +29,14 @@ namespace FloorBlock::Output
     double                coarse_value = 0.; ///< the coarse solve's figure
     /**
      * The check moved the figure opposite to the previous level's change
-     * (Pipeline::widen_where_oscillating()): absolute_error is then at
+     * (Studies::widen_where_oscillating()): absolute_error is then at
      * least the range of the three values.
      */
     bool oscillating = false;
     /**
      * The figure on the adaptive level after the reported one, when the
      * loop solved it to confirm the estimate
-     * (Pipeline::widen_to_contain()); absolute_error is at least the
+     * (Studies::widen_to_contain()); absolute_error is at least the
      * distance to it.
      */
     std::optional<double> next_level_value;
@@ -62,7 +62,7 @@ namespace FloorBlock::Output
   const char *
   reported_solve_name(ReportedSolve solve);
 
-  /** One mesh of `run`'s accuracy loop (Pipeline::solve_to_target()). */
+  /** One mesh of `run`'s accuracy loop (Studies::solve_to_target()). */
   struct RefinementLevelRecord
   {
     unsigned int level     = 0;
@@ -74,7 +74,7 @@ namespace FloorBlock::Output
     std::map<std::string, double> face_figures;
     /**
      * Largest relative difference-based indicator of the target figures:
-     * Pipeline::error_from_refined_difference times the change from the
+     * Studies::error_from_refined_difference times the change from the
      * previous level; none on level 0. It only decides whether the level
      * is checked.
      */
@@ -107,14 +107,14 @@ namespace FloorBlock::Output
     unsigned int  fe_degree = 1; ///< FE degree of the loop's solves
     /**
      * The adaptive level solved after a checked pair met the target, to
-     * confirm it (Pipeline::widen_to_contain()); none if no pair met.
+     * confirm it (Studies::widen_to_contain()); none if no pair met.
      */
     std::optional<unsigned int> confirming_level;
     /** How the FE degree was chosen (Solver/FE degree), in words. */
     std::string fe_degree_choice;
     /**
      * The other FE degree's loop when Solver/FE degree = auto raced both
-     * (Pipeline::next_race_turn()): its levels and why it stopped.
+     * (Studies::next_race_turn()): its levels and why it stopped.
      */
     std::vector<AccuracyTarget>        other_degrees;
     double                             wall_time = 0.; ///< s, all levels

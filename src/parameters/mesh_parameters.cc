@@ -49,7 +49,7 @@ namespace FloorBlock::Parameters
         "otherwise (the rigid law, very stiff joints) enough halvings to "
         "bring Corner size down to the rounding radius, because then the "
         "corner fillet alone limits the contact concentration "
-        "(src/scene/mesh_refinement.h). Units: none.");
+        "(src/scene/mesh_sizing.h). Units: none.");
       prm.declare_entry(
         "Cells per contact length",
         "8",
@@ -81,7 +81,7 @@ namespace FloorBlock::Parameters
         "fraction of the figure, or the levels or the time budget run out "
         "(then it says so, with the estimate reached). The figures are "
         "reported from the coarser of the last two levels, with that "
-        "estimate (src/pipeline/accuracy_loop.h). Units: none (0.01 = 1 %).");
+        "estimate (src/studies/accuracy_loop.h). Units: none (0.01 = 1 %).");
       prm.declare_entry(
         "Target figures",
         "normal force, contact length",
@@ -99,7 +99,7 @@ namespace FloorBlock::Parameters
         "Largest number of adaptive levels `run` solves after the first "
         "mesh (1: one refined solve, only for the estimate), not counting "
         "the level that confirms a checked pair which met the target "
-        "(src/pipeline/target_loop.h). Units: none.");
+        "(src/studies/target_loop.h). Units: none.");
       prm.declare_entry(
         "Refinement time budget",
         "1800",

@@ -23,7 +23,7 @@ namespace FloorBlock::Parameters
         "target (then no degree-2 solve on the same mesh could be faster), "
         "degree 2's loop joins, and the two loops take turns, the one with "
         "less time spent solving next, until one meets the target "
-        "(src/pipeline/degree_race.h). Both loops share Mesh/Refinement "
+        "(src/studies/degree_race.h). Both loops share Mesh/Refinement "
         "time budget. "
         "Degree 2's solves are under <output>/fe_degree_2/. Every other "
         "command solves with degree 1 when auto (verify hertz: degree 1 at "
@@ -143,7 +143,7 @@ namespace FloorBlock::Parameters
                         "How `run` estimates the discretisation error of each "
                         "FEM figure: refined solve = the difference to a solve "
                         "on the next adaptive level of the same mesh "
-                        "(src/pipeline/adaptive_levels.h), repeated until "
+                        "(src/studies/adaptive_levels.h), repeated until "
                         "Mesh/Target relative error is met (the rigid-block "
                         "model: one solve with twice the points per joint); "
                         "none = one solve, no estimate. Units: none.");

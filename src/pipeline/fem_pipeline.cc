@@ -15,9 +15,8 @@
 #include <pipeline/rigid_pipeline.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
-#include <scene/contact_zone_sizing.h>
 #include <scene/floor_contact_problem.h>
-#include <scene/mesh_refinement.h>
+#include <scene/mesh_sizing.h>
 #include <scene/rigid_inputs.h>
 #include <scene/support_footprint.h>
 #include <scene/swept_contact_problem.h>

@@ -1,6 +1,5 @@
 #include <analytic/asymptotic_fit.h>
 #include <contact/contact_solver.h>
-#include <convergence/matched_refinement.h>
 #include <material/elastic_law.h>
 #include <verification/block_assembly_mesh.h>
 #include <verification/punch_verification.h>
@@ -9,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <postprocess/increment_post_processor.h>
+#include <refinement/matched_refinement.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,7 @@ namespace FloorBlock::Verification
      * Square cells of 0.25 m on both bodies, aligned at the interface, then
      * corner_refinements halvings of the cells within two cell diameters of
      * the corner, both sides of the interface kept matched
-     * (Convergence::prepare_matched_refinement()).
+     * (Refinement::prepare_matched_refinement()).
      */
     void
     make_punch_mesh(const unsigned int        corner_refinements,
@@ -77,7 +77,7 @@ namespace FloorBlock::Verification
           for (const auto &cell : mesh.active_cell_iterators())
             if (cell->center().distance(corner) < 2. * cell->diameter())
               cell->set_refine_flag();
-          Convergence::prepare_matched_refinement(
+          Refinement::prepare_matched_refinement(
             mesh, {{base_contact, block_bottom}});
           mesh.execute_coarsening_and_refinement();
         }

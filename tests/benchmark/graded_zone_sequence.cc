@@ -1,7 +1,8 @@
 // Which refinement converges the face joint's contact length under the
-// exact (rigid) joint law (results/FINDINGS.md, section 7). A measurement program, not a test: CTest never runs it.
+// exact (rigid) joint law (results/FINDINGS.md, section 7). A measurement
+// program, not a test: CTest never runs it.
 //
-// From the scene's level-0 mesh (Pipeline::AdaptiveLevels, as `run`), each
+// From the scene's level-0 mesh (Studies::AdaptiveLevels, as `run`), each
 // step refines toward size requests that are halved from step to step
 // (AdaptiveLevels::solve_refined_toward, no coarsening, joints matched):
 //  - the face joint's peak (the loaded corner's fillet) asks for h_c;
@@ -22,7 +23,7 @@
 //       "Section/Name=value"]...
 // --check solves the last step once more with every cell halved and prints
 // `run`'s two-grid estimate of the last step from it
-// (Pipeline::refined_solve_error: 6 times the difference plus the ends'
+// (Studies::refined_solve_error: 6 times the difference plus the ends'
 // location uncertainty), i.e. what `run` would report for that step.
 // --halvings N solves the last step with every cell halved 1..N times (the
 // first is --check's solve when both are given): a nested uniform ladder
@@ -35,12 +36,12 @@
 
 #include <compare/joint_name.h>
 #include <parameters/scenario_parameters.h>
-#include <pipeline/adaptive_levels.h>
-#include <pipeline/error_estimate.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <studies/adaptive_levels.h>
+#include <studies/error_estimate.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -215,9 +216,9 @@ main(int argc, char **argv)
     std::filesystem::temp_directory_path() /
     ("floorblock_graded_zone_sequence_" + std::to_string(::getpid()));
 
-  Pipeline::AdaptiveLevels levels(scene,
-                                  Pipeline::bounded_refinement({}, scene),
-                                  0.);
+  Studies::AdaptiveLevels levels(scene,
+                                 Studies::bounded_refinement({}, scene),
+                                 0.);
   std::printf("step  h_c (mm)        g   h_j (mm)      DoFs  solve_s converged "
               "contact_length_mm uncertainty_mm  Q_kN_per_m\n");
   dealii::Timer        timer;
@@ -280,7 +281,7 @@ main(int argc, char **argv)
         levels.solve_halved(Output::ResultFolder((folder / "check").string()));
       print_step(-1, 0., 0., 0., halved, face, timer.wall_time());
       const Output::FemErrorEstimate estimate =
-        Pipeline::refined_solve_error(outcome, halved);
+        Studies::refined_solve_error(outcome, halved);
       if (estimate.available && estimate.joints.count(face) > 0)
         {
           const Output::FigureError &length =

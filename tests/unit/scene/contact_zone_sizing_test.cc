@@ -3,7 +3,7 @@
 
 #include <analytic/corner_contact.h>
 #include <scene/closed_forms.h>
-#include <scene/contact_zone_sizing.h>
+#include <scene/mesh_sizing.h>
 
 #include <gtest/gtest.h>
 
