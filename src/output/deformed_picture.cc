@@ -120,7 +120,7 @@ namespace FloorBlock::Output
       CellPolygons polygons;
       // deal.II vertex order is lexicographic; this visits them around the
       // cell.
-      constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
+      constexpr std::array<unsigned int, 5> around{{0, 1, 3, 2, 0}};
       // The base is bent into the bedding's shape by a prescribed uplift;
       // its bending stresses would set the colour scale and wash out the
       // blocks', so it is drawn in one colour and the scale is the blocks'

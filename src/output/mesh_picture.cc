@@ -27,9 +27,8 @@ namespace FloorBlock::Output
         return "#a0a0a0";
       if (material == Ids::base_material)
         return "#e3cf9a";
-      constexpr std::array<const char *, 3> block_colours = {"#8fb8de",
-                                                             "#a8d5a2",
-                                                             "#f2b880"};
+      constexpr std::array<const char *, 3> block_colours{
+        {"#8fb8de", "#a8d5a2", "#f2b880"}};
       return block_colours[material % block_colours.size()];
     }
 
@@ -39,7 +38,7 @@ namespace FloorBlock::Output
     {
       // deal.II vertex order is lexicographic; this visits them around the
       // cell.
-      constexpr std::array<unsigned int, 5> around = {0, 1, 3, 2, 0};
+      constexpr std::array<unsigned int, 5> around{{0, 1, 3, 2, 0}};
       std::map<dealii::types::material_id, std::ostringstream> streams;
       for (const auto &cell : triangulation.active_cell_iterators())
         {
@@ -81,10 +80,9 @@ namespace FloorBlock::Output
   {
     static const std::map<std::string, std::string> known = {
       {"stick", "#1a9850"}, {"slip", "#f46d43"}, {"open", "#7b3294"}};
-    constexpr std::array<const char *, 3> others = {"#000000",
-                                                    "#2166ac",
-                                                    "#b2182b"};
-    const auto                            found  = known.find(category);
+    constexpr std::array<const char *, 3> others{
+      {"#000000", "#2166ac", "#b2182b"}};
+    const auto found = known.find(category);
     return found != known.end() ? found->second : others[index % others.size()];
   }
 

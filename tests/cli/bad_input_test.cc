@@ -308,42 +308,42 @@ namespace
 
   class BadInputTest : public ::testing::TestWithParam<BadInput>
   {};
+
+  // The tool shall refuse each bad input with exit code 2, one message naming
+  // what is wrong, and no results folder.
+  TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
+  {
+    const BadInput   &input  = GetParam();
+    const std::string output = fresh_output_folder(input.name);
+
+    std::string scene = "params/default.prm";
+    if (!input.scene_text.empty())
+      {
+        scene = output + "_scene" + input.scene_extension;
+        std::ofstream(scene) << input.scene_text;
+      }
+    else if (input.name == "missing_scene_file")
+      scene = "params/no_such_scene.prm";
+
+    const std::string command =
+      input.command.empty() ? "analytic " + shell_quoted(scene) : input.command;
+    const ProcessResult result = run_floorblock(
+      command + " " + input.arguments + " --output " + shell_quoted(output));
+
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find(input.must_mention), std::string::npos)
+      << "message does not mention '" << input.must_mention << "':\n"
+      << result.output;
+    EXPECT_FALSE(std::filesystem::exists(output))
+      << "a results folder was written";
+    if (!input.scene_text.empty())
+      std::filesystem::remove(scene);
+  }
+
+  INSTANTIATE_TEST_SUITE_P(EveryDocumentedCase,
+                           BadInputTest,
+                           ::testing::ValuesIn(bad_inputs),
+                           [](const ::testing::TestParamInfo<BadInput> &info) {
+                             return info.param.name;
+                           });
 } // namespace
-
-// The tool shall refuse each bad input with exit code 2, one message naming
-// what is wrong, and no results folder.
-TEST_P(BadInputTest, ExitsWithCodeTwoNamesTheProblemAndWritesNothing)
-{
-  const BadInput   &input  = GetParam();
-  const std::string output = fresh_output_folder(input.name);
-
-  std::string scene = "params/default.prm";
-  if (!input.scene_text.empty())
-    {
-      scene = output + "_scene" + input.scene_extension;
-      std::ofstream(scene) << input.scene_text;
-    }
-  else if (input.name == "missing_scene_file")
-    scene = "params/no_such_scene.prm";
-
-  const std::string command =
-    input.command.empty() ? "analytic " + shell_quoted(scene) : input.command;
-  const ProcessResult result = run_floorblock(
-    command + " " + input.arguments + " --output " + shell_quoted(output));
-
-  EXPECT_EQ(result.exit_code, 2) << result.output;
-  EXPECT_NE(result.output.find(input.must_mention), std::string::npos)
-    << "message does not mention '" << input.must_mention << "':\n"
-    << result.output;
-  EXPECT_FALSE(std::filesystem::exists(output))
-    << "a results folder was written";
-  if (!input.scene_text.empty())
-    std::filesystem::remove(scene);
-}
-
-INSTANTIATE_TEST_SUITE_P(EveryDocumentedCase,
-                         BadInputTest,
-                         ::testing::ValuesIn(bad_inputs),
-                         [](const ::testing::TestParamInfo<BadInput> &info) {
-                           return info.param.name;
-                         });

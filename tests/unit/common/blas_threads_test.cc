@@ -47,27 +47,27 @@ namespace
     std::optional<std::string> saved[3];
     void (*set_threads)(int) = nullptr;
   };
+
+  // .ci/setup.sh installs OpenBLAS as Debian's libblas.so.3.
+  TEST_F(WithoutThreadVariables, SetsOneThread)
+  {
+    ASSERT_NE(set_threads, nullptr) << "libblas.so.3 is not OpenBLAS";
+    set_threads(2);
+    ASSERT_EQ(FloorBlock::blas_thread_count(), 2);
+    EXPECT_TRUE(FloorBlock::limit_blas_to_one_thread());
+    EXPECT_EQ(FloorBlock::blas_thread_count(), 1);
+  }
+
+  TEST_F(WithoutThreadVariables, LeavesTheCountTheUserChose)
+  {
+    ASSERT_NE(set_threads, nullptr) << "libblas.so.3 is not OpenBLAS";
+    for (const char *variable : count_variables)
+      {
+        set_threads(2);
+        setenv(variable, "2", 1);
+        EXPECT_FALSE(FloorBlock::limit_blas_to_one_thread()) << variable;
+        EXPECT_EQ(FloorBlock::blas_thread_count(), 2) << variable;
+        unsetenv(variable);
+      }
+  }
 } // namespace
-
-// .ci/setup.sh installs OpenBLAS as Debian's libblas.so.3.
-TEST_F(WithoutThreadVariables, SetsOneThread)
-{
-  ASSERT_NE(set_threads, nullptr) << "libblas.so.3 is not OpenBLAS";
-  set_threads(2);
-  ASSERT_EQ(FloorBlock::blas_thread_count(), 2);
-  EXPECT_TRUE(FloorBlock::limit_blas_to_one_thread());
-  EXPECT_EQ(FloorBlock::blas_thread_count(), 1);
-}
-
-TEST_F(WithoutThreadVariables, LeavesTheCountTheUserChose)
-{
-  ASSERT_NE(set_threads, nullptr) << "libblas.so.3 is not OpenBLAS";
-  for (const char *variable : count_variables)
-    {
-      set_threads(2);
-      setenv(variable, "2", 1);
-      EXPECT_FALSE(FloorBlock::limit_blas_to_one_thread()) << variable;
-      EXPECT_EQ(FloorBlock::blas_thread_count(), 2) << variable;
-      unsetenv(variable);
-    }
-}

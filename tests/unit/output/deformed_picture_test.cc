@@ -44,7 +44,7 @@ namespace FloorBlock::Output
               double             x = 0., y = 0., value = 0.;
               fields >> x >> y >> value;
               EXPECT_FALSE(fields.fail()) << "x y value expected: " << line;
-              cells.back().vertices.push_back({x, y});
+              cells.back().vertices.push_back({{x, y}});
               cells.back().values.push_back(value);
             }
         }

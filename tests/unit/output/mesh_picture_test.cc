@@ -37,8 +37,8 @@ namespace FloorBlock::Output
     file.read(reinterpret_cast<char *>(header.data()), header.size());
     ASSERT_TRUE(file.good());
     // PNG signature, then the IHDR chunk with width and height.
-    const std::array<unsigned char, 8> signature = {
-      0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    const std::array<unsigned char, 8> signature{
+      {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}};
     for (unsigned int index = 0; index < signature.size(); ++index)
       EXPECT_EQ(header[index], signature[index]);
     EXPECT_EQ(big_endian(header, 16), options.width_pixels);

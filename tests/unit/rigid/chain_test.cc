@@ -132,9 +132,12 @@ namespace FloorBlock::RigidBlocks
           std::abs(joint.shear_force - limit) <= 1e-9 * limit;
         chain_at_limit = chain_at_limit && at_limit;
         if (chain_at_limit)
-          EXPECT_NEAR(joint.normal_force / reference.lateral_force[number - 1],
-                      1.,
-                      1e-9);
+          {
+            EXPECT_NEAR(joint.normal_force /
+                          reference.lateral_force[number - 1],
+                        1.,
+                        1e-9);
+          }
         std::printf("    joint %u: Q %.5e N/m, closed form %.5e N/m "
                     "(%+.2f %%), V %.4e N/m, limit %.4e N/m, "
                     "stick/slip/open %u/%u/%u\n",

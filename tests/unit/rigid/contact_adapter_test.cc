@@ -168,7 +168,9 @@ namespace FloorBlock::RigidBlocks
         if (from.peak_normal_traction > 0.)
           for (const ProfilePoint &point : from.profile)
             if (point.coordinate == from.peak_coordinate)
-              EXPECT_EQ(to.peak_position, point.position) << from.name;
+              {
+                EXPECT_EQ(to.peak_position, point.position) << from.name;
+              }
       }
 
     const double block_height = solve.description.assembly.block_height;
@@ -176,10 +178,12 @@ namespace FloorBlock::RigidBlocks
       to_contact_result(solve.rigid, solve.model, 10. * block_height);
     for (const auto &joint : whole_joint.increments.back().joints)
       if (joint.name.rfind("vertical", 0) == 0)
-        EXPECT_NEAR(joint.averaged_peak_normal_stress,
-                    joint.normal_force / block_height,
-                    1e-12 * joint.peak_normal_stress)
-          << joint.name;
+        {
+          EXPECT_NEAR(joint.averaged_peak_normal_stress,
+                      joint.normal_force / block_height,
+                      1e-12 * joint.peak_normal_stress)
+            << joint.name;
+        }
 
     // Face joint: linear traction sigma (1 - z/c) below floor level (the
     // Winkler overlap of a rotated rigid face, winkler_test.cc), so the mean

@@ -97,8 +97,11 @@ namespace
           }
         if (length == 1.5)
           for (const unsigned int block : scene.loaded_blocks())
-            EXPECT_EQ(problem.model.pressures.at(Ids::footprint_surface(block)),
-                      uniform.model.pressures.at(Ids::floor_surface(block)));
+            {
+              EXPECT_EQ(problem.model.pressures.at(
+                          Ids::footprint_surface(block)),
+                        uniform.model.pressures.at(Ids::floor_surface(block)));
+            }
       }
   }
 } // namespace
