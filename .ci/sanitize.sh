@@ -17,8 +17,8 @@
 #   runs here unless `heavy_duplicates` below names it;
 # - fuzz_tests: 2000 random scenes and the closed forms' hostile inputs;
 # - the unit tests of common, analytic, loading, parameters and rigid.
-# Left out: the other modules' unit tests (geometry, contact, convergence,
-# verification, fem, solver, pipeline, ...) and the scenario label: their
+# Left out: the other modules' unit tests (geometry, contact, refinement,
+# verification, fem, solver, pipeline, studies, ...) and the scenario label: their
 # code (Gmsh meshing, FEM solves) runs here through cli_tests end to end,
 # and each executable would add its own Debug build and several times its
 # Release run time under ASan and deal.II's debug library. ctest lists tests of unbuilt
