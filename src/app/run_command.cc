@@ -73,7 +73,7 @@ namespace FloorBlock::App
       const Output::RunComparison comparison =
         Pipeline::compare_with_closed_forms(outcome, closed_forms, scene);
       write_plots(folder, comparison, outcome.result, scene);
-      const auto lines = Output::verdicts(comparison.final_joints.back());
+      const auto lines = Output::verdicts(comparison);
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
       std::cout << Output::governing_lines(

@@ -21,7 +21,8 @@ namespace FloorBlock::Compare
     compare_force(const Scene::MechanismResult &entry,
                   const unsigned int            joint,
                   const double                  fem_force,
-                  const bool                    fem_carries_load)
+                  const bool                    fem_carries_load,
+                  const bool                    same_scene)
     {
       ForceComparison comparison;
       comparison.mechanism          = Scene::to_string(entry.mechanism);
@@ -34,6 +35,8 @@ namespace FloorBlock::Compare
       comparison.closed_form = values[joint - 1];
       if (!fem_carries_load)
         comparison.difference_status = DifferenceStatus::no_load;
+      else if (!same_scene)
+        comparison.difference_status = DifferenceStatus::other_scene;
       else if (comparison.closed_form == 0.)
         comparison.difference_status = DifferenceStatus::zero_closed_form;
       else
@@ -60,8 +63,20 @@ namespace FloorBlock::Compare
           return "no_load";
         case DifferenceStatus::zero_closed_form:
           return "zero_closed_form";
+        case DifferenceStatus::other_scene:
+          return "other_scene";
       }
     return "unknown";
+  }
+
+  ClosedFormInputs
+  closed_form_inputs(const Scene::ClosedForms &closed_forms)
+  {
+    return {closed_forms.chain.inclination,
+            closed_forms.chain.weight,
+            closed_forms.chain.support_load,
+            closed_forms.floor_lift,
+            closed_forms.scene_differences};
   }
 
   std::vector<JointComparison>
@@ -81,8 +96,12 @@ namespace FloorBlock::Compare
 
         JointComparison comparison{joint, report.normal_force, {}, {}, load};
         for (const auto &entry : closed_forms.mechanisms)
-          comparison.forces.push_back(compare_force(
-            entry, joint, report.normal_force, load.carries_load()));
+          comparison.forces.push_back(
+            compare_force(entry,
+                          joint,
+                          report.normal_force,
+                          load.carries_load(),
+                          closed_forms.scene_differences.empty()));
 
         const auto face_side_material =
           joint == n_blocks ? Geometry::Ids::face_block_material :

@@ -19,10 +19,14 @@ namespace FloorBlock::Compare
     /** The FEM increment carries no load (LoadCheck): round-off. */
     no_load,
     /** The closed form is exactly 0: the relative difference is undefined. */
-    zero_closed_form
+    zero_closed_form,
+    /** The closed forms describe another scene than the FEM's
+     * (Scene::ClosedForms::scene_differences): no verdict. */
+    other_scene
   };
 
-  /** @brief "ok", "no_closed_form", "no_load" or "zero_closed_form". */
+  /** @brief "ok", "no_closed_form", "no_load", "zero_closed_form" or
+   * "other_scene". */
   std::string
   to_string(const DifferenceStatus status);
 
@@ -67,6 +71,22 @@ namespace FloorBlock::Compare
     LoadCheck                    load; ///< of the whole increment
   };
 
+  /** What the closed forms were given, named beside every verdict. */
+  struct ClosedFormInputs
+  {
+    /** alpha_i against the true horizontal (rad), block 1 (free end) first. */
+    std::vector<double> inclination;
+    std::vector<double> weight;          ///< W_i (N/m)
+    std::vector<double> support_load;    ///< P_i (N/m), vertical
+    double              floor_lift = 0.; ///< y of Eq. 6.51 at the face (m)
+    /** Scene::ClosedForms::scene_differences; empty: the same scene. */
+    std::vector<std::string> scene_differences;
+  };
+
+  /** @brief The inputs of @p closed_forms, for the reports. */
+  ClosedFormInputs
+  closed_form_inputs(const Scene::ClosedForms &closed_forms);
+
   /** Inputs of 6.51-6.53 that do not come from the FEM. */
   struct ContactConstants
   {
@@ -86,7 +106,9 @@ namespace FloorBlock::Compare
    * as 6.51 assumes. Where it is not positive, corner_contact() reports
    * zero_floor_lift and the record says so. An increment that carries no
    * load (check_load() with constants.youngs_modulus) is not compared: its
-   * forces are round-off.
+   * forces are round-off. Nor is a scene the closed forms do not describe
+   * (DifferenceStatus::other_scene); the contact comparison, which feeds
+   * the FEM's own Q and y to Eqs. 6.51-6.53, is made in every case.
    */
   std::vector<JointComparison>
   compare_vertical_joints(const Contact::IncrementResult &increment,

@@ -3,6 +3,7 @@
 #include <output/fem_report.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -126,6 +127,13 @@ namespace FloorBlock::Output
           status      = Compare::to_string(force.difference_status);
           status_text = no_load_text(joint.load);
         }
+      else if (force.difference_status == DifferenceStatus::other_scene)
+        {
+          status      = Compare::to_string(force.difference_status);
+          status_text = "The closed forms describe another scene than the "
+                        "FEM's (closed_form_inputs.scene_differences), so "
+                        "no relative difference is given.";
+        }
       else if (force.difference_status == DifferenceStatus::zero_closed_form)
         {
           status      = Compare::to_string(force.difference_status);
@@ -134,14 +142,17 @@ namespace FloorBlock::Output
                         "FEM's Q minus the closed form's.";
         }
       const bool defined = force.difference_status == DifferenceStatus::defined;
+      const bool other_scene =
+        force.difference_status == DifferenceStatus::other_scene;
       return {{"status", status},
               {"status_text", status_text},
               {"closed_form_status", force.status},
               {"Q_N_per_m",
                force.has_value ? json(force.closed_form) : json(nullptr)},
               {"difference_N_per_m",
-               force.has_value ? json(joint.fem_force - force.closed_form) :
-                                 json(nullptr)},
+               force.has_value && !other_scene ?
+                 json(joint.fem_force - force.closed_form) :
+                 json(nullptr)},
               {"relative_difference",
                defined ? json(force.relative_difference) : json(nullptr)}};
     }
@@ -275,14 +286,79 @@ namespace FloorBlock::Output
     return text;
   }
 
-  std::vector<std::string>
-  verdicts(const Compare::JointComparison &face_joint)
+  namespace
   {
+    /**
+     * "v unit" when every value is the same (relative 1e-12), else the
+     * values in order, "v1, v2, ... unit".
+     */
+    std::string
+    values_text(const std::vector<double> &values,
+                const double               scale,
+                const std::string         &unit)
+    {
+      bool same = true;
+      for (const double value : values)
+        same = same && std::abs(value - values.front()) <=
+                         1e-12 * std::abs(values.front());
+      std::vector<std::string> texts;
+      for (const double value : values)
+        texts.push_back(fmt::format("{:.4g}", value * scale));
+      return same ? texts.front() + " " + unit :
+                    fmt::format("{} {}", fmt::join(texts, ", "), unit);
+    }
+  } // namespace
+
+  std::vector<std::string>
+  closed_form_input_lines(const Compare::ClosedFormInputs &inputs)
+  {
+    std::vector<double>      loads;
+    std::vector<std::size_t> loaded;
+    for (std::size_t i = 0; i < inputs.support_load.size(); ++i)
+      if (inputs.support_load[i] > 0.)
+        {
+          loads.push_back(inputs.support_load[i]);
+          loaded.push_back(i + 1);
+        }
+    const std::string support =
+      loads.empty() ? std::string("0") :
+                      fmt::format("{} vertical on block{} {}",
+                                  values_text(loads, 1. / kN, "kN/m"),
+                                  loaded.size() > 1 ? "s" : "",
+                                  fmt::join(loaded, ", "));
+    std::vector<std::string> lines = {
+      fmt::format("the closed forms' inputs (blocks from the free end): "
+                  "alpha = {} against the true horizontal, W = {}, P = {}, "
+                  "y = {:.4g} mm at the face joint",
+                  values_text(inputs.inclination, 180. / M_PI, "deg"),
+                  values_text(inputs.weight, 1. / kN, "kN/m"),
+                  support,
+                  inputs.floor_lift * 1e3)};
+    for (const auto &difference : inputs.scene_differences)
+      lines.push_back("the closed forms describe another scene than the "
+                      "FEM's: " +
+                      difference);
+    return lines;
+  }
+
+  std::vector<std::string>
+  verdicts(const RunComparison &comparison)
+  {
+    const Compare::JointComparison &face_joint = comparison.final_joints.back();
+    std::vector<std::string> lines = closed_form_input_lines(comparison.inputs);
     if (!face_joint.load.carries_load())
-      return {no_load_text(face_joint.load) + " with the closed forms"};
-    std::vector<std::string> lines;
+      {
+        lines.push_back(no_load_text(face_joint.load) +
+                        " with the closed forms");
+        return lines;
+      }
+    if (!comparison.inputs.scene_differences.empty())
+      lines.push_back("no verdict on the lateral force Q: the FEM solves "
+                      "another scene than the closed forms describe");
     for (const auto &force : face_joint.forces)
       {
+        if (force.difference_status == Compare::DifferenceStatus::other_scene)
+          continue;
         if (!force.has_value)
           lines.push_back(force.mechanism + " has no finite Q (" +
                           force.status + ")");
@@ -356,6 +432,15 @@ namespace FloorBlock::Output
                                 mechanism.status);
             continue;
           }
+        if (mechanism.difference_status ==
+            Compare::DifferenceStatus::other_scene)
+          {
+            // Values of another scene are no comparison either.
+            plot += fmt::format(", NaN with dots lc rgb 'white' title '{}: "
+                                "describes another scene, not drawn'",
+                                mechanism.mechanism);
+            continue;
+          }
         std::string rows;
         for (const auto &joint : joints)
           if (joint.forces[m].has_value)
@@ -386,7 +471,14 @@ namespace FloorBlock::Output
       history.push_back(lift_history_entry(point.face_joint,
                                            comparison.constants,
                                            point.base_lift));
-    return {{"final",
+    const auto &inputs = comparison.inputs;
+    return {{"closed_form_inputs",
+             {{"alpha_rad", inputs.inclination},
+              {"W_N_per_m", inputs.weight},
+              {"P_N_per_m", inputs.support_load},
+              {"y_m", inputs.floor_lift},
+              {"scene_differences", inputs.scene_differences}}},
+            {"final",
              comparison_json(comparison.final_joints,
                              comparison.constants,
                              n_blocks)},

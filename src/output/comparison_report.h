@@ -24,6 +24,8 @@ namespace FloorBlock::Output
     /** The face joint at every converged uplift increment. */
     std::vector<LiftHistoryPoint> lift_history;
     Compare::ContactConstants     constants;
+    /** What the closed forms were given, and how the scenes differ. */
+    Compare::ClosedFormInputs inputs;
   };
 
   /** @brief summary.json's "comparison": {"final", "lift_history"}. */
@@ -60,11 +62,20 @@ namespace FloorBlock::Output
   contact_table_markdown(const std::vector<Compare::JointComparison> &joints);
 
   /**
-   * @brief One sentence per quantity at the face joint, e.g. "Eq. 6.51
-   * underestimates the contact area by 23 % at the face joint".
+   * @brief The closed forms' inputs in one sentence (alpha per block, W_i,
+   * P_i, y), then one sentence per way the FEM's scene differs from theirs.
    */
   std::vector<std::string>
-  verdicts(const Compare::JointComparison &face_joint);
+  closed_form_input_lines(const Compare::ClosedFormInputs &inputs);
+
+  /**
+   * @brief closed_form_input_lines(), then one sentence per quantity at the
+   * face joint, e.g. "Eq. 6.51 underestimates the contact area by 23 % at
+   * the face joint"; on a scene the closed forms do not describe, one
+   * sentence that gives no verdict on Q instead of the percentages.
+   */
+  std::vector<std::string>
+  verdicts(const RunComparison &comparison);
 
   /** gnuplot: Q per joint, FEM points against each closed form. */
   std::string

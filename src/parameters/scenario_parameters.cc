@@ -68,6 +68,17 @@ namespace FloorBlock::Parameters
                            " m");
     }
 
+    bool
+    uplift_follows_bedding(const BeddingParameters &bedding,
+                           const UpliftMode         mode)
+    {
+      return bedding.floor_uplift ==
+               Geometry::FloorUplift::lifted_flat_bedding &&
+             (bedding.shape == Geometry::BeddingShape::parabolic ?
+                mode == UpliftMode::parabola :
+                mode == UpliftMode::slope);
+    }
+
     std::string
     number_text(const double value)
     {
@@ -102,9 +113,7 @@ namespace FloorBlock::Parameters
       constexpr double tolerance = 0.01;
       const bool parabolic = bedding.shape == Geometry::BeddingShape::parabolic;
       const bool follows_bedding =
-        bedding.floor_uplift == Geometry::FloorUplift::lifted_flat_bedding &&
-        (parabolic ? loading.uplift_mode == UpliftMode::parabola :
-                     loading.uplift_mode == UpliftMode::slope);
+        uplift_follows_bedding(bedding, loading.uplift_mode);
       const double rise =
         bedding.rise_at_free_end(geometry.n_blocks, geometry.block_width);
       const std::string rise_text =
@@ -149,6 +158,12 @@ namespace FloorBlock::Parameters
       const double lift = loading.floor_lift;
       const bool   contradicts =
         std::abs(lift - rise) > tolerance * std::abs(rise);
+      // A level bed moved up or along itself keeps the closed forms' bed:
+      // the motion only drives the slip they describe.
+      const bool moves_level_bed =
+        rise == 0. && loading.uplift_mode != UpliftMode::tilt;
+      if (!follows_bedding && moves_level_bed)
+        return;
       if (!follows_bedding)
         {
           warnings.push_back(
@@ -277,6 +292,12 @@ namespace FloorBlock::Parameters
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       blocks.push_back(geometry.n_blocks + 1 - from_face);
     return blocks;
+  }
+
+  bool
+  ScenarioParameters::uplift_follows_bedding() const
+  {
+    return Parameters::uplift_follows_bedding(bedding, loading.uplift_mode);
   }
 
   namespace

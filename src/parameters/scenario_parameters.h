@@ -53,6 +53,15 @@ namespace FloorBlock::Parameters
      */
     std::vector<unsigned int>
     loaded_blocks() const;
+
+    /**
+     * @brief Whether the FEM's uplift bends its flat bed into the bedding
+     * the closed forms stand the blocks on: Bedding/Floor uplift reading =
+     * lifted with Loading/Uplift mode = parabola on a parabolic bedding or
+     * slope on a planar one.
+     */
+    bool
+    uplift_follows_bedding() const;
   };
 
   /**

@@ -9,6 +9,7 @@ namespace FloorBlock::Pipeline
                             const Parameters::ScenarioParameters &scene)
   {
     Output::RunComparison comparison;
+    comparison.inputs    = Compare::closed_form_inputs(closed_forms);
     comparison.constants = {scene.material.youngs_modulus(),
                             scene.geometry.support_width,
                             scene.geometry.block_width,

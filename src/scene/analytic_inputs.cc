@@ -36,16 +36,27 @@ namespace FloorBlock::Scene
         Analytic::parabolic_inclinations(geometry.n_blocks,
                                          geometry.block_width,
                                          scene.bedding.curvature);
+    for (double &alpha : chain.inclination)
+      alpha = true_inclination(alpha, scene.bedding.frame_dip);
     return chain;
+  }
+
+  double
+  true_inclination(const double frame_inclination, const double frame_dip)
+  {
+    return frame_inclination - frame_dip;
   }
 
   double
   face_joint_floor_lift(const Parameters::ScenarioParameters &scene,
                         const Analytic::BlockChain           &chain)
   {
-    // The face block stays upright: its inclination is 0.
+    // The face block is fixed upright in the frame: level in the frame, so
+    // -dip against the true horizontal like a level bed. The relative
+    // rotation, hence y, is the frame's and does not depend on the dip.
     return Analytic::joint_floor_lift(chain.inclination.back(),
-                                      0.0,
+                                      true_inclination(0.,
+                                                       scene.bedding.frame_dip),
                                       scene.geometry.block_width);
   }
 } // namespace FloorBlock::Scene

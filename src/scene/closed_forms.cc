@@ -1,6 +1,10 @@
 #include <scene/analytic_inputs.h>
 #include <scene/closed_forms.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
+
 namespace FloorBlock::Scene
 {
   std::string
@@ -36,6 +40,50 @@ namespace FloorBlock::Scene
     }
   } // namespace
 
+  std::vector<std::string>
+  scene_differences(const Parameters::ScenarioParameters &scene)
+  {
+    std::vector<std::string> differences;
+    const auto              &bedding = scene.bedding;
+    const auto              &loading = scene.loading;
+    const bool               loaded =
+      loading.support_load > 0. && !scene.loaded_blocks().empty();
+    if (loaded &&
+        loading.support_load_direction ==
+          Parameters::SupportLoadDirection::top_normal &&
+        (bedding.frame_dip != 0. || !bedding.flat_in_mesh()))
+      differences.push_back(
+        "Loading/Support load direction = normal to block top presses on "
+        "block tops that are not level, so the FEM's support load is not "
+        "vertical; the closed forms' P_i is");
+
+    if (bedding.floor_uplift != Geometry::FloorUplift::lifted_flat_bedding)
+      return differences;
+    const double rise = bedding.rise_at_free_end(scene.geometry.n_blocks,
+                                                 scene.geometry.block_width);
+    if (scene.uplift_follows_bedding())
+      {
+        // The 1 % of Parameters' Floor lift check.
+        if (std::abs(loading.floor_lift - rise) > 0.01 * std::abs(rise))
+          differences.push_back(fmt::format(
+            "Loading/Floor lift = {:g} m bends the FEM's flat bed into "
+            "another floor than the bedding the closed forms stand the "
+            "blocks on (its rise at the free end is {:g} m)",
+            loading.floor_lift,
+            rise));
+      }
+    else if (rise != 0. || loading.uplift_mode == Parameters::UpliftMode::tilt)
+      differences.push_back(fmt::format(
+        "Loading/Uplift mode moves the FEM's flat bed without bending it "
+        "into the bedding the closed forms stand the blocks on (rise {:g} m "
+        "at the free end){}",
+        rise,
+        loading.uplift_mode == Parameters::UpliftMode::tilt ?
+          "; a tilt turns the FEM's bed" :
+          ""));
+    return differences;
+  }
+
   ClosedForms
   evaluate_closed_forms(const Parameters::ScenarioParameters &scene)
   {
@@ -70,7 +118,8 @@ namespace FloorBlock::Scene
         result.mechanisms.push_back(entry);
       }
 
-    const auto &no_rotation = result.mechanisms.front().forces;
+    result.scene_differences = scene_differences(scene);
+    const auto &no_rotation  = result.mechanisms.front().forces;
     if (!no_rotation.lateral_force.empty())
       result.no_rotation_heights =
         Analytic::centroid_heights(result.chain, no_rotation.lateral_force);

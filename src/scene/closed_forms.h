@@ -41,7 +41,27 @@ namespace FloorBlock::Scene
     std::vector<MechanismResult> mechanisms;
     /// Centroid heights and rotation criterion of the no-rotation case.
     Analytic::CentroidHeights no_rotation_heights;
+    /**
+     * How the FEM's scene differs from the one the closed forms describe,
+     * one sentence each (scene_differences()); empty: the same scene, and
+     * the two may be compared.
+     */
+    std::vector<std::string> scene_differences;
   };
+
+  /**
+   * @brief The ways the FEM's scene is not the chapter's for these closed
+   * forms: a support load that is not vertical on block tops that are not
+   * level (the chapter's P_i is vertical), and a bed the FEM's uplift
+   * leaves other than the bedding the closed forms stand the blocks on
+   * (reading lifted: a flat bed translated or tilted under an inclined or
+   * curved bedding, a tilted level bed, or a lift other than the
+   * bedding's rise). Translations of a level bed (Uplift mode vertical or
+   * along the dip) leave the bed's inclination, which is all the chain
+   * uses, and the inclined reading is the chapter's own set-up.
+   */
+  std::vector<std::string>
+  scene_differences(const Parameters::ScenarioParameters &scene);
 
   /** @brief Evaluates all three mechanisms, the centroid heights and 6.51-6.53. */
   ClosedForms
