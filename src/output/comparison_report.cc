@@ -341,6 +341,80 @@ namespace FloorBlock::Output
     return lines;
   }
 
+  namespace
+  {
+    /** Which mechanisms assume the FEM's joint states, and how far off. */
+    std::string
+    holding_line(const Compare::JointStates     &states,
+                 const Compare::JointComparison &face_joint)
+    {
+      const std::string joints = "the FEM's joints: " + states.text;
+      if (states.holding.empty())
+        return joints + "; none of the chapter's mechanisms assumes these "
+                        "joint states, so none is expected to give the "
+                        "FEM's Q";
+      std::vector<std::string> named;
+      for (const Scene::Mechanism mechanism : states.holding)
+        for (const auto &force : face_joint.forces)
+          if (force.mechanism == Scene::to_string(mechanism))
+            named.push_back(
+              force.difference_status == Compare::DifferenceStatus::defined ?
+                fmt::format("{} (the FEM {:+.3g} % from it at the face joint)",
+                            force.mechanism,
+                            100. * force.relative_difference) :
+                fmt::format("{} (no difference: {})",
+                            force.mechanism,
+                            force.has_value ?
+                              Compare::to_string(force.difference_status) :
+                              force.status));
+      return joints + "; the mechanisms that assume these states: " +
+             fmt::format("{}", fmt::join(named, "; "));
+    }
+  } // namespace
+
+  namespace
+  {
+    /**
+     * Joints 1..k where the FEM's chain slips on every joint, as the slip
+     * mechanisms assume, and each one's largest difference there; "" when
+     * joint 1 already does not slip.
+     */
+    std::string
+    slip_chain_line(const RunComparison &comparison)
+    {
+      const auto &holds     = comparison.joint_states.slip_chain_holds;
+      const auto  first_not = std::find(holds.begin(), holds.end(), false);
+      const auto  k         = std::size_t(first_not - holds.begin());
+      if (k == 0)
+        return "";
+      std::vector<std::string> differences;
+      for (const Scene::Mechanism mechanism :
+           {Scene::Mechanism::no_rotation,
+            Scene::Mechanism::rotation_vertical_slip})
+        {
+          double largest = -1.;
+          for (const auto &joint : comparison.final_joints)
+            if (joint.joint <= k)
+              for (const auto &force : joint.forces)
+                if (force.mechanism == Scene::to_string(mechanism) &&
+                    force.difference_status ==
+                      Compare::DifferenceStatus::defined)
+                  largest =
+                    std::max(largest, std::abs(force.relative_difference));
+          if (largest >= 0.)
+            differences.push_back(
+              fmt::format("{} {:.2g}", Scene::to_string(mechanism), largest));
+        }
+      if (differences.empty())
+        return "";
+      return fmt::format("joints 1 to {}: the FEM's blocks slip on every "
+                         "joint up to there, as the slip mechanisms assume; "
+                         "largest relative difference of their Q there: {}",
+                         k,
+                         fmt::join(differences, ", "));
+    }
+  } // namespace
+
   std::vector<std::string>
   verdicts(const RunComparison &comparison)
   {
@@ -355,6 +429,13 @@ namespace FloorBlock::Output
     if (!comparison.inputs.scene_differences.empty())
       lines.push_back("no verdict on the lateral force Q: the FEM solves "
                       "another scene than the closed forms describe");
+    else
+      {
+        lines.push_back(holding_line(comparison.joint_states, face_joint));
+        const std::string chain = slip_chain_line(comparison);
+        if (!chain.empty())
+          lines.push_back(chain);
+      }
     for (const auto &force : face_joint.forces)
       {
         if (force.difference_status == Compare::DifferenceStatus::other_scene)
@@ -471,8 +552,19 @@ namespace FloorBlock::Output
       history.push_back(lift_history_entry(point.face_joint,
                                            comparison.constants,
                                            point.base_lift));
-    const auto &inputs = comparison.inputs;
-    return {{"closed_form_inputs",
+    const auto              &inputs = comparison.inputs;
+    const auto              &states = comparison.joint_states;
+    std::vector<std::string> holding;
+    for (const Scene::Mechanism mechanism : states.holding)
+      holding.push_back(Scene::to_string(mechanism));
+    return {{"fem_joint_states",
+             {{"vertical_friction_use", states.vertical_use},
+              {"bedding_friction_use", states.bedding_use},
+              {"open_beds", states.open_beds},
+              {"slip_chain_holds", states.slip_chain_holds},
+              {"holding_mechanisms", holding},
+              {"text", states.text}}},
+            {"closed_form_inputs",
              {{"alpha_rad", inputs.inclination},
               {"W_N_per_m", inputs.weight},
               {"P_N_per_m", inputs.support_load},

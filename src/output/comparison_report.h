@@ -1,6 +1,7 @@
 #pragma once
 
 #include <compare/joint_comparison.h>
+#include <compare/joint_states.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,8 @@ namespace FloorBlock::Output
     Compare::ContactConstants     constants;
     /** What the closed forms were given, and how the scenes differ. */
     Compare::ClosedFormInputs inputs;
+    /** The FEM's joints against their friction limits, last increment. */
+    Compare::JointStates joint_states;
   };
 
   /** @brief summary.json's "comparison": {"final", "lift_history"}. */

@@ -79,4 +79,43 @@ namespace
               std::string::npos)
       << run.output;
   }
+
+  // A scene of S6's family: a 5 deg frame dip, vertical joints of 10 deg
+  // friction, no support load. Where the FEM's chain slips on every joint
+  // (joints 1..k), the slip mechanism whose geometry is the scene's (blocks
+  // flush on the bed: rotation_vertical_slip) gives the FEM's Q to 1e-3;
+  // the face verdict says which mechanism assumes the FEM's joint states.
+  TEST(SceneFrame, SlipMechanismGivesTheFemsQWhereTheFemSlips)
+  {
+    const std::string folder = fresh_output_folder("s6_family");
+    const auto        run =
+      run_floorblock("run params/s6.prm --set \"Bedding/Frame dip=5\" "
+                     "--set \"Joints/Vertical friction angle=10\" "
+                     "--set \"Loading/Support load=0\" --output " +
+                     shell_quoted(folder));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const json   summary  = read_json(folder + "/summary.json");
+    const json  &states   = summary["comparison"]["fem_joint_states"];
+    unsigned int slipping = 0;
+    for (const json &holds : states["slip_chain_holds"])
+      if (holds.get<bool>())
+        ++slipping;
+      else
+        break;
+    ASSERT_GE(slipping, 3u) << states.dump();
+    for (const json &joint : summary["comparison"]["final"])
+      if (joint["joint"].get<unsigned int>() <= slipping)
+        {
+          const json &force = joint["Q_closed_form"]["rotation_vertical_slip"];
+          ASSERT_TRUE(force["relative_difference"].is_number());
+          EXPECT_LT(std::abs(force["relative_difference"].get<double>()), 1e-3)
+            << joint.dump();
+        }
+    EXPECT_NE(run.output.find("the FEM's joints: "), std::string::npos)
+      << run.output;
+    EXPECT_NE(run.output.find("joints 1 to " + std::to_string(slipping) +
+                              ": the FEM's blocks slip on every joint"),
+              std::string::npos)
+      << run.output;
+  }
 } // namespace
