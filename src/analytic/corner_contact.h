@@ -40,9 +40,16 @@ namespace FloorBlock::Analytic
    * @param[in] support_width b (m), > 0.
    * @param[in] block_width L (m), > 0.
    * @param[in] block_height H (m), > 0: the contact must fit on the joint.
-   * @return A, c, sigma_avg, sigma_max. Status zero_floor_lift (all zero)
-   * if y <= 0; contact_longer_than_block (values kept) if c > H;
-   * invalid_input (all zero) for other bad inputs. Q = 0 gives zeros, ok.
+   * @return A, c, sigma_avg, sigma_max. With y* = 2 Q L^2 / (E b H^2), the
+   * lift at which the triangle's c reaches H: for y > y* the printed
+   * 6.51-6.53 (ok); for |y| <= y* the whole joint face is in contact
+   * (whole_joint_in_contact): the same compatibility with a uniform
+   * closure added, A = b H, sigma_avg = Q / (b H), sigma_max = sigma_avg +
+   * E |y| H / (2 L^2) (at floor level for y > 0, at the foot for y < 0),
+   * continuous with 6.53 at y = y*; for y < -y* the joint closes at its
+   * foot and not at floor level (zero_floor_lift, all zero), as for Q = 0
+   * with y <= 0. invalid_input (all zero) for other bad inputs. Q = 0 with
+   * y > 0 gives zeros, ok.
    */
   CornerContact
   corner_contact(const double lateral_force_over_width,

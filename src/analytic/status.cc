@@ -37,14 +37,14 @@ namespace FloorBlock::Analytic
                  "base: the block tips and the assumed mechanism does "
                  "not apply.";
         case Status::zero_floor_lift:
-          return "The floor lift is zero or negative: adjacent blocks do "
-                 "not rotate against each other, so the corner contact "
-                 "area is unbounded and the stress estimate is "
-                 "meaningless.";
-        case Status::contact_longer_than_block:
-          return "The computed contact length exceeds the block height: "
-                 "the whole joint face is in contact and the corner "
-                 "contact formulas 6.51-6.53 do not apply.";
+          return "The blocks rotate against each other so that the joint "
+                 "closes at its foot, not at floor level (or it carries no "
+                 "force): there is no corner contact at floor level.";
+        case Status::whole_joint_in_contact:
+          return "The blocks rotate against each other too little for a "
+                 "corner contact: the whole joint face is in contact, "
+                 "with the trapezoidal stress of the same compatibility "
+                 "(A = bH, sigma_avg = Q/(bH)).";
       }
     return "Unknown status.";
   }
@@ -72,8 +72,8 @@ namespace FloorBlock::Analytic
           return "normal_force_outside_base";
         case Status::zero_floor_lift:
           return "zero_floor_lift";
-        case Status::contact_longer_than_block:
-          return "contact_longer_than_block";
+        case Status::whole_joint_in_contact:
+          return "whole_joint_in_contact";
       }
     return "unknown";
   }

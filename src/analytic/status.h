@@ -35,12 +35,23 @@ namespace FloorBlock::Analytic
     base_lifts_off,
     /** Eq. 6.39-6.46: the base normal force falls outside the base. */
     normal_force_outside_base,
-    /** Eq. 6.51: floor lift y <= 0, no compatibility overlap, A = inf. */
+    /** Eq. 6.51: the joint closes at its foot, not at floor level
+     * (y < -y*), or carries nothing with y <= 0: no floor-level corner
+     * contact. */
     zero_floor_lift,
-    /** Eq. 6.51: contact length exceeds the block height H, the
-     * triangular contact stress no longer fits on the block face. */
-    contact_longer_than_block
+    /** Eq. 6.51: |y| <= y*, the triangular contact would be at least as
+     * long as the block: the whole joint face is in contact (trapezoidal
+     * stress; corner_contact()). Its values are the model's answer. */
+    whole_joint_in_contact
   };
+
+  /** @brief Whether Eqs. 6.51-6.53 answer with numbers under @p status:
+   * ok (triangular contact) or whole_joint_in_contact. */
+  inline bool
+  has_contact_values(const Status status)
+  {
+    return status == Status::ok || status == Status::whole_joint_in_contact;
+  }
 
   /**
    * @brief Plain-words explanation of a status for the command line.

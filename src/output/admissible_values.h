@@ -38,6 +38,6 @@ namespace FloorBlock::Output
   has_admissible_contact(const Scene::MechanismResult &entry)
   {
     return has_admissible_forces(entry) &&
-           face_contact_status(entry) == Analytic::Status::ok;
+           Analytic::has_contact_values(face_contact_status(entry));
   }
 } // namespace FloorBlock::Output

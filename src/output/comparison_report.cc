@@ -28,12 +28,11 @@ namespace FloorBlock::Output
       return (fem - reference) / std::abs(reference);
     }
 
-    /// Eqs. 6.51-6.53 gave a number: ok or contact_longer_than_block.
+    /// Eqs. 6.51-6.53 gave a number: ok or whole_joint_in_contact.
     bool
     has_closed_form(const Analytic::CornerContact &formula)
     {
-      return formula.status == Analytic::Status::ok ||
-             formula.status == Analytic::Status::contact_longer_than_block;
+      return Analytic::has_contact_values(formula.status);
     }
 
     /// A closed form with a number that is exactly 0 (FEM Q = 0 here).
@@ -585,12 +584,10 @@ namespace FloorBlock::Output
       {
         const auto &contact = point.face_joint.contact;
         const auto &formula = contact.closed_form;
-        // Only ok values are drawn: contact_longer_than_block has numbers
-        // but lies outside the formulas' range.
-        const bool defined = formula.status == Analytic::Status::ok;
-        const auto cell    = [defined](const double value, const double scale) {
+        const bool  defined = Analytic::has_contact_values(formula.status);
+        const auto  cell = [defined](const double value, const double scale) {
           return defined ? fmt::format("{}", value * scale) :
-                              std::string("NaN");
+                            std::string("NaN");
         };
         data += fmt::format("{} {} {} {} {}\n",
                             point.base_lift * 1e3,

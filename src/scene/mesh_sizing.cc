@@ -53,9 +53,7 @@ namespace FloorBlock::Scene
          evaluate_closed_forms(scene).mechanisms)
       {
         const Analytic::CornerContact &contact = mechanism.contact;
-        const bool                     has_length =
-          contact.status == Analytic::Status::ok ||
-          contact.status == Analytic::Status::contact_longer_than_block;
+        const bool has_length = Analytic::has_contact_values(contact.status);
         if (!has_length || !std::isfinite(contact.contact_length) ||
             !(contact.contact_length > 0.))
           continue;

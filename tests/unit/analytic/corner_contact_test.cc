@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 using namespace FloorBlock::Analytic;
 
@@ -62,24 +63,62 @@ TEST(CornerContact, ShallScaleStressWithTheRootOfForceLiftAndModulus)
   EXPECT_NEAR(four_times_lift.contact_area / base.contact_area, 0.5, 1e-12);
 }
 
-TEST(CornerContact, ShallReportZeroFloorLiftInsteadOfAnInfiniteArea)
+// The hand example's y* = 2 Q L^2 / (E b H^2) = 3e6 / (16e9 x 1.5 x 4)
+// = 3.125e-5 m: below it in magnitude the whole joint face is in contact.
+constexpr double whole_joint_lift = 3.125e-5;
+
+// y = 0: no rotation, a uniform closure: sigma = Q / (b H) = 0.5 MPa over
+// A = b H = 3 m^2. y = +-1e-5 m adds E |y| H / (2 L^2) = 0.16 MPa at floor
+// level (y > 0) or at the foot (y < 0).
+TEST(CornerContact, ShallPutTheWholeJointInContactForASmallRelativeRotation)
 {
-  for (const double no_lift : {0., -1e-3})
+  for (const double small_lift : {0., 1e-5, -1e-5})
     {
-      const CornerContact contact =
-        corner_contact(force, no_lift, modulus, support_width, width, height);
-      EXPECT_EQ(contact.status, Status::zero_floor_lift);
-      EXPECT_TRUE(std::isfinite(contact.contact_area));
-      EXPECT_TRUE(std::isfinite(contact.max_stress));
+      const CornerContact contact = corner_contact(
+        force, small_lift, modulus, support_width, width, height);
+      EXPECT_EQ(contact.status, Status::whole_joint_in_contact) << small_lift;
+      EXPECT_EQ(contact.contact_length, height);
+      EXPECT_NEAR(contact.contact_area, 3., 1e-12);
+      EXPECT_NEAR(contact.average_stress, 0.5e6, 1e-12 * 0.5e6);
+      EXPECT_NEAR(contact.max_stress,
+                  small_lift == 0. ? 0.5e6 : 0.66e6,
+                  1e-12 * 0.66e6)
+        << small_lift;
     }
 }
 
-TEST(CornerContact, ShallReportAContactLongerThanTheBlock)
+// At y = y* the triangle of 6.51 just reaches the foot: both regimes give
+// c = H and sigma_max = 2 Q / (b H) = 1 MPa.
+TEST(CornerContact, ShallBeContinuousWhereTheTriangleReachesTheFoot)
 {
-  const CornerContact contact =
-    corner_contact(force, 1e-9, modulus, support_width, width, height);
-  EXPECT_EQ(contact.status, Status::contact_longer_than_block);
-  EXPECT_GT(contact.contact_length, height);
+  const CornerContact whole = corner_contact(
+    force, whole_joint_lift, modulus, support_width, width, height);
+  const CornerContact triangle = corner_contact(force,
+                                                whole_joint_lift * (1. + 1e-9),
+                                                modulus,
+                                                support_width,
+                                                width,
+                                                height);
+  EXPECT_EQ(whole.status, Status::whole_joint_in_contact);
+  EXPECT_EQ(triangle.status, Status::ok);
+  EXPECT_NEAR(whole.max_stress, 1e6, 1e-9 * 1e6);
+  EXPECT_NEAR(triangle.max_stress, 1e6, 1e-8 * 1e6);
+  EXPECT_NEAR(triangle.contact_length, height, 1e-8 * height);
+}
+
+// y < -y*: the joint closes at its foot; no force with y <= 0: nothing
+// touches at floor level. Neither has a floor-level corner contact.
+TEST(CornerContact, ShallReportZeroFloorLiftWhereTheFloorLevelCornerIsOpen)
+{
+  for (const auto &[q, y] : {std::pair<double, double>{force, -1e-3},
+                             std::pair<double, double>{0., 0.}})
+    {
+      const CornerContact contact =
+        corner_contact(q, y, modulus, support_width, width, height);
+      EXPECT_EQ(contact.status, Status::zero_floor_lift);
+      EXPECT_EQ(contact.contact_area, 0.);
+      EXPECT_EQ(contact.max_stress, 0.);
+    }
 }
 
 TEST(CornerContact, ShallGiveZeroStressForZeroForceAndRejectBadInput)

@@ -19,7 +19,7 @@ TEST(Status, ShallDescribeEveryStatusInWordsWithADistinctName)
                                  Status::base_lifts_off,
                                  Status::normal_force_outside_base,
                                  Status::zero_floor_lift,
-                                 Status::contact_longer_than_block};
+                                 Status::whole_joint_in_contact};
   std::set<std::string> names;
   for (const Status status : all)
     {
