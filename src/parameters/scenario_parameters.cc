@@ -107,10 +107,6 @@ namespace FloorBlock::Parameters
                        LoadingParameters        &loading,
                        std::vector<std::string> &warnings)
     {
-      // Relative to the bedding's rise: a lift within 1 % bends the FEM's
-      // bed into the closed forms' floor up to less than the chapter's
-      // quoted digits.
-      constexpr double tolerance = 0.01;
       const bool parabolic = bedding.shape == Geometry::BeddingShape::parabolic;
       const bool follows_bedding =
         uplift_follows_bedding(bedding, loading.uplift_mode);
@@ -155,9 +151,8 @@ namespace FloorBlock::Parameters
           return;
         }
 
-      const double lift = loading.floor_lift;
-      const bool   contradicts =
-        std::abs(lift - rise) > tolerance * std::abs(rise);
+      const double lift        = loading.floor_lift;
+      const bool   contradicts = !lift_matches_rise(lift, rise);
       // A level bed moved up or along itself keeps the closed forms' bed:
       // the motion only drives the slip they describe.
       const bool moves_level_bed =
@@ -292,6 +287,12 @@ namespace FloorBlock::Parameters
     for (const unsigned int from_face : loading.loaded_blocks_from_face)
       blocks.push_back(geometry.n_blocks + 1 - from_face);
     return blocks;
+  }
+
+  bool
+  lift_matches_rise(const double lift, const double rise)
+  {
+    return std::abs(lift - rise) <= 0.01 * std::abs(rise);
   }
 
   bool

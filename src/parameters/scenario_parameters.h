@@ -65,6 +65,15 @@ namespace FloorBlock::Parameters
   };
 
   /**
+   * @brief Whether a floor lift @p lift (m) bends a flat bed into a bedding
+   * that rises by @p rise (m) at the free end: within 1 % of the rise, which
+   * puts the FEM's floor on the closed forms' to less than the chapter's
+   * quoted digits.
+   */
+  bool
+  lift_matches_rise(double lift, double rise);
+
+  /**
    * @brief Reads a scene file (.prm or .json) and applies command-line
    * overrides of the form "Subsection/Entry name=value".
    *

@@ -63,8 +63,7 @@ namespace FloorBlock::Scene
                                                  scene.geometry.block_width);
     if (scene.uplift_follows_bedding())
       {
-        // The 1 % of Parameters' Floor lift check.
-        if (std::abs(loading.floor_lift - rise) > 0.01 * std::abs(rise))
+        if (!Parameters::lift_matches_rise(loading.floor_lift, rise))
           differences.push_back(fmt::format(
             "Loading/Floor lift = {:g} m bends the FEM's flat bed into "
             "another floor than the bedding the closed forms stand the "

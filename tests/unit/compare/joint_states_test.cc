@@ -75,11 +75,11 @@ TEST(JointStates, MechanismsAssumingTheStatesAreNamed)
               {Scene::Mechanism::rotation_no_vertical_slip}));
 
   Contact::IncrementResult slipping = sticking;
-  for (auto &joint : slipping.joints)
-    joint.shear_force =
-      -std::abs(joint.shear_force) / std::abs(joint.shear_force) *
-      joint.normal_force *
-      std::tan((joint.name[0] == 'v' ? 10. : 30.) * M_PI / 180.);
+  for (unsigned int j = 0; j < 3; ++j)
+    slipping.joints[j] = loaded_joint(slipping.joints[j].name,
+                                      slipping.joints[j].normal_force,
+                                      1.,
+                                      10.);
   EXPECT_EQ(Compare::joint_states(slipping, three_block_chain()).holding,
             std::vector<Scene::Mechanism>(
               {Scene::Mechanism::no_rotation,
