@@ -67,10 +67,10 @@ namespace FloorBlock::App
     const std::string msh_path =
       (std::filesystem::path(mesh_folder) / (scene.scene_name + ".msh"))
         .string();
+    const Scene::ContactZoneSizing zones =
+      Scene::closed_form_contact_zones(scene);
     const auto statistics =
-      Geometry::write_gmsh_mesh(description,
-                                msh_path,
-                                Scene::contact_zone_sizes(scene));
+      Geometry::write_gmsh_mesh(description, msh_path, zones.sizes);
 
     dealii::Triangulation<2> triangulation;
     Geometry::read_triangulation(msh_path, triangulation);
@@ -96,6 +96,10 @@ namespace FloorBlock::App
       statistics.wall_time,
       msh_path,
       folder.path_of("mesh.png"));
+    std::cout << Scene::describe(zones, scene.mesh.cells_per_contact_length)
+              << (zones.source == Scene::ContactZoneSource::none ?
+                    " (solve and run size them from a first solve)\n" :
+                    "\n");
     if (scene.geometry.dimension == 3)
       write_extruded_mesh(scene, triangulation, mesh_folder);
     return 0;

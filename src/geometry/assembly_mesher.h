@@ -22,6 +22,16 @@ namespace FloorBlock::Geometry
     unsigned int n_matched_pairs = 0;
     /** Wall time of geometry + meshing + writing. Units: s. */
     double wall_time = 0.0;
+    /**
+     * Where the contact-zone sizes came from (Scene::source_key(); empty for
+     * a mesh not made from a scene), the same in words, and the contact
+     * length (m) they were made for (0 without sizes).
+     */
+    std::string contact_zone_source;
+    std::string contact_zone_sizing;
+    double      contact_zone_length = 0.;
+    /** Wall time of choosing those sizes, a first solve included. Units: s. */
+    double sizing_wall_time = 0.;
   };
 
   /**

@@ -333,9 +333,19 @@ namespace FloorBlock::Output
     if (report.joint_overlap)
       fem["joint_overlap"] = overlap_json(*report.joint_overlap);
     if (report.mesh)
-      fem["mesh"] = {{"n_cells", report.mesh->n_cells},
-                     {"n_nodes", report.mesh->n_nodes},
-                     {"wall_time_s", report.mesh->wall_time}};
+      {
+        const Geometry::MeshStatistics &mesh = *report.mesh;
+        fem["mesh"] = {{"n_cells", mesh.n_cells},
+                       {"n_nodes", mesh.n_nodes},
+                       {"wall_time_s", mesh.wall_time}};
+        // Meshes refined by deal.II from another mesh have no sizing.
+        if (!mesh.contact_zone_source.empty())
+          fem["mesh"].update(
+            {{"contact_zone_sizing", mesh.contact_zone_source},
+             {"contact_zone_sizing_text", mesh.contact_zone_sizing},
+             {"contact_zone_length_m", mesh.contact_zone_length},
+             {"contact_zone_sizing_wall_time_s", mesh.sizing_wall_time}});
+      }
     if (report.rigid)
       describe_rigid_model(*report.rigid, fem);
     if (report.support_load)

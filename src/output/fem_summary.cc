@@ -35,6 +35,8 @@ namespace FloorBlock::Output
                   result.n_dofs,
                   increments,
                   force_balance_text(report.force_balance));
+    if (meshed && !mesh.contact_zone_sizing.empty())
+      text += "  " + mesh.contact_zone_sizing + "\n";
     if (!result.increments.empty() &&
         !result.increments.back().joints.empty() &&
         result.increments.back().joints.front().swept())

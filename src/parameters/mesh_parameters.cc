@@ -58,9 +58,13 @@ namespace FloorBlock::Parameters
         "along both ends of every vertical joint, over 1.5 c from the "
         "corner, where c is the closed-form contact length of the face "
         "joint (Eq. 6.51; the shortest of the mechanisms that give one). "
-        "So the ends of the contact zones sit in cells sized from the scene, "
-        "not from the corner grading alone. 0: no contact-zone sizing "
-        "(also when no mechanism gives a contact length). Units: none.");
+        "Where Eq. 6.51 has no answer (or describes another scene), a 2D "
+        "scene is first solved on its plain mesh and each vertical joint's "
+        "computed contact zone, with c/2 beyond its ends, gets cells of its "
+        "own c / N. So the ends of the contact zones sit in cells sized "
+        "from the scene, not from the corner grading alone; fem.json "
+        "mesh.contact_zone_sizing says which. 0: no contact-zone sizing. "
+        "Units: none.");
     }
 
     /** `run`'s accuracy loop (target, figures, levels, time budget) and

@@ -193,7 +193,8 @@ namespace FloorBlock::Parameters
     std::optional<unsigned int> global_refinements;
     /**
      * Cells across the closed-form estimate of the face joint's contact
-     * length (Scene::contact_zone_sizes()); 0 = no contact-zone sizing.
+     * length (Scene::closed_form_contact_zones(), else a first solve:
+     * Pipeline::contact_zone_sizing()); 0 = no contact-zone sizing.
      */
     unsigned int cells_per_contact_length;
     /**

@@ -10,6 +10,7 @@
 #include <output/contact_area_picture.h>
 #include <pipeline/deformed_view.h>
 #include <pipeline/distributed_swept_mesh.h>
+#include <pipeline/contact_zone_sizing.h>
 #include <pipeline/fem_pipeline.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
@@ -228,12 +229,21 @@ namespace FloorBlock::Pipeline
     // Gmsh writes the mesh itself, so the folder must exist first.
     std::filesystem::create_directories(folder.path_of(""));
     const auto description = Scene::assembly_description(scene);
-    // Contact-zone sizing from the closed forms, then any requests of the
-    // caller (converge --mode remesh); local_size_at() takes the smallest.
-    std::vector<Geometry::LocalSize> sizes = Scene::contact_zone_sizes(scene);
+    // Contact-zone sizing (Eq. 6.51, else a first solve), then any requests
+    // of the caller (converge --mode remesh); local_size_at() takes the
+    // smallest.
+    dealii::Timer                  sizing_timer;
+    const Scene::ContactZoneSizing zones = contact_zone_sizing(scene, folder);
+    const double                   sizing_time = sizing_timer.wall_time();
+    std::vector<Geometry::LocalSize> sizes = zones.sizes;
     sizes.insert(sizes.end(), local_sizes.begin(), local_sizes.end());
     Geometry::MeshStatistics mesh =
       Geometry::write_gmsh_mesh(description, folder.path_of("mesh.msh"), sizes);
+    mesh.contact_zone_source = Scene::source_key(zones.source);
+    mesh.contact_zone_sizing =
+      Scene::describe(zones, scene.mesh.cells_per_contact_length);
+    mesh.contact_zone_length = zones.contact_length;
+    mesh.sizing_wall_time    = sizing_time;
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
     if (const unsigned int n_refinements = Scene::global_refinements(scene))
       {

@@ -53,7 +53,7 @@ namespace FloorBlock::Scene
       scene.joints.push_back(joint);
     };
     for (unsigned int j = 1; j <= settings.n_blocks; ++j)
-      add_joint("vertical " + std::to_string(j),
+      add_joint(vertical_joint_name(j),
                 Ids::vertical_joint_face_side(j),
                 Ids::vertical_joint_free_side(j),
                 settings.vertical_joints);
@@ -91,5 +91,17 @@ namespace FloorBlock::Scene
     scene.uplift = settings.uplift;
     scene.steps  = settings.steps;
     return scene;
+  }
+
+  std::string
+  vertical_joint_name(const unsigned int j)
+  {
+    return "vertical " + std::to_string(j);
+  }
+
+  bool
+  is_vertical_joint(const std::string &name)
+  {
+    return name.rfind("vertical ", 0) == 0;
   }
 } // namespace FloorBlock::Scene

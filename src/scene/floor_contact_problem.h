@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include <contact/contact_problem.h>
 #include <material/elastic_law.h>
 
@@ -68,4 +70,12 @@ namespace FloorBlock::Scene
    */
   Contact::ContactProblem<2>
   make_floor_contact_problem(const FloorProblemSettings &settings);
+
+  /** @brief The name make_floor_contact_problem() gives vertical joint j. */
+  std::string
+  vertical_joint_name(unsigned int j);
+
+  /** @brief Whether @p name is a vertical joint's ("vertical j"). */
+  bool
+  is_vertical_joint(const std::string &name);
 } // namespace FloorBlock::Scene

@@ -1,10 +1,14 @@
 #include <geometry/body_outline.h>
 #include <scene/assembly_inputs.h>
 #include <scene/closed_forms.h>
+#include <scene/floor_contact_problem.h>
 #include <scene/mesh_sizing.h>
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace FloorBlock::Scene
 {
@@ -43,14 +47,59 @@ namespace FloorBlock::Scene
                            size});
         }
     }
+    /**
+     * Points of size @p size every @p size (m) along the joint's nodes from
+     * arc position @p from to @p to, clipped to the joint, each placed by
+     * linear interpolation between the nodes around it.
+     */
+    void
+    add_profile_points(const std::vector<Contact::JointNodeSample> &profile,
+                       const double                                 from,
+                       const double                                 to,
+                       const double                                 size,
+                       std::vector<Geometry::LocalSize>            &sizes)
+    {
+      const double start = std::max(from, profile.front().arc_position);
+      const double end   = std::min(to, profile.back().arc_position);
+      const auto   n_steps =
+        static_cast<unsigned int>(std::ceil((end - start) / size - 1e-9));
+      for (unsigned int k = 0; k <= n_steps; ++k)
+        {
+          const double s = std::min(end, start + k * size);
+          auto         after =
+            std::upper_bound(profile.begin(),
+                             profile.end(),
+                             s,
+                             [](const double value,
+                                const Contact::JointNodeSample &node) {
+                               return value < node.arc_position;
+                             });
+          if (after == profile.end())
+            after = std::prev(profile.end());
+          if (after == profile.begin())
+            after = std::next(profile.begin());
+          const auto  &a = *std::prev(after);
+          const auto  &b = *after;
+          const double span = b.arc_position - a.arc_position;
+          const double t =
+            span > 0. ? std::clamp((s - a.arc_position) / span, 0., 1.) : 0.;
+          sizes.push_back({{a.position[0] + t * (b.position[0] - a.position[0]),
+                            a.position[1] + t * (b.position[1] - a.position[1])},
+                           size});
+        }
+    }
   } // namespace
 
   std::optional<double>
   estimated_contact_length(const Parameters::ScenarioParameters &scene)
   {
+    const ClosedForms closed = evaluate_closed_forms(scene);
+    // Their contact length belongs to another scene: not an estimate of
+    // this one's.
+    if (!closed.scene_differences.empty())
+      return std::nullopt;
     std::optional<double> shortest;
-    for (const MechanismResult &mechanism :
-         evaluate_closed_forms(scene).mechanisms)
+    for (const MechanismResult &mechanism : closed.mechanisms)
       {
         const Analytic::CornerContact &contact = mechanism.contact;
         const bool has_length = Analytic::has_contact_values(contact.status);
@@ -65,8 +114,53 @@ namespace FloorBlock::Scene
     return shortest;
   }
 
-  std::vector<Geometry::LocalSize>
-  contact_zone_sizes(const Parameters::ScenarioParameters &scene)
+  const char *
+  source_key(const ContactZoneSource source)
+  {
+    switch (source)
+      {
+        case ContactZoneSource::not_asked:
+          return "not_asked";
+        case ContactZoneSource::closed_form:
+          return "closed_form";
+        case ContactZoneSource::first_solve:
+          return "first_solve";
+        case ContactZoneSource::none:
+          return "none";
+      }
+    return "none";
+  }
+
+  std::string
+  describe(const ContactZoneSizing &sizing,
+           const unsigned int       cells_per_length)
+  {
+    const auto sized = [&](const char *from) {
+      return fmt::format("contact zones sized from {}: c = {:.1f} mm, "
+                         "cells of c/{}",
+                         from,
+                         sizing.contact_length * 1e3,
+                         cells_per_length);
+    };
+    switch (sizing.source)
+      {
+        case ContactZoneSource::not_asked:
+          return "no contact-zone sizing (Mesh/Cells per contact length "
+                 "= 0)";
+        case ContactZoneSource::closed_form:
+          return sized("Eq. 6.51 (the face joint's closed-form contact "
+                       "length)");
+        case ContactZoneSource::first_solve:
+          return sized("the FEM's first solve on the plain mesh (the "
+                       "shortest computed vertical contact)");
+        case ContactZoneSource::none:
+          return "no contact-zone sizing: " + sizing.reason;
+      }
+    return {};
+  }
+
+  ContactZoneSizing
+  closed_form_contact_zones(const Parameters::ScenarioParameters &scene)
   {
     const unsigned int n_cells = scene.mesh.cells_per_contact_length;
     if (n_cells == 0)
@@ -74,14 +168,20 @@ namespace FloorBlock::Scene
     const std::optional<double> contact_length =
       estimated_contact_length(scene);
     if (!contact_length)
-      return {};
+      return {ContactZoneSource::none,
+              0.,
+              "Eq. 6.51 gives no contact length for this scene",
+              {}};
+    ContactZoneSizing sizing{ContactZoneSource::closed_form,
+                             *contact_length,
+                             {},
+                             {}};
     const double size =
       std::max(*contact_length / n_cells, scene.mesh.corner_size);
     const double reach = contact_zone_reach * *contact_length;
 
     const Geometry::AssemblyOutline outline =
       Geometry::build_outline(assembly_description(scene));
-    std::vector<Geometry::LocalSize> sizes;
     for (const Geometry::JointPair &pair : outline.joint_pairs)
       {
         const Geometry::Segment &side =
@@ -95,9 +195,51 @@ namespace FloorBlock::Scene
                         start_is_upper ? side.end : side.start,
                         reach,
                         size,
-                        sizes);
+                        sizing.sizes);
       }
-    return sizes;
+    return sizing;
+  }
+
+  ContactZoneSizing
+  computed_contact_zones(const Parameters::ScenarioParameters    &scene,
+                         const std::vector<Contact::JointReport> &joints)
+  {
+    const unsigned int n_cells = scene.mesh.cells_per_contact_length;
+    if (n_cells == 0)
+      return {};
+    ContactZoneSizing sizing{ContactZoneSource::first_solve, 0., {}, {}};
+    for (const Contact::JointReport &joint : joints)
+      {
+        const auto &profile = joint.profile;
+        if (profile.size() < 2 || !(joint.closed_length > 0.) ||
+            !is_vertical_joint(joint.name))
+          continue;
+        const auto is_closed = [](const Contact::JointNodeSample &node) {
+          return node.state != Contact::JointState::open;
+        };
+        const auto first = std::find_if(profile.begin(), profile.end(), is_closed);
+        const auto last =
+          std::find_if(profile.rbegin(), profile.rend(), is_closed);
+        if (first == profile.end())
+          continue;
+        const double c    = joint.closed_length;
+        const double size = std::max(c / n_cells, scene.mesh.corner_size);
+        const double margin = (contact_zone_reach - 1.) * c;
+        add_profile_points(profile,
+                           first->arc_position - margin,
+                           last->arc_position + margin,
+                           size,
+                           sizing.sizes);
+        if (sizing.contact_length == 0. || c < sizing.contact_length)
+          sizing.contact_length = c;
+      }
+    if (sizing.sizes.empty())
+      return {ContactZoneSource::none,
+              0.,
+              "Eq. 6.51 gives no contact length for this scene and the "
+              "first solve closed no vertical joint",
+              {}};
+    return sizing;
   }
 
   double

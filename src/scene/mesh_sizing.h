@@ -1,9 +1,11 @@
 #pragma once
 
+#include <contact/results.h>
 #include <geometry/local_size_field.h>
 #include <parameters/scenario_parameters.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 /**
@@ -52,26 +54,58 @@ namespace FloorBlock::Scene
    * How far along a vertical joint, from each end, the contact-zone cells
    * reach, in estimated contact lengths c. More than 1 because Eq. 6.51 is
    * an estimate: on the default scene c = 459 mm against 348 mm computed
-   * (+32 %); 1.5 also covers an estimate a third too short.
+   * (+32 %); 1.5 also covers an estimate a third too short. A zone the
+   * FEM computed gets the same half c beyond each of its ends.
    */
   constexpr double contact_zone_reach = 1.5;
 
   /**
    * @brief The closed-form contact length of the face joint (m), Eq. 6.51:
    * the shortest of the mechanisms whose corner contact has a length
-   * (status ok, or longer than the block, then capped at the block
-   * height); empty when none has one.
+   * (capped at the block height); empty when none has one or when the
+   * closed forms describe another scene (ClosedForms::scene_differences).
    */
   std::optional<double>
   estimated_contact_length(const Parameters::ScenarioParameters &scene);
+
+  /** Where the contact-zone sizes of a mesh come from. */
+  enum class ContactZoneSource
+  {
+    not_asked,   ///< Mesh/Cells per contact length = 0
+    closed_form, ///< Eq. 6.51's contact length (estimated_contact_length())
+    first_solve, ///< the zones the FEM computed on the plain mesh
+    none         ///< asked for, but neither gave a contact zone
+  };
+
+  /** @brief The contact-zone sizes of one mesh and where they came from. */
+  struct ContactZoneSizing
+  {
+    ContactZoneSource source = ContactZoneSource::not_asked;
+    /** The contact length the cells are sized from (m): Eq. 6.51's, or the
+     * shortest the first solve computed; 0 without sizes. */
+    double contact_length = 0.;
+    /** Why there are no sizes (source none), in words. */
+    std::string reason;
+    std::vector<Geometry::LocalSize> sizes;
+  };
+
+  /** @brief "not_asked", "closed_form", "first_solve" or "none". */
+  const char *
+  source_key(ContactZoneSource source);
+
+  /** @brief One line for the terminal and fem.json: where the sizes came
+   * from, the contact length and the cell size. */
+  std::string
+  describe(const ContactZoneSizing &sizing, unsigned int cells_per_length);
 
   /**
    * @brief Size requests that put the ends of the contact zones in cells
    * sized from the scene: along both ends of every vertical joint, over
    * contact_zone_reach c from the end, points a cell apart asking for
    * cells of c / Mesh/Cells per contact length (not below Mesh/Corner
-   * size); beyond them the sizes grow at Mesh/Growth rate. Empty when the
-   * parameter is 0 or estimated_contact_length() has no answer.
+   * size); beyond them the sizes grow at Mesh/Growth rate. No sizes (source
+   * none) when estimated_contact_length() has no answer: the pipeline then
+   * sizes from a first solve (computed_contact_zones()).
    *
    * Why: the compliant joints' contact zone ends where the relative
    * rotation of the blocks closes the gap, and the corner grading alone
@@ -83,6 +117,24 @@ namespace FloorBlock::Scene
    * largest force, so its zone is the shortest, and longer zones are then
    * over-resolved, never under-resolved.
    */
-  std::vector<Geometry::LocalSize>
-  contact_zone_sizes(const Parameters::ScenarioParameters &scene);
+  ContactZoneSizing
+  closed_form_contact_zones(const Parameters::ScenarioParameters &scene);
+
+  /**
+   * @brief Size requests from the contact zones a solve computed, for the
+   * scenes Eq. 6.51 has no answer for (the joint closes at its foot, no
+   * mechanism admissible, another scene than the closed forms').
+   *
+   * On every vertical joint of @p joints (is_vertical_joint())
+   * with a closed part, from its first to its last closed node
+   * (JointReport::profile) and half its contact length c beyond either
+   * end, within the joint: points a cell apart asking for cells of
+   * c / Mesh/Cells per contact length (not below Mesh/Corner size), each
+   * joint from its own c, since here the zones may sit at either end of
+   * the joint and need not share the face joint's length. Source none when
+   * no vertical joint is closed.
+   */
+  ContactZoneSizing
+  computed_contact_zones(const Parameters::ScenarioParameters   &scene,
+                         const std::vector<Contact::JointReport> &joints);
 } // namespace FloorBlock::Scene

@@ -1,5 +1,6 @@
-// Scene::contact_zone_sizes: cells sized from Eq. 6.51's contact length
-// along the upper end of every vertical joint.
+// Scene::closed_form_contact_zones: cells sized from Eq. 6.51's contact
+// length along the upper end of every vertical joint;
+// Scene::computed_contact_zones: from the zones a solve computed.
 
 #include <analytic/corner_contact.h>
 #include <scene/closed_forms.h>
@@ -45,7 +46,10 @@ TEST(ContactZoneSizes, CoverTheUpperEndOfEveryVerticalJoint)
   const auto   scene = default_scene();
   const double c     = *Scene::estimated_contact_length(scene);
   const double size  = c / scene.mesh.cells_per_contact_length;
-  const auto   sizes = Scene::contact_zone_sizes(scene);
+  const auto   zones = Scene::closed_form_contact_zones(scene);
+  EXPECT_EQ(zones.source, Scene::ContactZoneSource::closed_form);
+  EXPECT_DOUBLE_EQ(zones.contact_length, c);
+  const auto &sizes = zones.sizes;
   ASSERT_FALSE(sizes.empty());
   std::map<long, std::pair<double, double>> extent; // x -> lowest, highest y
   for (const auto &local : sizes)
@@ -69,13 +73,97 @@ TEST(ContactZoneSizes, CoverTheUpperEndOfEveryVerticalJoint)
 TEST(ContactZoneSizes, NeverFinerThanTheCornerSize)
 {
   const auto scene = default_scene({"Mesh/Cells per contact length=100"});
-  for (const auto &local : Scene::contact_zone_sizes(scene))
+  const auto zones = Scene::closed_form_contact_zones(scene);
+  ASSERT_FALSE(zones.sizes.empty());
+  for (const auto &local : zones.sizes)
     EXPECT_DOUBLE_EQ(local.size, scene.mesh.corner_size);
 }
 
 TEST(ContactZoneSizes, ZeroCellsTurnsTheSizingOff)
 {
-  EXPECT_TRUE(Scene::contact_zone_sizes(
-                default_scene({"Mesh/Cells per contact length=0"}))
-                .empty());
+  const auto zones = Scene::closed_form_contact_zones(
+    default_scene({"Mesh/Cells per contact length=0"}));
+  EXPECT_EQ(zones.source, Scene::ContactZoneSource::not_asked);
+  EXPECT_TRUE(zones.sizes.empty());
+}
+
+// A bed dipping 5 deg away from the face: the face joint closes at its foot
+// (y < -y*) and no mechanism gives Eq. 6.51 a contact length, so the
+// closed forms give no sizes and say why.
+TEST(ContactZoneSizes, NoneWhereEqSixFiftyOneHasNoAnswer)
+{
+  const auto scene = default_scene(
+    {"Bedding/Shape=planar", "Bedding/Inclination=-5"});
+  EXPECT_FALSE(Scene::estimated_contact_length(scene).has_value());
+  const auto zones = Scene::closed_form_contact_zones(scene);
+  EXPECT_EQ(zones.source, Scene::ContactZoneSource::none);
+  EXPECT_TRUE(zones.sizes.empty());
+  EXPECT_NE(zones.reason.find("Eq. 6.51"), std::string::npos);
+}
+
+namespace
+{
+  /** A vertical joint at x from y = 0 to 2 m, nodes every 0.1 m, closed
+   * from y = 0 to @p closed_to. */
+  Contact::JointReport
+  vertical_joint(const double x, const double closed_to)
+  {
+    Contact::JointReport joint;
+    joint.name = "vertical 1";
+    for (unsigned int k = 0; k <= 20; ++k)
+      {
+        Contact::JointNodeSample node;
+        node.arc_position = 0.1 * k;
+        node.position     = dealii::Point<2>(x, 0.1 * k);
+        node.state        = node.arc_position <= closed_to + 1e-12 ?
+                              Contact::JointState::stick :
+                              Contact::JointState::open;
+        joint.profile.push_back(node);
+      }
+    joint.closed_length = closed_to;
+    return joint;
+  }
+} // namespace
+
+// Each computed zone gets cells of its own c / N over the zone and c/2
+// beyond its open end, clipped at the joint's end; open joints and other
+// joints than the vertical ones get none; the reported length is the shortest.
+TEST(ContactZoneSizes, FollowTheZonesASolveComputed)
+{
+  const auto scene = default_scene();
+  const unsigned int n = scene.mesh.cells_per_contact_length;
+  Contact::JointReport open = vertical_joint(3., -1.);
+  open.closed_length        = 0.;
+  Contact::JointReport bedding = vertical_joint(4., 0.4);
+  bedding.name                 = "bedding 1";
+  const auto zones = Scene::computed_contact_zones(
+    scene, {vertical_joint(0., 0.4), vertical_joint(1., 0.8), open, bedding});
+  EXPECT_EQ(zones.source, Scene::ContactZoneSource::first_solve);
+  EXPECT_DOUBLE_EQ(zones.contact_length, 0.4);
+  std::map<long, std::pair<double, double>> extent; // x -> lowest, highest y
+  for (const auto &local : zones.sizes)
+    {
+      const long x = std::lround(local.position.x);
+      ASSERT_TRUE(x == 0 || x == 1) << "only the closed vertical joints";
+      EXPECT_DOUBLE_EQ(local.size, (x == 0 ? 0.4 : 0.8) / n);
+      auto [where, fresh] =
+        extent.try_emplace(x, local.position.y, local.position.y);
+      where->second.first  = std::min(where->second.first, local.position.y);
+      where->second.second = std::max(where->second.second, local.position.y);
+    }
+  ASSERT_EQ(extent.size(), 2u);
+  EXPECT_DOUBLE_EQ(extent[0].first, 0.);
+  EXPECT_NEAR(extent[0].second, 0.4 + 0.2, 1e-12);
+  EXPECT_DOUBLE_EQ(extent[1].first, 0.);
+  EXPECT_NEAR(extent[1].second, 0.8 + 0.4, 1e-12);
+}
+
+TEST(ContactZoneSizes, NoneWhereTheSolveClosedNoVerticalJoint)
+{
+  Contact::JointReport open = vertical_joint(0., -1.);
+  open.closed_length        = 0.;
+  const auto zones = Scene::computed_contact_zones(default_scene(), {open});
+  EXPECT_EQ(zones.source, Scene::ContactZoneSource::none);
+  EXPECT_TRUE(zones.sizes.empty());
+  EXPECT_FALSE(zones.reason.empty());
 }
