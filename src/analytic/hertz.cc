@@ -25,4 +25,16 @@ namespace FloorBlock::Analytic
       return HertzLineContact{Status::invalid_input, 0., 0.};
     return contact;
   }
+
+  HertzAxisStress
+  hertz_axis_stress(const double peak_pressure,
+                    const double half_width,
+                    const double depth)
+  {
+    const double a      = half_width;
+    const double z      = depth;
+    const double radius = std::sqrt(a * a + z * z);
+    return {-peak_pressure / a * ((a * a + 2. * z * z) / radius - 2. * z),
+            -peak_pressure * a / radius};
+  }
 } // namespace FloorBlock::Analytic

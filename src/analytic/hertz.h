@@ -40,4 +40,24 @@ namespace FloorBlock::Analytic
   hertz_line_contact(const double line_load,
                      const double radius,
                      const double contact_modulus);
+
+  /** @brief In-plane stresses on the axis of a Hertz line contact (Pa,
+   * compression negative). */
+  struct HertzAxisStress
+  {
+    double along_surface = 0.; ///< sigma_x, parallel to the surface
+    double into_body     = 0.; ///< sigma_z, normal to the surface
+  };
+
+  /**
+   * @brief The stresses at depth z below the centre of a Hertz line
+   * contact (Johnson 1985, eq. 4.75, frictionless):
+   * \f[ \sigma_x = -\frac{p_0}{a}\left(\frac{a^2 + 2z^2}{\sqrt{a^2+z^2}}
+   *     - 2z\right),\qquad \sigma_z = -\frac{p_0\,a}{\sqrt{a^2+z^2}}; \f]
+   * both are principal stresses there (no shear on the axis). At z = 0 both
+   * equal -p0; sigma_x decays faster, so their difference peaks at z = 0.78a.
+   * @param[in] peak_pressure p0 (Pa); half_width a (m), > 0; depth z (m), >= 0.
+   */
+  HertzAxisStress
+  hertz_axis_stress(double peak_pressure, double half_width, double depth);
 } // namespace FloorBlock::Analytic

@@ -71,3 +71,26 @@ TEST(Hertz, ShallReportInvalidInputInsteadOfInfOrNaN)
       EXPECT_EQ(contact.peak_pressure, 0.);
     }
 }
+
+// Eq. 4.75 on the axis: both stresses -p0 at the surface, and the largest
+// shear (sigma_x - sigma_z)/2 = 0.30 p0 at z = 0.78 a (Johnson 1985, p. 101).
+TEST(HertzAxisStress, SurfaceValueAndLargestShear)
+{
+  const double p0 = 1e6, a = 0.02;
+  const auto   surface = hertz_axis_stress(p0, a, 0.);
+  EXPECT_NEAR(surface.along_surface, -p0, 1e-9);
+  EXPECT_NEAR(surface.into_body, -p0, 1e-9);
+  double largest = 0., where = 0.;
+  for (double z = 0.; z <= 2. * a; z += 1e-4 * a)
+    {
+      const auto   stress = hertz_axis_stress(p0, a, z);
+      const double shear  = 0.5 * (stress.along_surface - stress.into_body);
+      if (shear > largest)
+        {
+          largest = shear;
+          where   = z;
+        }
+    }
+  EXPECT_NEAR(largest / p0, 0.30, 0.005);
+  EXPECT_NEAR(where / a, 0.78, 0.01); // 0.786 a to three digits
+}
