@@ -27,7 +27,10 @@ namespace FloorBlock::Output
               {"A_m2", contact.contact_area},
               {"contact_length_m", contact.contact_length},
               {"sigma_avg_Pa", contact.average_stress},
-              {"sigma_max_Pa", contact.max_stress}};
+              {"sigma_max_Pa", contact.max_stress},
+              {"safety_factor_eq_6_53",
+               entry.floor_safety_factor ? json(*entry.floor_safety_factor) :
+                                           json(nullptr)}};
     }
 
     std::vector<double>
@@ -86,6 +89,11 @@ namespace FloorBlock::Output
               {"H_m", chain.block_height},
               {"phi_h_rad", chain.bedding_friction},
               {"phi_v_rad", chain.vertical_friction}}},
+            {"floor_strength_Pa", closed_forms.floor_strength},
+            {"floor_strength_text",
+             "the rock mass's uniaxial compressive strength sigma_ci s^a "
+             "(Strength/); safety_factor_eq_6_53 = floor_strength_Pa / "
+             "sigma_max_Pa, empty where Eq. 6.53 has no answer"},
             {"cases", cases}};
   }
 
@@ -185,6 +193,15 @@ namespace FloorBlock::Output
           contact.average_stress / MPa,
           contact.max_stress / MPa,
           Analytic::to_string(contact.status));
+        if (entry.floor_safety_factor)
+          text += fmt::format(
+            "  floor at the face: FS = sigma_c / sigma_max = {:.2f} MPa / "
+            "{:.2f} MPa = {:.2f} (the chapter's route; {})\n",
+            closed_forms.floor_strength / MPa,
+            contact.max_stress / MPa,
+            *entry.floor_safety_factor,
+            *entry.floor_safety_factor < 1. ? "the corner fails" :
+                                              "the corner holds");
       }
     const auto &heights = closed_forms.no_rotation_heights;
     if (!heights.centroid_height.empty())

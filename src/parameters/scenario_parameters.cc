@@ -18,6 +18,7 @@ namespace FloorBlock::Parameters
     GeometryParameters::declare_parameters(prm);
     BeddingParameters::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm);
+    StrengthParameters::declare_parameters(prm);
     JointParameters::declare_parameters(prm);
     LoadingParameters::declare_parameters(prm);
     MeshParameters::declare_parameters(prm);
@@ -225,6 +226,7 @@ namespace FloorBlock::Parameters
     geometry.parse_parameters(prm);
     bedding.parse_parameters(prm);
     material.parse_parameters(prm);
+    strength.parse_parameters(prm);
     joints.parse_parameters(prm);
     loading.parse_parameters(prm);
     mesh.parse_parameters(prm);

@@ -20,6 +20,7 @@ namespace FloorBlock::Parameters
     GeometryParameters geometry;
     BeddingParameters  bedding;
     MaterialParameters material;
+    StrengthParameters strength;
     JointParameters    joints;
     LoadingParameters  loading;
     MeshParameters     mesh;

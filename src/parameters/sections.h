@@ -4,6 +4,7 @@
 #include <geometry/bedding_kinds.h>
 #include <geometry/end_faces.h>
 #include <solver/solver_kinds.h>
+#include <strength/hoek_brown.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -89,6 +90,27 @@ namespace FloorBlock::Parameters
     /** nu = (3K-2G)/(2(3K+G)). */
     double
     poissons_ratio() const;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /** Subsection "Strength": the rock's strength, SI. */
+  struct StrengthParameters
+  {
+    double intact_ucs;         ///< sigma_ci (Pa)
+    double m_i;                ///< Hoek-Brown m_i of the intact rock (-)
+    double gsi;                ///< Geological Strength Index (-)
+    double disturbance;        ///< D (-)
+    double tensile_strength;   ///< sigma_t of the intact rock (Pa)
+    double fracture_toughness; ///< K_Ic (Pa m^0.5)
+    double critical_distance;  ///< L (m)
+
+    /** @brief m_b, s and a of the rock mass (2002 edition). */
+    Strength::HoekBrownConstants
+    hoek_brown() const;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

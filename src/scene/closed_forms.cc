@@ -1,5 +1,6 @@
 #include <scene/analytic_inputs.h>
 #include <scene/closed_forms.h>
+#include <strength/hoek_brown.h>
 
 #include <fmt/format.h>
 
@@ -91,6 +92,8 @@ namespace FloorBlock::Scene
     result.support_width  = scene.geometry.support_width;
     result.youngs_modulus = scene.material.youngs_modulus();
     result.floor_lift     = face_joint_floor_lift(scene, result.chain);
+    result.floor_strength = Strength::uniaxial_compressive_strength(
+      scene.strength.intact_ucs, scene.strength.hoek_brown());
 
     for (const Mechanism mechanism : {Mechanism::no_rotation,
                                       Mechanism::rotation_no_vertical_slip,
@@ -99,7 +102,8 @@ namespace FloorBlock::Scene
         MechanismResult entry{mechanism,
                               solve(mechanism, result.chain),
                               0.,
-                              {}};
+                              {},
+                              std::nullopt};
         if (!entry.forces.lateral_force.empty())
           {
             entry.face_force_over_width =
@@ -114,6 +118,13 @@ namespace FloorBlock::Scene
           }
         else
           entry.contact.status = entry.forces.status;
+        const bool has_stress =
+          entry.forces.status == Analytic::Status::ok &&
+          Analytic::has_contact_values(entry.contact.status) &&
+          entry.contact.max_stress > 0.;
+        if (has_stress)
+          entry.floor_safety_factor =
+            result.floor_strength / entry.contact.max_stress;
         result.mechanisms.push_back(entry);
       }
 

@@ -3,6 +3,7 @@
 #include <analytic/analytic.h>
 #include <parameters/scenario_parameters.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,12 @@ namespace FloorBlock::Scene
     /// Q_n over the support width b (N): the Q of Eq. 6.51; 0 if no answer.
     double                  face_force_over_width = 0.;
     Analytic::CornerContact contact; ///< Eqs. 6.51-6.53 at the face joint
+    /**
+     * The chapter's route to the floor's safety factor (section 6.7):
+     * ClosedForms::floor_strength over Eq. 6.53's sigma_max at the face
+     * joint; empty where the mechanism or Eqs. 6.51-6.53 give no answer.
+     */
+    std::optional<double> floor_safety_factor;
   };
 
   /** Every closed form of the chapter for one scene. */
@@ -38,6 +45,13 @@ namespace FloorBlock::Scene
     double                       support_width;  ///< b (m)
     double                       youngs_modulus; ///< E (Pa)
     double                       floor_lift;     ///< y of Eq. 6.51 (m)
+    /**
+     * The rock mass's uniaxial compressive strength sigma_ci s^a (Pa,
+     * Strength/): the Hoek-Brown strength at sigma_3 = 0, the stress state
+     * of the floor-level corner, a free surface, that Eq. 6.53's sigma_max
+     * loads along the joint.
+     */
+    double floor_strength = 0.;
     std::vector<MechanismResult> mechanisms;
     /// Centroid heights and rotation criterion of the no-rotation case.
     Analytic::CentroidHeights no_rotation_heights;
