@@ -71,16 +71,37 @@ namespace FloorBlock::Pipeline
 
       const Verification::HertzResult result =
         Verification::run_hertz_verification(settings);
-      return {{{"contact_half_width",
-                quantity(result.half_width_computed,
-                         result.half_width_exact,
-                         Verification::hertz_half_width_tolerance)},
-               {"peak_pressure",
-                quantity(result.peak_pressure_computed,
-                         result.peak_pressure_exact,
-                         Verification::hertz_peak_pressure_tolerance)}},
-              {{"contact_cell_size_m", result.contact_cell_size}},
-              {{"n_dofs", result.n_dofs}}};
+      Output::VerificationResult checked{
+        {{"contact_half_width",
+          quantity(result.half_width_computed,
+                   result.half_width_exact,
+                   Verification::hertz_half_width_tolerance)},
+         {"peak_pressure",
+          quantity(result.peak_pressure_computed,
+                   result.peak_pressure_exact,
+                   Verification::hertz_peak_pressure_tolerance)}},
+        {{"contact_cell_size_m", result.contact_cell_size}},
+        {{"n_dofs", result.n_dofs}}};
+      // Depths a and 2a: "sigma_x_at_1a", "sigma_z_at_2a", each error
+      // relative to |sigma_z| there (HertzAxisCheck::stress_scale()).
+      for (const Verification::HertzAxisCheck &axis : result.axis)
+        {
+          const std::string depth = fmt::format(
+            "{:.0f}a", axis.depth / result.half_width_exact);
+          checked.checks.emplace(
+            "sigma_x_at_" + depth,
+            scaled_quantity(axis.sigma_x_computed,
+                            axis.sigma_x_exact,
+                            axis.stress_scale(),
+                            Verification::hertz_axis_stress_tolerance));
+          checked.checks.emplace(
+            "sigma_z_at_" + depth,
+            scaled_quantity(axis.sigma_z_computed,
+                            axis.sigma_z_exact,
+                            axis.stress_scale(),
+                            Verification::hertz_axis_stress_tolerance));
+        }
+      return checked;
     }
 
     Output::VerificationResult

@@ -1,6 +1,7 @@
 #include <analytic/hertz.h>
 #include <common/input_error.h>
 #include <contact/contact_solver.h>
+#include <fem/point_stress.h>
 #include <verification/hertz_verification.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -22,9 +23,9 @@ namespace FloorBlock::Verification
     /**
      * Cells finer than the contact cell size h0 = a / N cover the disc of
      * this many half-widths around the contact point, so that both ends
-     * of the zone lie in cells of size h0.
+     * of the zone and the axis stresses down to 2a lie in cells of size h0.
      */
-    constexpr double fine_zone_half_widths = 1.2;
+    constexpr double fine_zone_half_widths = 2.1;
     /**
      * Beyond that disc the cell size grows by this fraction of the
      * distance, h = h0 + g d. A refined band of fixed width instead (up to
@@ -172,6 +173,30 @@ namespace FloorBlock::Verification
         first_open = std::min(first_open, sample.position[0]);
     result.last_closed_position = last_closed;
     result.contact_cell_size    = first_open - last_closed;
+
+    // The axis is the symmetry plane x = 0, depth z = y. A depth on a cell
+    // face (a and 2a are, on this mesh) takes the mean of the two cells
+    // that share it: the FE stress jumps there, and the mean is the
+    // face's second-order value.
+    const double a = result.half_width_exact;
+    for (const double depth : {a, 2. * a})
+      {
+        const double                  offset = 1e-9 * depth;
+        const std::vector<Fem::PointStress> stresses =
+          Fem::stresses_at_points(solver.space(),
+                                  scene.model,
+                                  solver.solution(),
+                                  {dealii::Point<2>(0., depth - offset),
+                                   dealii::Point<2>(0., depth + offset)});
+        const Analytic::HertzAxisStress exact =
+          Analytic::hertz_axis_stress(result.peak_pressure_exact, a, depth);
+        result.axis.push_back(
+          {depth,
+           exact.along_surface,
+           exact.into_body,
+           0.5 * (stresses[0].in_plane[0][0] + stresses[1].in_plane[0][0]),
+           0.5 * (stresses[0].in_plane[1][1] + stresses[1].in_plane[1][1])});
+      }
     return result;
   }
 } // namespace FloorBlock::Verification
