@@ -5,6 +5,8 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <cmath>
+
 namespace FloorBlock::Fem
 {
   std::vector<PointStress>
@@ -35,7 +37,9 @@ namespace FloorBlock::Fem
         const Material::ElasticLaw<2> &law = model.laws.at(cell->material_id());
         const dealii::SymmetricTensor<2, 2> strain =
           dealii::symmetrize(gradient[0]);
-        result.push_back({law.stress(strain), law.out_of_plane_stress(strain)});
+        result.push_back({law.stress(strain),
+                          law.out_of_plane_stress(strain),
+                          cell->diameter() / std::sqrt(2.)});
       }
     return result;
   }

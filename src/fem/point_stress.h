@@ -16,6 +16,8 @@ namespace FloorBlock::Fem
   {
     dealii::SymmetricTensor<2, 2> in_plane;
     double                        out_of_plane = 0.; ///< sigma_zz
+    /** Size of the cell the point lies in, diameter / sqrt(2) (m). */
+    double cell_size = 0.;
   };
 
   /**

@@ -1,5 +1,6 @@
 #include <compare/joint_name.h>
 #include <output/fem_report.h>
+#include <output/floor_safety_report.h>
 #include <output/numbering_note.h>
 
 #include <fmt/format.h>
@@ -346,6 +347,8 @@ namespace FloorBlock::Output
              {"contact_zone_length_m", mesh.contact_zone_length},
              {"contact_zone_sizing_wall_time_s", mesh.sizing_wall_time}});
       }
+    if (!report.corner_safety.empty())
+      fem["floor_safety"] = floor_safety_json(report.corner_safety);
     if (report.rigid)
       describe_rigid_model(*report.rigid, fem);
     if (report.support_load)

@@ -3,6 +3,7 @@
 #include <compare/load_check.h>
 #include <contact/results.h>
 #include <geometry/assembly_mesher.h>
+#include <safety/corner_safety.h>
 
 #include <nlohmann/json.hpp>
 
@@ -109,6 +110,9 @@ namespace FloorBlock::Output
     std::optional<Geometry::MeshStatistics> mesh;          ///< elastic FEM only
     std::optional<RigidModelNote>           rigid;        ///< rigid blocks only
     std::optional<SweptSupportLoad>         support_load; ///< 3D scenes only
+    /** The floor's safety factor at every floor-level block corner
+     * (Safety::corner_safety()); 2D elastic FEM only, else empty. */
+    std::vector<Safety::CornerSafety> corner_safety;
 
     bool
     converged() const

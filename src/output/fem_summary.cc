@@ -1,5 +1,6 @@
 #include <common/units.h>
 #include <output/fem_summary.h>
+#include <output/floor_safety_report.h>
 
 #include <fmt/format.h>
 
@@ -68,6 +69,7 @@ namespace FloorBlock::Output
                            times.empty() ? "" : ", ",
                            section,
                            seconds);
+    text += floor_safety_text(report.corner_safety);
     text += "  " + times + "\n";
     if (report.joint_overlap && report.joint_overlap->large)
       text += "  warning: " + report.joint_overlap->text + "\n";

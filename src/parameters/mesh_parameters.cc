@@ -51,6 +51,17 @@ namespace FloorBlock::Parameters
         "corner fillet alone limits the contact concentration "
         "(src/scene/mesh_sizing.h). Units: none.");
       prm.declare_entry(
+        "Cells per critical distance",
+        "0",
+        Integer(0, 64),
+        "Critical-distance sizing: cells of size L / N (Strength/Critical "
+        "distance; not below 1e-3 of the smaller block side) along the "
+        "bisectors of both top corners of every vertical joint, out to 1.5 "
+        "L, so that the floor safety factor's stresses at L/2 and over L "
+        "(src/safety/) are read from cells smaller than L. 0: none; the "
+        "safety factor is then reported as unresolved wherever the corner "
+        "cells exceed L/4. Units: none.");
+      prm.declare_entry(
         "Cells per contact length",
         "8",
         Integer(0, 100),
@@ -147,6 +158,7 @@ namespace FloorBlock::Parameters
     growth_rate                   = prm.get_double("Growth rate");
     matching_joints               = prm.get_bool("Matching joints");
     cells_per_contact_length      = prm.get_integer("Cells per contact length");
+    cells_per_critical_distance   = prm.get_integer("Cells per critical distance");
     const std::string refinements = prm.get("Global refinements");
     global_refinements            = refinements == "auto" ?
                                       std::nullopt :

@@ -219,6 +219,9 @@ namespace FloorBlock::Parameters
      * Pipeline::contact_zone_sizing()); 0 = no contact-zone sizing.
      */
     unsigned int cells_per_contact_length;
+    /** Cells across Strength/Critical distance L at the floor-level block
+     * corners (Scene::critical_distance_sizes()); 0 = none. */
+    unsigned int cells_per_critical_distance;
     /**
      * `run` refines adaptively until the estimated relative error of each
      * target figure of the face joint is at most this (1 = 100 %).

@@ -12,6 +12,7 @@
 #include <pipeline/distributed_swept_mesh.h>
 #include <pipeline/contact_zone_sizing.h>
 #include <pipeline/fem_pipeline.h>
+#include <output/floor_safety_report.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
 #include <scene/assembly_inputs.h>
@@ -130,7 +131,13 @@ namespace FloorBlock::Pipeline
           outcome.result = failure.partial_result;
         }
       after_solve(solver);
+      if constexpr (dim == 2)
+        if (!outcome.result.increments.empty())
+          outcome.report.corner_safety = Safety::corner_safety(
+            scene, solver.space(), problem.model, solver.solution());
 
+      std::vector<Safety::CornerSafety> corner_safety =
+        std::move(outcome.report.corner_safety);
       outcome.report =
         make_fem_report(outcome.result,
                         scene,
@@ -144,6 +151,7 @@ namespace FloorBlock::Pipeline
       outcome.report.joint_overlap = overlap_check(outcome.result, scene);
       outcome.report.mesh          = outcome.mesh;
       outcome.report.support_load  = support_load;
+      outcome.report.corner_safety = std::move(corner_safety);
       write_fem_files(outcome, folder);
       return outcome;
     }
@@ -236,6 +244,9 @@ namespace FloorBlock::Pipeline
     const Scene::ContactZoneSizing zones = contact_zone_sizing(scene, folder);
     const double                   sizing_time = sizing_timer.wall_time();
     std::vector<Geometry::LocalSize> sizes = zones.sizes;
+    const std::vector<Geometry::LocalSize> corners =
+      Scene::critical_distance_sizes(scene);
+    sizes.insert(sizes.end(), corners.begin(), corners.end());
     sizes.insert(sizes.end(), local_sizes.begin(), local_sizes.end());
     Geometry::MeshStatistics mesh =
       Geometry::write_gmsh_mesh(description, folder.path_of("mesh.msh"), sizes);
@@ -409,5 +420,12 @@ namespace FloorBlock::Pipeline
                                     outcome.report.support_width));
     folder.write("joint_profiles.csv",
                  Output::joint_profiles_csv(outcome.result));
+    // Only where the mesh resolves the critical distance: elsewhere the
+    // stresses along the paths are single cells' values.
+    const auto &corners = outcome.report.corner_safety;
+    if (!corners.empty() && Safety::governing_corner(corners).resolved())
+      folder.write("floor_safety_paths.csv",
+                   Output::floor_safety_paths_csv(
+                     outcome.report.corner_safety));
   }
 } // namespace FloorBlock::Pipeline

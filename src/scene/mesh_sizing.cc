@@ -1,3 +1,4 @@
+#include <geometry/assembly_description.h>
 #include <geometry/body_outline.h>
 #include <scene/assembly_inputs.h>
 #include <scene/closed_forms.h>
@@ -265,5 +266,42 @@ namespace FloorBlock::Scene
              radius * (1. + 1e-9))
       ++n_halvings;
     return n_halvings;
+  }
+
+  std::vector<Geometry::LocalSize>
+  critical_distance_sizes(const Parameters::ScenarioParameters &scene)
+  {
+    const unsigned int n_cells = scene.mesh.cells_per_critical_distance;
+    if (n_cells == 0)
+      return {};
+    const double L    = scene.strength.critical_distance;
+    const double size = std::max(
+      L / n_cells,
+      Geometry::min_relative_corner_size *
+        std::min(scene.geometry.block_width, scene.geometry.block_height));
+    const double r = scene.geometry.corner_rounding_radius;
+
+    const Geometry::AssemblyOutline outline =
+      Geometry::build_outline(assembly_description(scene));
+    std::vector<Geometry::LocalSize> sizes;
+    for (const Geometry::JointPair &pair : outline.joint_pairs)
+      {
+        const Geometry::Segment &side =
+          outline.bodies[pair.master.body].segments[pair.master.segment];
+        if (!is_vertical_line(side))
+          continue;
+        // The sharp corner: the joint line at the blocks' top.
+        const Geometry::Point2 upper =
+          side.start.y > side.end.y ? side.start : side.end;
+        const Geometry::Point2 corner{upper.x, upper.y + r};
+        for (const double direction : {+1., -1.})
+          add_zone_points(corner,
+                          {corner.x + direction * 2. * L,
+                           corner.y - 2. * L},
+                          critical_distance_reach * L + r,
+                          size,
+                          sizes);
+      }
+    return sizes;
   }
 } // namespace FloorBlock::Scene

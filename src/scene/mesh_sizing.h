@@ -137,4 +137,20 @@ namespace FloorBlock::Scene
   ContactZoneSizing
   computed_contact_zones(const Parameters::ScenarioParameters   &scene,
                          const std::vector<Contact::JointReport> &joints);
+
+  /** How far along each corner's bisector the critical-distance cells
+   * reach, in critical distances L: the line method reads the stress over
+   * L, and a half L beyond keeps the grading out of it. */
+  constexpr double critical_distance_reach = 1.5;
+
+  /**
+   * @brief Size requests for the floor safety factor: cells of L / N
+   * (Strength/Critical distance L, N = Mesh/Cells per critical distance,
+   * not below Geometry::min_relative_corner_size of the smaller block
+   * side) along the inward bisectors of both top corners of every
+   * vertical joint, from the corner out to critical_distance_reach L: the
+   * paths src/safety/ reads the stresses along. Empty when N = 0.
+   */
+  std::vector<Geometry::LocalSize>
+  critical_distance_sizes(const Parameters::ScenarioParameters &scene);
 } // namespace FloorBlock::Scene

@@ -167,3 +167,31 @@ TEST(ContactZoneSizes, NoneWhereTheSolveClosedNoVerticalJoint)
   EXPECT_TRUE(zones.sizes.empty());
   EXPECT_FALSE(zones.reason.empty());
 }
+
+// Critical-distance sizing: cells of L/N along both bisectors of every
+// vertical joint's top corner, from the sharp corner out to 1.5 L + r.
+TEST(CriticalDistanceSizes, FollowTheCornerBisectors)
+{
+  const auto scene = default_scene({"Mesh/Cells per critical distance=8",
+                                    "Strength/Critical distance=0.02"});
+  const auto sizes = Scene::critical_distance_sizes(scene);
+  ASSERT_FALSE(sizes.empty());
+  const double r = scene.geometry.corner_rounding_radius;
+  std::map<long, unsigned int> per_joint;
+  for (const auto &local : sizes)
+    {
+      EXPECT_DOUBLE_EQ(local.size, 0.02 / 8.);
+      const long   joint_x = std::lround(local.position.x);
+      const double dx      = local.position.x - joint_x;
+      const double dy      = 2. - local.position.y; // top: H = 2 m
+      EXPECT_NEAR(std::abs(dx), dy, 1e-9) << "on a bisector";
+      EXPECT_LE(std::hypot(dx, dy), 1.5 * 0.02 + r + 1e-9);
+      ++per_joint[joint_x];
+    }
+  EXPECT_EQ(per_joint.size(), 6u);
+}
+
+TEST(CriticalDistanceSizes, NoneByDefault)
+{
+  EXPECT_TRUE(Scene::critical_distance_sizes(default_scene()).empty());
+}

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <fem/elastic_model.h>
+#include <fem/fe_space.h>
+#include <fem/point_stress.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace FloorBlock::Fem
+{
+  /**
+   * @brief A continuous stress field per body from the displacement
+   * solution: at every mesh vertex the mean over the body's cells that
+   * share it of their stress at that vertex (nodal averaging), and between
+   * vertices the bilinear interpolant of the cell's four vertex values.
+   *
+   * Why: the stress of a displacement FE field jumps between cells by
+   * about h |grad sigma|, so a stress read at one point is the value of
+   * whichever cell holds it. Averaging at the vertices removes the jumps
+   * (and is of higher order than either cell's value there); each body
+   * is averaged on its own, since the stress is discontinuous across a
+   * joint. One process; first-degree (four-vertex) cells.
+   */
+  class SmoothedStress
+  {
+  public:
+    SmoothedStress(const FeSpace<2>                            &space,
+                   const ElasticModel<2>                       &model,
+                   const dealii::TrilinosWrappers::MPI::Vector &displacement);
+
+    /** @brief The smoothed stress at @p points (cell_size as
+     * stresses_at_points()). Throws std::invalid_argument outside the
+     * mesh. */
+    std::vector<PointStress>
+    at(const std::vector<dealii::Point<2>> &points) const;
+
+  private:
+    const FeSpace<2> &space;
+    /** Vertex-to-cell maps for finding the cells of many points fast. */
+    dealii::GridTools::Cache<2> cache;
+    /** (vertex index, material id) -> summed stress and count. */
+    std::map<std::pair<unsigned int, unsigned int>, std::pair<PointStress, unsigned int>>
+      vertex_stress;
+  };
+} // namespace FloorBlock::Fem

@@ -1,0 +1,118 @@
+#include <common/units.h>
+#include <output/floor_safety_report.h>
+
+#include <fmt/format.h>
+
+namespace FloorBlock::Output
+{
+  using nlohmann::json;
+
+  namespace
+  {
+    const char *
+    verdict(const double factor)
+    {
+      return factor < 1. ? "the corner fails" : "the corner holds";
+    }
+
+    std::string
+    unresolved_text(const Safety::CornerSafety &corner)
+    {
+      return fmt::format(
+        "not evaluated: cells of up to {:.1f} mm along the corner paths "
+        "against a critical distance L = {:.1f} mm (at most L/{:.0f} "
+        "needed); set Mesh/Cells per critical distance, e.g. to 8",
+        corner.largest_cell * 1e3,
+        corner.critical_distance * 1e3,
+        Safety::min_cells_per_critical_distance);
+    }
+  } // namespace
+
+  json
+  floor_safety_json(const std::vector<Safety::CornerSafety> &corners)
+  {
+    if (corners.empty())
+      return nullptr;
+    json records = json::array();
+    for (const Safety::CornerSafety &corner : corners)
+      records.push_back(
+        {{"joint", corner.path.joint_name},
+         {"block", corner.path.block},
+         {"hot_spot_m", {corner.path.start.x, corner.path.start.y}},
+         {"path_direction", {corner.path.direction.x, corner.path.direction.y}},
+         {"safety_factor_point", corner.point_factor},
+         {"safety_factor_line", corner.line_factor},
+         {"sigma_1_at_half_L_Pa", corner.point_stresses.sigma_1},
+         {"sigma_3_at_half_L_Pa", corner.point_stresses.sigma_3},
+         {"sigma_1_mean_over_L_Pa", corner.line_stresses.sigma_1},
+         {"sigma_3_mean_over_L_Pa", corner.line_stresses.sigma_3},
+         {"largest_cell_m", corner.largest_cell},
+         {"resolved", corner.resolved()}});
+    const Safety::CornerSafety &governing = Safety::governing_corner(corners);
+    if (!governing.resolved())
+      return {{"critical_distance_m", governing.critical_distance},
+              {"status", "unresolved"},
+              {"status_text", unresolved_text(governing)},
+              {"corners", records}};
+    return {
+      {"critical_distance_m", governing.critical_distance},
+      {"method_text",
+       "Hoek-Brown strength factor sigma_1f(sigma_3)/sigma_1 (compression "
+       "positive) of the stress at L/2 (point method) and of the mean "
+       "stress over L (line method), along the inward bisector of each "
+       "floor-level block corner from its surface point (src/safety/)"},
+      {"corners", records},
+      {"governing",
+       {{"joint", governing.path.joint_name},
+        {"block", governing.path.block},
+        {"safety_factor_point", governing.point_factor},
+        {"safety_factor_line", governing.line_factor},
+        {"status", governing.point_factor < 1. ? "fails" : "holds"}}}};
+  }
+
+  std::string
+  floor_safety_text(const std::vector<Safety::CornerSafety> &corners)
+  {
+    if (corners.empty())
+      return {};
+    const Safety::CornerSafety &governing = Safety::governing_corner(corners);
+    if (!governing.resolved())
+      return "  floor safety: " + unresolved_text(governing) + "\n";
+    return fmt::format(
+      "  floor safety (Hoek-Brown, critical distance L = {:.1f} mm): "
+      "governing corner {} at {}: FS = {:.2f} (point, sigma_1 = {:.2f} MPa "
+      "at L/2), {:.2f} (line, mean over L): {}\n",
+      governing.critical_distance * 1e3,
+      governing.path.block,
+      governing.path.joint_name,
+      governing.point_factor,
+      governing.point_stresses.sigma_1 / Units::MPa,
+      governing.line_factor,
+      verdict(governing.point_factor));
+  }
+
+  std::string
+  floor_safety_paths_csv(const std::vector<Safety::CornerSafety> &corners)
+  {
+    std::string csv = "# Stresses along the floor safety factor's corner "
+                      "paths (src/safety/), compression positive\n"
+                      "joint,block,distance_m,sigma_1_Pa,sigma_3_Pa,"
+                      "strength_factor\n";
+    for (const Safety::CornerSafety &corner : corners)
+      for (std::size_t k = 0; k < corner.samples.size(); ++k)
+        {
+          const Strength::PathSample       &sample = corner.samples[k];
+          const Strength::PrincipalStresses principal =
+            Strength::principal_stresses(sample.stress);
+          csv += fmt::format(
+            "{},{},{:.9e},{:.9e},{:.9e},{:.9e}\n",
+            corner.path.joint_name,
+            corner.path.block,
+            sample.distance,
+            principal.sigma_1,
+            principal.sigma_3,
+            corner.sample_factors[k]);
+        }
+    return csv;
+  }
+} // namespace FloorBlock::Output
