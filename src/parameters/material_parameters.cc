@@ -1,6 +1,7 @@
 #include <common/input_error.h>
 #include <parameters/auto_or_double.h>
 #include <parameters/sections.h>
+#include <parameters/value_text.h>
 
 #include <cmath>
 #include <sstream>
@@ -19,15 +20,6 @@ namespace FloorBlock::Parameters
     // Chapter Table 6.1, taken when neither pair is given.
     constexpr double table_bulk_modulus  = 9.0e9;
     constexpr double table_shear_modulus = 6.7e9;
-
-    std::string
-    pascals(const double value)
-    {
-      std::ostringstream text;
-      text.precision(6);
-      text << value << " Pa";
-      return text.str();
-    }
 
     /** A modulus derived from the other pair, within the declared bounds. */
     double

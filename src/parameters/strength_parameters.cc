@@ -1,26 +1,14 @@
 #include <common/input_error.h>
 #include <parameters/auto_or_double.h>
 #include <parameters/sections.h>
+#include <parameters/value_text.h>
 #include <strength/critical_distance.h>
 
-#include <sstream>
 
 namespace FloorBlock::Parameters
 {
   using dealii::ParameterHandler;
   using dealii::Patterns::Double;
-
-  namespace
-  {
-    std::string
-    pascals(const double value)
-    {
-      std::ostringstream text;
-      text.precision(6);
-      text << value << " Pa";
-      return text.str();
-    }
-  } // namespace
 
   void
   StrengthParameters::declare_parameters(ParameterHandler &prm)

@@ -52,10 +52,6 @@ namespace FloorBlock::Safety
         for (std::size_t k = 0; k < stresses.size(); ++k)
           {
             samples.push_back({distances[k], plane_strain(stresses[k])});
-            corner.sample_factors.push_back(Strength::strength_factor(
-              Strength::principal_stresses(samples.back().stress),
-              sigma_ci,
-              constants));
             corner.largest_cell =
               std::max(corner.largest_cell, stresses[k].cell_size);
           }
@@ -71,6 +67,12 @@ namespace FloorBlock::Safety
           Strength::strength_factor(corner.point_stresses, sigma_ci, constants);
         corner.line_factor =
           Strength::strength_factor(corner.line_stresses, sigma_ci, constants);
+        // The factor along the path, for floor_safety_paths.csv: only
+        // where the path is resolved (elsewhere it is not written).
+        if (corner.resolved())
+          for (const Strength::PathSample &sample : corner.samples)
+            corner.sample_factors.push_back(Strength::strength_factor(
+              Strength::principal_stresses(sample.stress), sigma_ci, constants));
         result.push_back(corner);
       }
     return result;

@@ -33,7 +33,8 @@ namespace FloorBlock::Safety
     Strength::PrincipalStresses  line_stresses;           ///< mean over L (Pa)
     double                       point_factor = 0.;       ///< FS, point method
     double                       line_factor  = 0.;       ///< FS, line method
-    /** The stress along the path over [0, L], and its strength factor. */
+    /** The stress along the path over [0, L], and its strength factor
+     * (resolved paths only; else empty). */
     std::vector<Strength::PathSample> samples;
     std::vector<double>               sample_factors;
     /** Largest cell along the path over [0, L] (m). */

@@ -45,17 +45,20 @@ namespace FloorBlock::Strength
 
   /**
    * @brief Strength factor of the Hoek-Brown rock at one stress state: the
-   * strength over the stress, FS < 1 where the criterion is violated.
+   * factor k by which the whole stress state can be scaled before it
+   * reaches the envelope, \f$k\sigma_1 = \sigma_{1f}(k\sigma_3)\f$ (the
+   * smallest such k > 0); FS < 1 where the criterion is violated.
    *
-   *  - Compression (\f$\sigma_1 > 0\f$, \f$\sigma_3\f$ above the tensile
-   *    strength \f$-\sigma_t\f$): \f$FS = \sigma_{1f}(\sigma_3)/\sigma_1\f$,
-   *    the strength at the acting confinement over the major principal
-   *    compressive stress; 0 where \f$\sigma_{1f}(\sigma_3) \le 0\f$
-   *    (confinement so tensile that no compression is carried).
-   *  - Tension at or beyond \f$\sigma_t\f$, or no compression
-   *    (\f$\sigma_1 \le 0\f$): \f$FS = \sigma_t/(-\sigma_3)\f$, the tensile
-   *    strength over the largest tension.
-   * Capped at largest_strength_factor (an unloaded point).
+   * At a free surface (\f$\sigma_3 = 0\f$) k is the strength over the stress,
+   * \f$\sigma_c/\sigma_1\f$, the chapter's route; in equal biaxial tension
+   * it is \f$\sigma_t/|\sigma_3|\f$. Why not \f$\sigma_{1f}(\sigma_3)/
+   * \sigma_1\f$ at the acting \f$\sigma_3\f$: that ratio falls to 0 as
+   * \f$\sigma_3\f$ approaches the tensile strength \f$-\sigma_t\f$ (where
+   * \f$\sigma_{1f} \to -\sigma_t\f$) and has no meaning beyond it, so near
+   * the tension a change of \f$\sigma_3\f$ by 1 % of \f$\sigma_1\f$
+   * moves it by a quarter; k is continuous there and of the same value at a
+   * free surface. Capped at largest_strength_factor (an unloaded point, or
+   * a state too confined to reach the envelope before the cap).
    */
   double
   strength_factor(const PrincipalStresses  &stresses,
