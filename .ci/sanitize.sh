@@ -16,7 +16,8 @@
 #   blocks, non-matching joints), and every bad-input case. A new CLI test
 #   runs here unless `heavy_duplicates` below names it;
 # - fuzz_tests: 2000 random scenes and the closed forms' hostile inputs;
-# - the unit tests of common, analytic, loading, parameters and rigid.
+# - the unit tests of common, analytic, strength, loading, parameters and
+#   rigid.
 # Left out: the other modules' unit tests (geometry, contact, refinement,
 # verification, fem, solver, pipeline, studies, ...) and the scenario label: their
 # code (Gmsh meshing, FEM solves) runs here through cli_tests end to end,
@@ -32,7 +33,7 @@ cd "$(dirname "$0")/.."
 
 build=build-sanitize
 jobs=${JOBS:-$(nproc)}
-targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_loading
+targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_strength unit_tests_loading
   unit_tests_parameters unit_tests_rigid fuzz_tests cli_tests floorblock})
 # CLI tests left out because a test that stays runs the same code (a finer
 # mesh, a longer ladder, other numbers): under ASan, the slow unwinder and

@@ -17,7 +17,7 @@ namespace FloorBlock::Output
     {
       const auto            &contact = entry.contact;
       const Analytic::Status status  = face_contact_status(entry);
-      return {{"status", Analytic::to_string(status)},
+      json contact_values = {{"status", Analytic::to_string(status)},
               {"status_text", Analytic::describe(status)},
               {"Q_N", entry.face_force_over_width},
               {"y_m", closed_forms.floor_lift},
@@ -27,10 +27,11 @@ namespace FloorBlock::Output
               {"A_m2", contact.contact_area},
               {"contact_length_m", contact.contact_length},
               {"sigma_avg_Pa", contact.average_stress},
-              {"sigma_max_Pa", contact.max_stress},
-              {"safety_factor_eq_6_53",
-               entry.floor_safety_factor ? json(*entry.floor_safety_factor) :
-                                           json(nullptr)}};
+              {"sigma_max_Pa", contact.max_stress}};
+      // Absent, not null, where Eq. 6.53 has no positive sigma_max.
+      if (entry.floor_safety_factor)
+        contact_values["safety_factor_eq_6_53"] = *entry.floor_safety_factor;
+      return contact_values;
     }
 
     std::vector<double>
@@ -93,7 +94,7 @@ namespace FloorBlock::Output
             {"floor_strength_text",
              "the rock mass's uniaxial compressive strength sigma_ci s^a "
              "(Strength/); safety_factor_eq_6_53 = floor_strength_Pa / "
-             "sigma_max_Pa, empty where Eq. 6.53 has no answer"},
+             "sigma_max_Pa, absent where Eq. 6.53 gives no positive sigma_max"},
             {"cases", cases}};
   }
 

@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <parameters/sections.h>
+#include <parameters/value_text.h>
 
 #include <algorithm>
 #include <string>
@@ -103,7 +104,7 @@ namespace FloorBlock::Parameters
     face_block_width       = prm.get_double("Face block width");
     base_thickness         = prm.get_double("Base thickness");
     corner_rounding_radius = prm.get_double("Corner rounding radius");
-    dimension              = std::stoul(prm.get("Dimension"));
+    dimension              = selected_count(prm.get("Dimension"), "Geometry/Dimension", "2 or 3");
     face_length            = prm.get_double("Face length");
     end_faces              = prm.get("End faces") == "free" ?
                                Geometry::EndFaces::free :

@@ -1,5 +1,6 @@
 #include <common/input_error.h>
 #include <parameters/sections.h>
+#include <parameters/value_text.h>
 
 namespace FloorBlock::Parameters
 {
@@ -162,7 +163,7 @@ namespace FloorBlock::Parameters
     const std::string refinements = prm.get("Global refinements");
     global_refinements            = refinements == "auto" ?
                                       std::nullopt :
-                                      std::optional<unsigned int>(std::stoul(refinements));
+                                      std::optional<unsigned int>(selected_count(refinements, "Mesh/Global refinements", "auto or 0 to 6"));
     target_relative_error         = prm.get_double("Target relative error");
     target_figures.clear();
     for (const std::string &name :

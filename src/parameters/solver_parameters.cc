@@ -1,4 +1,5 @@
 #include <parameters/sections.h>
+#include <parameters/value_text.h>
 
 namespace FloorBlock::Parameters
 {
@@ -167,7 +168,7 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Solver");
     const std::string degree  = prm.get("FE degree");
     choose_fe_degree          = degree == "auto";
-    fe_degree                 = choose_fe_degree ? 1 : std::stoul(degree);
+    fe_degree                 = choose_fe_degree ? 1 : selected_count(degree, "Solver/FE degree", "auto, 1 or 2");
     n_gravity_steps           = prm.get_integer("Gravity steps");
     gravity_with_support_load = prm.get_bool("Gravity with support load");
     n_support_steps           = prm.get_integer("Support load steps");

@@ -1,5 +1,7 @@
+#include <common/input_error.h>
 #include <parameters/value_text.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace FloorBlock::Parameters
@@ -11,5 +13,20 @@ namespace FloorBlock::Parameters
     text.precision(6);
     text << value << " Pa";
     return text.str();
+  }
+
+  unsigned int
+  selected_count(const std::string &value,
+                 const std::string &parameter,
+                 const std::string &allowed)
+  {
+    const bool digits =
+      !value.empty() && value.size() <= 3 &&
+      std::all_of(value.begin(), value.end(), [](const char c) {
+        return c >= '0' && c <= '9';
+      });
+    if (!digits)
+      throw InputError(parameter, value, "must be " + allowed);
+    return static_cast<unsigned int>(std::stoul(value));
   }
 } // namespace FloorBlock::Parameters
