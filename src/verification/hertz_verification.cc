@@ -94,6 +94,41 @@ namespace FloorBlock::Verification
             mesh.execute_coarsening_and_refinement();
         }
     }
+
+    /**
+     * sigma_x and sigma_z on the axis at depths a and 2a, computed and by
+     * eq. 4.75. The axis is the symmetry plane x = 0, depth z = y. A depth
+     * on a cell face (a and 2a are, on this mesh) takes the mean of the two
+     * cells that share it: the FE stress jumps there, and the mean is the
+     * face's second-order value.
+     */
+    std::vector<HertzAxisCheck>
+    axis_checks(const Contact::ContactSolver<2> &solver,
+                const Fem::ElasticModel<2>      &model,
+                const HertzResult               &result)
+    {
+      std::vector<HertzAxisCheck> checks;
+      const double                a = result.half_width_exact;
+      for (const double depth : {a, 2. * a})
+        {
+          const double                        offset = 1e-9 * depth;
+          const std::vector<Fem::PointStress> stresses =
+            Fem::stresses_at_points(solver.space(),
+                                    model,
+                                    solver.solution(),
+                                    {dealii::Point<2>(0., depth - offset),
+                                     dealii::Point<2>(0., depth + offset)});
+          const Analytic::HertzAxisStress exact =
+            Analytic::hertz_axis_stress(result.peak_pressure_exact, a, depth);
+          checks.push_back(
+            {depth,
+             exact.along_surface,
+             exact.into_body,
+             0.5 * (stresses[0].in_plane[0][0] + stresses[1].in_plane[0][0]),
+             0.5 * (stresses[0].in_plane[1][1] + stresses[1].in_plane[1][1])});
+        }
+      return checks;
+    }
   } // namespace
 
   HertzResult
@@ -174,29 +209,7 @@ namespace FloorBlock::Verification
     result.last_closed_position = last_closed;
     result.contact_cell_size    = first_open - last_closed;
 
-    // The axis is the symmetry plane x = 0, depth z = y. A depth on a cell
-    // face (a and 2a are, on this mesh) takes the mean of the two cells
-    // that share it: the FE stress jumps there, and the mean is the
-    // face's second-order value.
-    const double a = result.half_width_exact;
-    for (const double depth : {a, 2. * a})
-      {
-        const double                  offset = 1e-9 * depth;
-        const std::vector<Fem::PointStress> stresses =
-          Fem::stresses_at_points(solver.space(),
-                                  scene.model,
-                                  solver.solution(),
-                                  {dealii::Point<2>(0., depth - offset),
-                                   dealii::Point<2>(0., depth + offset)});
-        const Analytic::HertzAxisStress exact =
-          Analytic::hertz_axis_stress(result.peak_pressure_exact, a, depth);
-        result.axis.push_back(
-          {depth,
-           exact.along_surface,
-           exact.into_body,
-           0.5 * (stresses[0].in_plane[0][0] + stresses[1].in_plane[0][0]),
-           0.5 * (stresses[0].in_plane[1][1] + stresses[1].in_plane[1][1])});
-      }
+    result.axis = axis_checks(solver, scene.model, result);
     return result;
   }
 } // namespace FloorBlock::Verification
