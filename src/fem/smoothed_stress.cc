@@ -16,8 +16,18 @@ namespace FloorBlock::Fem
     const ElasticModel<2>                       &model,
     const dealii::TrilinosWrappers::MPI::Vector &displacement)
     : space(space)
+    , model(model)
+    , displacement(displacement)
     , cache(space.dof_handler().get_triangulation(), space.mapping())
+  {}
+
+  const PointStress &
+  SmoothedStress::vertex_mean(const unsigned int               vertex,
+                              const dealii::types::material_id material) const
   {
+    const auto known = vertex_means.find({vertex, material});
+    if (known != vertex_means.end())
+      return known->second;
     // The trapezoidal rule's points are the cell's vertices, in deal.II's
     // vertex order.
     const dealii::QTrapezoid<2>              at_vertices;
@@ -27,27 +37,32 @@ namespace FloorBlock::Fem
                                   dealii::update_gradients);
     const dealii::FEValuesExtractors::Vector displacements(0);
     std::vector<dealii::Tensor<2, 2>>        gradients(at_vertices.size());
-    for (const auto &cell : space.dof_handler().active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe_values[displacements].get_function_gradients(displacement,
-                                                        gradients);
-        const Material::ElasticLaw<2> &law = model.laws.at(cell->material_id());
-        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+    const Material::ElasticLaw<2>           &law = model.laws.at(material);
+    PointStress                              sum;
+    unsigned int                             count = 0;
+    // The map also lists coarser neighbours on whose face a hanging vertex
+    // lies: only cells that have the vertex as one of theirs count.
+    for (const auto &cell : cache.get_vertex_to_cell_map()[vertex])
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        if (cell->vertex_index(v) == vertex && cell->material_id() == material)
           {
+            const dealii::DoFHandler<2>::active_cell_iterator dof_cell(
+              &cell->get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &space.dof_handler());
+            fe_values.reinit(dof_cell);
+            fe_values[displacements].get_function_gradients(displacement,
+                                                            gradients);
             const auto strain = dealii::symmetrize(gradients[v]);
-            auto &[sum, count] =
-              vertex_stress[{cell->vertex_index(v), cell->material_id()}];
             sum.in_plane += law.stress(strain);
             sum.out_of_plane += law.out_of_plane_stress(strain);
             ++count;
           }
-      }
-    for (auto &[key, entry] : vertex_stress)
-      {
-        entry.first.in_plane /= entry.second;
-        entry.first.out_of_plane /= entry.second;
-      }
+    sum.in_plane /= count;
+    sum.out_of_plane /= count;
+    return vertex_means.emplace(std::make_pair(vertex, material), sum)
+      .first->second;
   }
 
   std::vector<PointStress>
@@ -78,8 +93,7 @@ namespace FloorBlock::Fem
         for (unsigned int v = 0; v < 4; ++v)
           {
             const PointStress &vertex =
-              vertex_stress.at({cell->vertex_index(v), cell->material_id()})
-                .first;
+              vertex_mean(cell->vertex_index(v), cell->material_id());
             stress.in_plane += weights[v] * vertex.in_plane;
             stress.out_of_plane += weights[v] * vertex.out_of_plane;
           }

@@ -25,7 +25,9 @@ namespace FloorBlock::Fem
    * whichever cell holds it. Averaging at the vertices removes the jumps
    * (and is of higher order than either cell's value there); each body
    * is averaged on its own, since the stress is discontinuous across a
-   * joint. One process; first-degree (four-vertex) cells.
+   * joint. The vertex means are computed when a point first needs them,
+   * so reading a few paths costs the cells around them, not the mesh.
+   * One process; four-vertex cells.
    */
   class SmoothedStress
   {
@@ -41,11 +43,19 @@ namespace FloorBlock::Fem
     at(const std::vector<dealii::Point<2>> &points) const;
 
   private:
-    const FeSpace<2> &space;
+    /** @brief The mean stress at @p vertex over the cells of material
+     * @p material that have it as a vertex (memoized). */
+    const PointStress &
+    vertex_mean(unsigned int vertex, dealii::types::material_id material) const;
+
+    const FeSpace<2>                            &space;
+    const ElasticModel<2>                       &model;
+    const dealii::TrilinosWrappers::MPI::Vector &displacement;
     /** Vertex-to-cell maps for finding the cells of many points fast. */
     dealii::GridTools::Cache<2> cache;
-    /** (vertex index, material id) -> summed stress and count. */
-    std::map<std::pair<unsigned int, unsigned int>, std::pair<PointStress, unsigned int>>
-      vertex_stress;
+    /** (vertex index, material id) -> mean stress, filled on demand. */
+    mutable std::map<std::pair<unsigned int, dealii::types::material_id>,
+                     PointStress>
+      vertex_means;
   };
 } // namespace FloorBlock::Fem
