@@ -99,20 +99,22 @@ namespace FloorBlock::Output
                       "joint,block,distance_m,sigma_1_Pa,sigma_3_Pa,"
                       "strength_factor\n";
     for (const Safety::CornerSafety &corner : corners)
-      for (std::size_t k = 0; k < corner.samples.size(); ++k)
-        {
-          const Strength::PathSample       &sample = corner.samples[k];
-          const Strength::PrincipalStresses principal =
-            Strength::principal_stresses(sample.stress);
-          csv += fmt::format(
-            "{},{},{:.9e},{:.9e},{:.9e},{:.9e}\n",
-            corner.path.joint_name,
-            corner.path.block,
-            sample.distance,
-            principal.sigma_1,
-            principal.sigma_3,
-            corner.sample_factors[k]);
-        }
+      // An unresolved path has samples but no factors
+      // (Safety::corner_safety()): its stresses are single cells' values.
+      if (corner.sample_factors.size() == corner.samples.size())
+        for (std::size_t k = 0; k < corner.samples.size(); ++k)
+          {
+            const Strength::PathSample       &sample = corner.samples[k];
+            const Strength::PrincipalStresses principal =
+              Strength::principal_stresses(sample.stress);
+            csv += fmt::format("{},{},{:.9e},{:.9e},{:.9e},{:.9e}\n",
+                               corner.path.joint_name,
+                               corner.path.block,
+                               sample.distance,
+                               principal.sigma_1,
+                               principal.sigma_3,
+                               corner.sample_factors[k]);
+          }
     return csv;
   }
 } // namespace FloorBlock::Output
