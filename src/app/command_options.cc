@@ -18,8 +18,13 @@ namespace FloorBlock::App
     MPI_Initialized(&mpi_started);
     if (!mpi_started ||
         dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      for (const std::string &warning : scene.warnings)
-        std::cerr << "warning: " << warning << std::endl;
+      {
+        for (const std::string &warning : scene.warnings)
+          std::cerr << "warning: " << warning << std::endl;
+        if (!scene.joints.stiffness_origin.empty())
+          std::cout << "joint stiffness: " << scene.joints.stiffness_origin
+                    << std::endl;
+      }
     return scene;
   }
 

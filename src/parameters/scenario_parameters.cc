@@ -234,6 +234,8 @@ namespace FloorBlock::Parameters
     verify.parse_parameters(prm);
     model.parse_parameters(prm);
     corner.parse_parameters(prm, geometry.n_blocks);
+    // Here, so that every command solves with the same joints.
+    joints.resolve_stiffness(geometry, strength);
 
     // Fillet pairs start with a gap; the joint law treats a pair as closed
     // while kn * gap stays below the tensile strength, so any tensile
@@ -406,6 +408,18 @@ namespace FloorBlock::Parameters
       std::string text = expanded;
       for (const auto &[entry, note] : scenario.material.derived_text)
         text = annotate_entry(text, "Material", entry, note);
+      if (!scenario.joints.stiffness_origin.empty())
+        {
+          text = annotate_entry(text,
+                                "Joints",
+                                "Stiffness source",
+                                scenario.joints.stiffness_origin);
+          for (const char *entry : {"Normal stiffness", "Shear stiffness"})
+            text = annotate_entry(text,
+                                  "Joints",
+                                  entry,
+                                  "unused: Stiffness source = Barton-Bandis");
+        }
       if (!scenario.loading.floor_lift_origin.empty())
         text = annotate_entry(text,
                               "Loading",

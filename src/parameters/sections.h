@@ -118,21 +118,58 @@ namespace FloorBlock::Parameters
     parse_parameters(dealii::ParameterHandler &prm);
   };
 
+  /** Where the compliant joints' kn and ks come from. */
+  enum class JointStiffnessSource
+  {
+    given,        ///< Joints/Normal stiffness and Shear stiffness
+    barton_bandis ///< the joint data (Strength::barton_bandis.h)
+  };
+
+  /** The Barton-Bandis entries of subsection "Joints", SI. */
+  struct BartonBandisEntries
+  {
+    double                roughness_coefficient;   ///< JRC (-)
+    double                wall_strength;           ///< JCS (Pa)
+    std::optional<double> initial_aperture;        ///< a_j (m); empty: auto
+    double                residual_friction_angle; ///< phi_r (rad)
+    double                normal_stress;  ///< sigma_n (Pa), kn and ks at it
+    std::optional<double> sheared_length; ///< L_x (m); empty: auto
+  };
+
   /** Subsection "Joints": vertical fractures and the bedding plane. */
   struct JointParameters
   {
-    double                bedding_friction_angle;  ///< phi_h (rad)
-    double                vertical_friction_angle; ///< phi_v (rad)
-    double                cohesion;                ///< Pa
-    double                tensile_strength;        ///< Pa
-    double                normal_stiffness;        ///< kn (Pa/m)
-    double                shear_stiffness;         ///< ks (Pa/m)
+    double bedding_friction_angle;  ///< phi_h (rad)
+    double vertical_friction_angle; ///< phi_v (rad)
+    double cohesion;                ///< Pa
+    double tensile_strength;        ///< Pa
+    /// kn (Pa/m) of the compliant law: as given, or from the joint data
+    /// once resolve_stiffness() ran.
+    double                normal_stiffness;
+    double                shear_stiffness; ///< ks (Pa/m), likewise
     Contact::JointLawKind law;
+    JointStiffnessSource  stiffness_source;
+    BartonBandisEntries   barton_bandis; ///< read for Barton-Bandis only
+    /// The derived kn and ks with their inputs in words, for parameters.prm
+    /// and the terminal; empty for Stiffness source = given.
+    std::string stiffness_origin;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief For Stiffness source = Barton-Bandis: kn and ks from the joint
+     * data at the entries' normal stress (joint_stiffness.cc), with the
+     * auto aperture from Strength/Intact UCS and the auto sheared length
+     * Geometry/Block height; sets stiffness_origin. Nothing for given.
+     * @throws InputError naming the entry, its value and the range that
+     * gives a positive, finite stiffness within the fits' validity.
+     */
+    void
+    resolve_stiffness(const GeometryParameters &geometry,
+                      const StrengthParameters &strength);
   };
 
   /** How the base moves in the floor-uplift stage. */

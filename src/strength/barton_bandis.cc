@@ -2,6 +2,7 @@
 #include <strength/barton_bandis.h>
 
 #include <cmath>
+#include <limits>
 
 namespace FloorBlock::Strength
 {
@@ -9,10 +10,34 @@ namespace FloorBlock::Strength
   {
     // The relations are fitted in MPa, mm and degrees. Inputs are converted
     // to those units on entry and results back to SI on return, here only.
-    constexpr double millimetres_per_metre = 1.0e3;
+    constexpr double millimetres_per_metre  = 1.0e3;
     constexpr double megapascals_per_pascal = 1.0 / Units::MPa;
     /// 1 MPa/mm = 1e6 Pa / 1e-3 m.
     constexpr double pascals_per_metre_per_megapascal_per_millimetre = 1.0e9;
+
+    /**
+     * K_ni = intercept + per_roughness JRC + per_strength JCS/a_j in MPa/mm
+     * (Bandis, Lumsden and Barton 1983, fresh joints, first loading cycle).
+     */
+    struct FirstCycleStiffness
+    {
+      static constexpr double intercept     = -7.15;
+      static constexpr double per_roughness = 1.75;
+      static constexpr double per_strength  = 0.02; ///< per MPa/mm
+    };
+
+    /**
+     * V_m = A + B JRC + C (JCS/a_j)^D in mm, as published for the first
+     * cycle (ibid.); the third cycle's (-0.1032, -0.0074, 1.1350, -0.2510)
+     * give the smaller closure of a joint already closed twice.
+     */
+    struct FirstCycleClosure
+    {
+      static constexpr double A = -0.2960;
+      static constexpr double B = -0.0056;
+      static constexpr double C = 2.2410;
+      static constexpr double D = -0.2450;
+    };
 
     /** JCS/a_j in MPa/mm, the argument of both Bandis fits. */
     double
@@ -41,13 +66,10 @@ namespace FloorBlock::Strength
   double
   bandis_initial_normal_stiffness(const BartonBandisJoint &joint)
   {
-    // Bandis, Lumsden and Barton (1983), fresh joints, first cycle, MPa/mm.
-    constexpr double intercept       = -7.15;
-    constexpr double per_roughness   = 1.75;
-    constexpr double per_strength_mm = 0.02;
-    const double     stiffness_mpa_per_mm =
-      intercept + per_roughness * joint.roughness_coefficient +
-      per_strength_mm * wall_strength_over_aperture(joint);
+    const double stiffness_mpa_per_mm =
+      FirstCycleStiffness::intercept +
+      FirstCycleStiffness::per_roughness * joint.roughness_coefficient +
+      FirstCycleStiffness::per_strength * wall_strength_over_aperture(joint);
     return stiffness_mpa_per_mm *
            pascals_per_metre_per_megapascal_per_millimetre;
   }
@@ -55,17 +77,39 @@ namespace FloorBlock::Strength
   double
   bandis_maximum_closure(const BartonBandisJoint &joint)
   {
-    // Bandis, Lumsden and Barton (1983), fresh joints, first cycle, mm.
-    // A, B, C, D as published; the third cycle's (-0.1032, -0.0074, 1.1350,
-    // -0.2510) give a smaller closure of a joint already closed twice.
-    constexpr double A = -0.2960;
-    constexpr double B = -0.0056;
-    constexpr double C = 2.2410;
-    constexpr double D = -0.2450;
-    const double     closure_mm =
-      A + B * joint.roughness_coefficient +
-      C * std::pow(wall_strength_over_aperture(joint), D);
+    using Fit = FirstCycleClosure;
+    const double closure_mm =
+      Fit::A + Fit::B * joint.roughness_coefficient +
+      Fit::C * std::pow(wall_strength_over_aperture(joint), Fit::D);
     return closure_mm / millimetres_per_metre;
+  }
+
+  double
+  bandis_largest_aperture_for_stiffness(const double roughness_coefficient,
+                                        const double wall_strength)
+  {
+    const double rest =
+      FirstCycleStiffness::intercept +
+      FirstCycleStiffness::per_roughness * roughness_coefficient;
+    if (rest > 0.)
+      return std::numeric_limits<double>::infinity();
+    // 0.02 JCS / a_j > -rest, JCS in MPa, a_j in mm.
+    return FirstCycleStiffness::per_strength * wall_strength *
+           megapascals_per_pascal / (-rest) / millimetres_per_metre;
+  }
+
+  double
+  bandis_smallest_aperture_for_closure(const double roughness_coefficient,
+                                       const double wall_strength)
+  {
+    using Fit         = FirstCycleClosure;
+    const double rest = Fit::A + Fit::B * roughness_coefficient;
+    if (rest >= 0.)
+      return 0.;
+    // C (JCS/a_j)^D > -rest with D < 0: JCS/a_j below (-rest/C)^(1/D).
+    const double largest_ratio = std::pow(-rest / Fit::C, 1. / Fit::D);
+    return wall_strength * megapascals_per_pascal / largest_ratio /
+           millimetres_per_metre;
   }
 
   double

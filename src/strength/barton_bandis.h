@@ -54,6 +54,23 @@ namespace FloorBlock::Strength
   bandis_maximum_closure(const BartonBandisJoint &joint);
 
   /**
+   * @brief The largest a_j with a positive bandis_initial_normal_stiffness()
+   * (m); infinite where every aperture gives one (JRC > 4.09).
+   * @param[in] wall_strength JCS (Pa).
+   */
+  double
+  bandis_largest_aperture_for_stiffness(double roughness_coefficient,
+                                        double wall_strength);
+
+  /**
+   * @brief The smallest a_j with a positive bandis_maximum_closure() (m).
+   * @param[in] wall_strength JCS (Pa).
+   */
+  double
+  bandis_smallest_aperture_for_closure(double roughness_coefficient,
+                                       double wall_strength);
+
+  /**
    * @brief Tangent normal stiffness of the Bandis hyperbola
    * \f$\sigma_n = \Delta V / (a - b\,\Delta V)\f$ (K_ni = 1/a, V_m = a/b)
    * at a normal stress: \f$K_n = K_{ni}\left(1 - \frac{\sigma_n}{V_m

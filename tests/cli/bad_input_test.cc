@@ -195,6 +195,93 @@ namespace
      "--set 'Strength/Fracture toughness=1e7' "
      "--set 'Strength/Tensile strength=1e4'",
      "Strength/Critical distance"},
+    {"barton_bandis_with_rigid_law",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' --set 'Joints/Law=rigid'",
+     "'Joints/Stiffness source' = 'Barton-Bandis': given while Joints/Law = "
+     "rigid"},
+    {"barton_bandis_with_a_given_normal_stiffness",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Normal stiffness=1e10'",
+     "'Joints/Normal stiffness' = '1e10': its default 9e9"},
+    {"joint_wall_stronger_than_the_rock",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint wall strength=50e6'",
+     "'Joints/Joint wall strength' = '5e+07 Pa': at most Strength/Intact UCS"},
+    {"roughness_coefficient_above_twenty",
+     "",
+     "",
+     "--set 'Joints/Joint roughness coefficient=25'",
+     "Joints/Joint roughness coefficient"},
+    {"zero_normal_stress_for_stiffness",
+     "",
+     "",
+     "--set 'Joints/Normal stress for stiffness=0'",
+     "Joints/Normal stress for stiffness"},
+    {"auto_aperture_of_a_smooth_joint",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint roughness coefficient=0'",
+     "'Joints/Initial aperture' = 'auto = 0 m'"},
+    // K_ni = -7.15 + 1.75 x 2 + 0.02 x 20 / 1 = -3.25 MPa/mm.
+    {"aperture_with_no_positive_initial_normal_stiffness",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint roughness coefficient=2' "
+     "--set 'Joints/Initial aperture=1e-3'",
+     "'Joints/Initial aperture' = '0.001 m': between 6.005e-06 m and "
+     "0.0001096 m"},
+    // V_m = -0.2960 - 0.0448 + 2.2410 x 20000^-0.2450 = -0.14 mm.
+    {"aperture_with_no_positive_maximum_closure",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Initial aperture=1e-6'",
+     "'Joints/Initial aperture' = '1e-06 m': between 9.173e-06 m and any "
+     "larger value"},
+    // phi_peak = 20 log10(20 / 100) + 5 = -9 deg: ks < 0.
+    {"normal_stress_above_the_wall_strength",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint roughness coefficient=20' "
+     "--set 'Joints/Residual friction angle=5' "
+     "--set 'Joints/Normal stress for stiffness=1e8'",
+     "'Joints/Normal stress for stiffness' = '1e+08 Pa': from 11246.8 Pa to "
+     "below 3.55656e+07 Pa"},
+    // phi_peak = 20 log10(40 / 0.01) + 30 = 102 deg, beyond Barton's 70.
+    {"peak_friction_angle_above_seventy_degrees",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint roughness coefficient=20' "
+     "--set 'Joints/Joint wall strength=40e6' "
+     "--set 'Joints/Residual friction angle=30' "
+     "--set 'Joints/Normal stress for stiffness=1e4'",
+     "'Joints/Normal stress for stiffness' = '10000 Pa': from 400000 Pa"},
+    {"normal_stress_closing_the_whole_aperture",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Normal stress for stiffness=3e7'",
+     "'Joints/Normal stress for stiffness' = '3e+07 Pa': below 2.64253e+07 "
+     "Pa"},
+    // A smooth, frictionless wall: phi_peak = 0, ks = 0.
+    {"smooth_joint_without_residual_friction",
+     "",
+     "",
+     "--set 'Joints/Stiffness source=Barton-Bandis' "
+     "--set 'Joints/Joint roughness coefficient=0' "
+     "--set 'Joints/Initial aperture=5e-5' "
+     "--set 'Joints/Residual friction angle=0'",
+     "'Joints/Residual friction angle' = '0': above 0 deg"},
     {"unknown_bedding_shape", "", "", "--set 'Bedding/Shape=curved'", "curved"},
     {"malformed_loaded_list",
      "",

@@ -243,3 +243,37 @@ TEST(ScenarioParameters, EitherPairOfModuliDescribesTheRock)
               .find("Material/Bulk modulus"),
             std::string::npos);
 }
+
+// The tool shall solve with the joint stiffness derived from Barton-Bandis
+// joint data where the scene asks for it, and echo it beside the entries.
+// The default joint data (JRC 8, JCS 20 MPa, auto a_j = 0.48 mm in the 40
+// MPa siltstone, phi_r 25 deg, sigma_n 1 MPa, L_x = block height 2 m) give
+// kn = 1.16867e10 Pa/m and ks = 3.55440e7 Pa/m
+// (tests/unit/strength/barton_bandis_test.cc derives both by hand).
+TEST(ScenarioParameters, BartonBandisStiffnessReplacesTheGivenOne)
+{
+  const auto given = read_scenario(default_scene, {});
+  EXPECT_DOUBLE_EQ(given.joints.normal_stiffness, 9e9);
+  EXPECT_DOUBLE_EQ(given.joints.shear_stiffness, 6.7e9);
+  EXPECT_TRUE(given.joints.stiffness_origin.empty());
+
+  const auto derived =
+    read_scenario(default_scene, {"Joints/Stiffness source=Barton-Bandis"});
+  EXPECT_NEAR(derived.joints.normal_stiffness / 1.168671e10, 1., 1e-5);
+  EXPECT_NEAR(derived.joints.shear_stiffness / 3.554397e7, 1., 1e-5);
+  EXPECT_NE(derived.expanded_text.find("Barton-Bandis at sigma_n = 1 MPa"),
+            std::string::npos);
+  EXPECT_NE(derived.expanded_text.find(
+              "unused: Stiffness source = Barton-Bandis"),
+            std::string::npos);
+
+  // A sheared length given halves ks when it doubles; kn stays.
+  const auto longer = read_scenario(default_scene,
+                                    {"Joints/Stiffness source=Barton-Bandis",
+                                     "Joints/Sheared length=4"});
+  EXPECT_DOUBLE_EQ(longer.joints.normal_stiffness,
+                   derived.joints.normal_stiffness);
+  EXPECT_NEAR(longer.joints.shear_stiffness,
+              0.5 * derived.joints.shear_stiffness,
+              1e-6);
+}

@@ -4,9 +4,9 @@
 // come from.
 
 #include <common/units.h>
-#include <strength/barton_bandis.h>
 
 #include <gtest/gtest.h>
+#include <strength/barton_bandis.h>
 
 #include <cmath>
 
@@ -34,8 +34,12 @@ namespace
 // fresh joint (JCS = sigma_c) gets JRC/50 mm = 0.2 mm at JRC 10.
 TEST(BartonBandis, InitialApertureFromRoughnessAndStrengths)
 {
-  EXPECT_NEAR(Strength::barton_initial_aperture(8., 20e6, 40e6), 0.48e-3, 1e-15);
-  EXPECT_NEAR(Strength::barton_initial_aperture(10., 50e6, 50e6), 0.2e-3, 1e-15);
+  EXPECT_NEAR(Strength::barton_initial_aperture(8., 20e6, 40e6),
+              0.48e-3,
+              1e-15);
+  EXPECT_NEAR(Strength::barton_initial_aperture(10., 50e6, 50e6),
+              0.2e-3,
+              1e-15);
   EXPECT_LE(Strength::barton_initial_aperture(0., 20e6, 40e6), 0.);
   EXPECT_LT(Strength::barton_initial_aperture(8., 100e6, 40e6), 0.);
 }
@@ -58,12 +62,11 @@ TEST(BartonBandis, BandisFitsOfTheCoalMeasureJoint)
 // MPa: (1 - 1/5.2862)^-2 = 1.52104, K_n = 11.687 MPa/mm = 1.1687e10 Pa/m.
 TEST(BartonBandis, NormalStiffnessAtOneMegapascal)
 {
-  const auto   joint     = coal_measure_joint();
-  const double initial   = Strength::bandis_initial_normal_stiffness(joint);
-  const double closure   = Strength::bandis_maximum_closure(joint);
-  const double stiffness = Strength::hyperbolic_normal_stiffness(initial,
-                                                                 closure,
-                                                                 normal_stress);
+  const auto   joint   = coal_measure_joint();
+  const double initial = Strength::bandis_initial_normal_stiffness(joint);
+  const double closure = Strength::bandis_maximum_closure(joint);
+  const double stiffness =
+    Strength::hyperbolic_normal_stiffness(initial, closure, normal_stress);
   EXPECT_NEAR(stiffness / 1.168671e10, 1., 1e-5);
   // sigma_n = 0: the initial stiffness.
   EXPECT_DOUBLE_EQ(Strength::hyperbolic_normal_stiffness(initial, closure, 0.),
@@ -130,4 +133,26 @@ TEST(BartonBandis, SmoothJointAndStressAtWallStrength)
   EXPECT_NEAR(Strength::barton_peak_friction_angle(rough, rough.wall_strength),
               rough.residual_friction_angle,
               1e-15);
+}
+
+// The apertures where the fits end: K_ni = 0 at the largest (a smooth
+// joint; JRC 2, JCS 20 MPa: 0.02 x 20 / (7.15 - 3.5) = 0.10959 mm), V_m = 0
+// at the smallest (JRC 20: -0.408 + 2.2410 (JCS/a_j)^-0.245 = 0).
+TEST(BartonBandis, AperturesWhereTheFitsEnd)
+{
+  const double largest =
+    Strength::bandis_largest_aperture_for_stiffness(2., 20e6);
+  EXPECT_NEAR(largest, 0.4 / 3.65 * 1e-3, 1e-15);
+  Strength::BartonBandisJoint joint{2., 20e6, largest, 0.};
+  EXPECT_NEAR(Strength::bandis_initial_normal_stiffness(joint), 0., 1e-3);
+  EXPECT_TRUE(
+    std::isinf(Strength::bandis_largest_aperture_for_stiffness(8., 20e6)));
+
+  joint.roughness_coefficient = 20.;
+  joint.wall_strength         = 100e6;
+  joint.initial_aperture =
+    Strength::bandis_smallest_aperture_for_closure(20., 100e6);
+  EXPECT_NEAR(Strength::bandis_maximum_closure(joint), 0., 1e-15);
+  joint.initial_aperture *= 1.01;
+  EXPECT_GT(Strength::bandis_maximum_closure(joint), 0.);
 }
