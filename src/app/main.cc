@@ -172,7 +172,10 @@ namespace
                     "Also run the FEM for every case");
     sweep->add_option("--figure",
                       options.figure,
-                      "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11");
+                      "Only this figure: fig6_5, fig6_6, fig6_7, fig6_10_11; "
+                      "or kn_safety: the FEM's floor safety factor against "
+                      "the joints' kn (1e9-1e12 Pa/m and the rigid law), "
+                      "kn_safety.csv and kn_safety.png");
     sweep->add_option("--limit",
                       options.case_limit,
                       "With --fem: run at most this many of the chosen cases, "

@@ -10,6 +10,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <fmt/format.h>
+#include <studies/kn_safety_report.h>
+#include <studies/kn_safety_sweep.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +110,8 @@ namespace FloorBlock::App
       if (!options.figure.empty() && figures.count(options.figure) == 0)
         throw InputError("--figure",
                          options.figure,
-                         "one of fig6_5, fig6_6, fig6_7, fig6_10_11");
+                         "one of fig6_5, fig6_6, fig6_7, fig6_10_11 (or "
+                         "kn_safety, the floor's safety factor against kn)");
       const std::vector<Scene::FigurePoint> points =
         chosen_points(options, scene);
 
@@ -121,6 +124,35 @@ namespace FloorBlock::App
                   << " chosen FEM cases finished; results in "
                   << output_directory(options, scene) << std::endl;
       return 0;
+    }
+
+    /**
+     * `sweep --figure kn_safety`: the floor's safety factor against the
+     * joints' kn (Studies::kn_safety_sweep()), its own FEM study; the
+     * options that pick grid points of the chapter's figures do not apply.
+     */
+    int
+    kn_safety_command(const CommandOptions                 &options,
+                      const Parameters::ScenarioParameters &scene)
+    {
+      if (options.case_limit > 0 || !options.curvatures.empty() ||
+          !options.load_range.empty())
+        throw InputError("--figure kn_safety solves its seven cases whole: "
+                         "leave out --limit, --curvatures and --loads, which "
+                         "pick points of the chapter's figures");
+      require_plane_scene(scene, "sweep --figure kn_safety");
+      Studies::check_kn_safety_scene(scene);
+      const Output::ResultFolder folder(output_directory(options, scene));
+      folder.write_inputs(scene);
+      const auto sweep =
+        Studies::kn_safety_sweep(scene, folder, [](const std::string &line) {
+          std::cout << line << std::endl;
+        });
+      Studies::write_kn_safety(folder, sweep);
+      std::cout << "wrote " << folder.path_of("kn_safety.csv") << ", "
+                << folder.path_of("kn_safety.png") << " (each solve under "
+                << folder.path_of("kn_safety/") << ")" << std::endl;
+      return exit_code::success;
     }
 
     /** Options that choose FEM cases do nothing without --fem. */
@@ -147,6 +179,8 @@ namespace FloorBlock::App
   sweep_command(const CommandOptions &options)
   {
     const auto scene = read_scene(options);
+    if (options.figure == "kn_safety")
+      return kn_safety_command(options, scene);
     if (options.with_fem)
       {
         require_plane_scene(scene, "sweep --fem");
