@@ -4,6 +4,8 @@
 #include <output/comparison_report.h>
 #include <output/fem_summary.h>
 #include <output/figure_summary.h>
+#include <output/floor_safety_lift.h>
+#include <output/floor_safety_summary.h>
 #include <output/gnuplot.h>
 #include <output/governing_report.h>
 #include <output/report_markdown.h>
@@ -38,6 +40,11 @@ namespace FloorBlock::App
                                     scene.loading.floor_lift);
       if (!governing.empty())
         Output::render_png(governing, folder.path_of("stress_vs_lift.png"));
+      const std::vector<Output::LiftSafety> along =
+        Output::safety_along_lift(comparison.lift_history);
+      if (!along.empty())
+        Output::render_png(Output::safety_along_lift_plot(along),
+                           folder.path_of("floor_safety_vs_lift.png"));
       const auto &final_joints = comparison.final_joints;
       Output::render_png(Output::force_per_joint_plot(final_joints),
                          folder.path_of("q_per_joint.png"));
@@ -76,13 +83,19 @@ namespace FloorBlock::App
       const auto lines = Output::verdicts(comparison);
       for (const auto &line : lines)
         std::cout << "  " << line << "\n";
+      const std::vector<Output::LiftSafety> along =
+        Output::safety_along_lift(comparison.lift_history);
+      if (!along.empty())
+        std::cout << "  floor safety along the lift: "
+                  << Output::unit_safety_text(along) << "\n";
       std::cout << Output::governing_lines(
         Compare::governing_joints(outcome.result.increments.back(),
                                   scene.geometry.n_blocks));
       folder.write(
         "report.md",
         Output::report_markdown(
-          scene, outcome.result, outcome.report, estimate, comparison, lines));
+          scene, outcome.result, outcome.report, estimate, comparison, lines,
+          closed_forms));
       return comparison;
     }
 
@@ -155,7 +168,9 @@ namespace FloorBlock::App
                      "the time of the solve that gave it\n"
                   << Output::figure_lines(outcome.result,
                                           estimate,
-                                          scene.geometry.n_blocks);
+                                          scene.geometry.n_blocks)
+                  << Output::floor_safety_summary_lines(
+                       outcome.report.corner_safety, estimate, closed_forms);
         comparison =
           compare_and_report(outcome, closed_forms, scene, folder, estimate);
       }

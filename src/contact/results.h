@@ -122,6 +122,19 @@ namespace FloorBlock::Contact
   };
 
   /** @brief One converged increment. */
+  /**
+   * The floor's safety factors at one floor-level block corner
+   * (Safety::CornerSafety), as an increment keeps them for the history
+   * along the floor lift.
+   */
+  struct CornerFactors
+  {
+    std::string corner;       ///< "face block at vertical 6"
+    double      point_factor; ///< -, the point method's FS
+    double      line_factor;  ///< -, the line method's FS
+    bool        resolved;     ///< the mesh resolves the critical distance
+  };
+
   struct IncrementResult
   {
     Loading::LoadStage stage = Loading::LoadStage::gravity;
@@ -160,7 +173,10 @@ namespace FloorBlock::Contact
      * rotation about z, averaged over the volume (u_z is not kept).
      */
     std::map<dealii::types::material_id, Fem::RigidMotion<2>> motions;
-    double wall_time = 0.; ///< s
+    /** 2D elastic FEM: every floor-level corner's safety factors at this
+     * increment (Pipeline's increment observer); else empty. */
+    std::vector<CornerFactors> corner_factors;
+    double                     wall_time = 0.; ///< s
   };
 
   /** @brief All converged increments plus timing. */

@@ -2,6 +2,7 @@
 
 #include <fem/elastic_model.h>
 #include <fem/fe_space.h>
+#include <fem/point_stress.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -9,6 +10,16 @@
 
 namespace FloorBlock::Fem
 {
+  /**
+   * @brief The stress of every active cell at its centre, from the cell's
+   * elastic law (tension positive, Pa), by active_cell_index(); cells
+   * not locally owned keep a zero stress.
+   */
+  std::vector<PointStress>
+  cell_centre_stresses(const FeSpace<2>                            &space,
+                       const ElasticModel<2>                       &model,
+                       const dealii::TrilinosWrappers::MPI::Vector &displacement);
+
   /**
    * @brief Major principal compressive stress of every active cell at its
    * centre, compression positive (Pa): \f$-\min(\sigma_1, \sigma_2,

@@ -88,4 +88,14 @@ namespace FloorBlock::Geometry
    * meshes of millions of cells by a typo. Units: 1.
    */
   constexpr double min_relative_corner_size = 1.0e-3;
+
+  /**
+   * Smallest accepted ratio of a local size request (LocalSize) to
+   * min(L, H). A quarter of the corner bound: the full-quad recombination
+   * leaves cells about twice the request, and the floor safety factor's
+   * paths need cells of a few tenths of a millimetre where the critical
+   * distance is about 1 cm (Scene::critical_distance_sizes()); local
+   * requests cover small zones, not the whole block. Units: 1.
+   */
+  constexpr double min_relative_local_size = min_relative_corner_size / 4.;
 } // namespace FloorBlock::Geometry

@@ -31,7 +31,7 @@ namespace FloorBlock::Geometry
                        const AssemblyDescription    &description)
   {
     const double smallest_size =
-      min_relative_corner_size *
+      min_relative_local_size *
       std::min(description.block_width, description.block_height);
     for (const LocalSize &local : local_sizes)
       {
@@ -45,7 +45,7 @@ namespace FloorBlock::Geometry
           throw InputError(where,
                            text(local.size) + " m",
                            "size >= " + text(smallest_size) +
-                             " m (1e-3 times the smaller block side)");
+                             " m (2.5e-4 times the smaller block side)");
       }
   }
 

@@ -26,9 +26,8 @@ namespace FloorBlock::Geometry
 
   /**
    * @brief Refuses local sizes that are not finite and positive or are
-   * below the smallest corner size validate() accepts for this scene
-   * (min_relative_corner_size times the smaller block side), so a run-away
-   * indicator cannot ask for millions of cells.
+   * below min_relative_local_size times the smaller block side, so a
+   * run-away indicator cannot ask for millions of cells.
    * @throws FloorBlock::InputError naming the point and the size.
    */
   void

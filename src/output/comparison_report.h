@@ -15,6 +15,8 @@ namespace FloorBlock::Output
   {
     double                   base_lift = 0.; ///< m, the increment's lift
     Compare::JointComparison face_joint;
+    /** The floor's safety factors at the increment (may be empty). */
+    std::vector<Contact::CornerFactors> corner_factors;
   };
 
   /** `run`'s comparison of the FEM with the closed forms. */

@@ -52,6 +52,18 @@ namespace FloorBlock::Output
               {"wall_time_s", target.wall_time},
               {"levels", levels}};
     }
+
+    json
+    figure_error_json(const FigureError &error)
+    {
+      return {{"value", error.value},
+              {"coarse_value", error.coarse_value},
+              {"refined_value", error.refined_value},
+              {"absolute_error", error.absolute_error},
+              {"relative_error", optional_json(error.relative_error)},
+              {"oscillating", error.oscillating},
+              {"next_level_value", optional_json(error.next_level_value)}};
+    }
   } // namespace
 
   json
@@ -76,24 +88,20 @@ namespace FloorBlock::Output
       {
         json quantities = json::object();
         for (const auto &[key, member] : figures)
-          {
-            const FigureError &error = errors.*member;
-            quantities[key]          = {
-                       {"value", error.value},
-                       {"coarse_value", error.coarse_value},
-                       {"refined_value", error.refined_value},
-                       {"absolute_error", error.absolute_error},
-                       {"relative_error", optional_json(error.relative_error)},
-                       {"oscillating", error.oscillating},
-                       {"next_level_value", optional_json(error.next_level_value)}};
-          }
+          quantities[key] = figure_error_json(errors.*member);
         joints[name] = quantities;
       }
+    json corners = json::object();
+    for (const auto &[name, errors] : estimate.corners)
+      corners[name] = {
+        {"safety_factor_point", figure_error_json(errors.point_factor)},
+        {"safety_factor_line", figure_error_json(errors.line_factor)}};
     result["status"]         = "available";
     result["reported_solve"] = reported_solve_name(estimate.reported_solve);
     result["refined_n_dofs"] = estimate.refined_n_dofs;
     result["refined_status"] = estimate.refined_status;
     result["joints"]         = joints;
+    result["corners"]        = corners;
     return result;
   }
 } // namespace FloorBlock::Output

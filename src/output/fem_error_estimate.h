@@ -51,6 +51,16 @@ namespace FloorBlock::Output
     FigureError sigma_max_averaged; ///< Pa, averaged over the averaging length
   };
 
+  /**
+   * The estimated errors of one floor-level corner's safety factors
+   * (Safety::CornerSafety), where both solves resolve its path.
+   */
+  struct CornerErrors
+  {
+    FigureError point_factor; ///< -, the point method's FS
+    FigureError line_factor;  ///< -, the line method's FS
+  };
+
   /** Which solve of a compared pair the figures are reported from. */
   enum class ReportedSolve
   {
@@ -136,6 +146,8 @@ namespace FloorBlock::Output
     std::string   refined_status;
     /** By joint name ("vertical 6"), as in fem.json. */
     std::map<std::string, JointErrors> joints;
+    /** By corner (Safety::CornerPath::label(), "face block at vertical 6"). */
+    std::map<std::string, CornerErrors> corners;
     /** The accuracy loop that chose the levels compared; none without one. */
     std::optional<AccuracyTarget> target;
   };
@@ -155,7 +167,9 @@ namespace FloorBlock::Output
    * wall_time_s and per level level, n_cells, n_dofs,
    * wall_time_s, status, face (figures by fem.json key),
    * difference_indicator, halved_n_dofs, worst_target_relative_error and
-   * halved_worst_target_relative_error (null where not estimated).
+   * halved_worst_target_relative_error (null where not estimated); per
+   * corner whose path both solves resolve, "corners": safety_factor_point
+   * and safety_factor_line with the same entries as a joint's figures.
    */
   nlohmann::json
   fem_error_estimate_json(const FemErrorEstimate &estimate);

@@ -1,6 +1,8 @@
 #include <common/units.h>
 #include <output/comparison_report.h>
 #include <output/fem_report.h>
+#include <output/floor_safety_lift.h>
+#include <output/floor_safety_summary.h>
 #include <output/governing_report.h>
 #include <output/numbering_note.h>
 #include <output/report_markdown.h>
@@ -55,6 +57,17 @@ namespace FloorBlock::Output
       return blocks.empty() ? std::string("none") :
                               fmt::format("{}", fmt::join(blocks, ", "));
     }
+
+    std::string
+    lift_safety_markdown(const RunComparison &comparison)
+    {
+      const std::vector<LiftSafety> along =
+        safety_along_lift(comparison.lift_history);
+      if (along.empty())
+        return {};
+      return "\nAlong the floor lift: " + unit_safety_text(along) +
+             ".\n\n![Floor safety along the lift](floor_safety_vs_lift.png)\n";
+    }
   } // namespace
 
   std::string
@@ -63,7 +76,8 @@ namespace FloorBlock::Output
                   const FemReport                       &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
                   const RunComparison                   &comparison,
-                  const std::vector<std::string>        &verdicts)
+                  const std::vector<std::string>        &verdicts,
+                  const Scene::ClosedForms              &closed_forms)
   {
     std::string text = fmt::format(
       "# FloorBlock report: scene '{}'\n\n{}\n\n"
@@ -129,8 +143,10 @@ namespace FloorBlock::Output
       contact_table_markdown(comparison.final_joints) +
       "\n![Face joint along the lift](face_joint_vs_lift.png)\n"
       "![Traction along the face joint](face_joint_traction.png)\n\n"
-      "## Discretisation error\n\n" +
-      error_section(error_estimate);
+      "## Floor safety (final lift)\n\n" +
+      floor_safety_markdown(report.corner_safety, error_estimate, closed_forms) +
+      lift_safety_markdown(comparison) +
+      "\n## Discretisation error\n\n" + error_section(error_estimate);
     text += "\n## Cost\n\n| stage | wall time (s) |\n|---|---|\n";
     if (report.mesh)
       text += fmt::format("| mesh | {:.3f} |\n", report.mesh->wall_time);

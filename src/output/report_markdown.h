@@ -1,5 +1,7 @@
 #pragma once
 
+#include <scene/closed_forms.h>
+
 #include <contact/results.h>
 #include <output/comparison_report.h>
 #include <output/fem_error_estimate.h>
@@ -19,6 +21,8 @@ namespace FloorBlock::Output
    * @param[in] result, report The solve and its FEM report.
    * @param[in] error_estimate The error estimate, if one was made.
    * @param[in] comparison The FEM against the closed forms.
+   * @param[in] closed_forms The closed forms (the chapter's route to the
+   *   floor's safety factor, beside the FEM's corner factors).
    */
   std::string
   report_markdown(const Parameters::ScenarioParameters  &scene,
@@ -26,5 +30,6 @@ namespace FloorBlock::Output
                   const FemReport                       &report,
                   const std::optional<FemErrorEstimate> &error_estimate,
                   const RunComparison                   &comparison,
-                  const std::vector<std::string>        &verdicts);
+                  const std::vector<std::string>        &verdicts,
+                  const Scene::ClosedForms              &closed_forms);
 } // namespace FloorBlock::Output

@@ -1,5 +1,7 @@
 #include <output/analytic_report.h>
 #include <output/figure_summary.h>
+#include <output/floor_safety_lift.h>
+#include <output/floor_safety_summary.h>
 #include <output/governing_report.h>
 #include <output/run_summary.h>
 
@@ -34,6 +36,11 @@ namespace FloorBlock::Output
           governing_json(Compare::governing_joints(result.increments.back(),
                                                    scene.geometry.n_blocks));
       }
+    summary["floor_safety"] =
+      floor_safety_summary_json(report.corner_safety, estimate, closed_forms);
+    if (comparison && !comparison->lift_history.empty())
+      summary["floor_safety"]["along_lift"] = safety_along_lift_json(
+        safety_along_lift(comparison->lift_history));
     if (comparison)
       summary["comparison"] =
         run_comparison_json(*comparison, scene.geometry.n_blocks);

@@ -16,6 +16,7 @@ namespace FloorBlock::Output
   /**
    * @brief `run`'s summary.json: scene, model, inputs, the closed forms
    * (analytic.json), fem.json, the error estimate, the face joint's figures,
+   * the floor's safety factors (floor_safety_summary_json()),
    * the comparison with the closed forms, status and the total wall time.
    * The estimate, figures and comparison are left out where absent (no
    * converged increment, no estimate asked for).

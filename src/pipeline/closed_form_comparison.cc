@@ -34,7 +34,8 @@ namespace FloorBlock::Pipeline
            Compare::compare_vertical_joints(increment,
                                             closed_forms,
                                             comparison.constants)
-             .back()});
+             .back(),
+           increment.corner_factors});
     return comparison;
   }
 } // namespace FloorBlock::Pipeline

@@ -15,6 +15,8 @@
 #include <output/floor_safety_report.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
+#include <pipeline/strength_factor_view.h>
+#include <safety/strength_factor_field.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
@@ -31,6 +33,7 @@
 #include <fmt/format.h>
 #include <postprocess/increment_post_processor.h>
 #include <postprocess/joint_report.h>
+#include <postprocess/vtu_writer.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -90,6 +93,47 @@ namespace FloorBlock::Pipeline
     }
 
     /**
+     * What every increment adds in 2D: its floor safety factors (the
+     * history along the floor lift, Output::safety_along_lift()) and the
+     * strength-factor field of its VTU file. The full corner records are
+     * kept for the last increment only (after the solve).
+     */
+    template <int dim>
+    Postprocess::IncrementExtras
+    increment_extras(const Parameters::ScenarioParameters &scene,
+                     const Contact::ContactSolver<dim>    &solver,
+                     const Contact::ContactProblem<dim>   &problem)
+    {
+      if constexpr (dim != 2)
+        return {};
+      else
+        {
+          Postprocess::IncrementExtras extras;
+          extras.describe =
+            [&scene, &solver, &problem](
+              const dealii::TrilinosWrappers::MPI::Vector &solution,
+              Contact::IncrementResult                    &increment) {
+              for (const Safety::CornerSafety &corner :
+                   Safety::corner_safety(
+                     scene, solver.space(), problem.model, solution))
+                increment.corner_factors.push_back({corner.path.label(),
+                                                    corner.point_factor,
+                                                    corner.line_factor,
+                                                    corner.resolved()});
+            };
+          extras.cell_fields =
+            [&scene, &solver, &problem](
+              const dealii::TrilinosWrappers::MPI::Vector &solution) {
+              return Postprocess::CellFields{
+                {"strength_factor",
+                 Safety::cell_strength_factors(
+                   scene, solver.space(), problem.model, solution)}};
+            };
+          return extras;
+        }
+    }
+
+    /**
      * The contact solve on a mesh and what it writes: fem.json (with the
      * failure record if the load path stopped), joints.csv,
      * joint_profiles.csv and the VTU series. @p after_solve sees the
@@ -118,7 +162,8 @@ namespace FloorBlock::Pipeline
       std::optional<Output::SolveFailureRecord> failure_record;
       try
         {
-          outcome.result    = Postprocess::solve_with_reports(solver, numerics);
+          outcome.result = Postprocess::solve_with_reports(
+            solver, numerics, increment_extras(scene, solver, problem));
           outcome.converged = true;
         }
       catch (const Contact::ContactSolveFailure &failure)
@@ -311,10 +356,17 @@ namespace FloorBlock::Pipeline
                               if (extras.inspect)
                                 extras.inspect(solver);
                               if (write_vtu)
-                                write_deformed_view(solver,
-                                                    problem.model,
-                                                    folder.path_of(
-                                                      "deformed.png"));
+                                {
+                                  write_deformed_view(solver,
+                                                      problem.model,
+                                                      folder.path_of(
+                                                        "deformed.png"));
+                                  write_strength_factor_view(
+                                    scene,
+                                    solver,
+                                    problem.model,
+                                    folder.path_of("strength_factor.png"));
+                                }
                             });
   }
 

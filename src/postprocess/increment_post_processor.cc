@@ -12,6 +12,7 @@
 #include <postprocess/vtu_writer.h>
 
 #include <cmath>
+#include <utility>
 
 namespace FloorBlock::Postprocess
 {
@@ -21,13 +22,15 @@ namespace FloorBlock::Postprocess
   IncrementPostProcessor<dim>::IncrementPostProcessor(
     const ContactSolver<dim> &solver,
     const double              averaging_length,
-    const std::string        &vtu_directory)
+    const std::string        &vtu_directory,
+    IncrementExtras           extras)
     : fe_space(solver.space())
     , problem(solver.contact_problem())
     , nodes(solver.contact_nodes())
     , dirichlet_dofs(solver.supported_dofs())
     , averaging_length(averaging_length)
     , vtu_directory(vtu_directory)
+    , extras(std::move(extras))
     , face_length(face_length_of(fe_space.dof_handler().get_triangulation()))
   {
     for (const auto &joint : problem.joints)
@@ -74,6 +77,8 @@ namespace FloorBlock::Postprocess
             increment.motions[material] = in_plane;
           }
       }
+    if (extras.describe)
+      extras.describe(solution, increment);
   }
 
   template <int dim>
@@ -183,24 +188,32 @@ namespace FloorBlock::Postprocess
                         state_dofs,
                         node_states,
                         vtu_directory,
-                        output_records);
+                        output_records,
+                        extras.cell_fields ? extras.cell_fields(solution) :
+                                             CellFields());
   }
 
   template <int dim>
   SolveResult
   solve_with_reports(ContactSolver<dim>          &solver,
-                     const ContactSolverSettings &settings)
+                     const ContactSolverSettings &settings,
+                     const IncrementExtras       &extras)
   {
     IncrementPostProcessor<dim> reports(solver,
                                         settings.averaging_length,
-                                        settings.output_directory);
+                                        settings.output_directory,
+                                        extras);
     return solver.run(reports);
   }
 
   template class IncrementPostProcessor<2>;
   template class IncrementPostProcessor<3>;
   template SolveResult
-  solve_with_reports(ContactSolver<2> &, const ContactSolverSettings &);
+  solve_with_reports(ContactSolver<2> &,
+                     const ContactSolverSettings &,
+                     const IncrementExtras &);
   template SolveResult
-  solve_with_reports(ContactSolver<3> &, const ContactSolverSettings &);
+  solve_with_reports(ContactSolver<3> &,
+                     const ContactSolverSettings &,
+                     const IncrementExtras &);
 } // namespace FloorBlock::Postprocess

@@ -13,6 +13,8 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +29,22 @@ namespace FloorBlock::Postprocess
    * Reads the solver's mesh, problem and contact nodes; changes nothing
    * of the solver's state.
    */
+  /**
+   * What a caller adds to each increment from its solution: to its record
+   * (describe) and, when a VTU series is written, cell fields by name, one
+   * value per active cell (cell_fields). The pipeline adds the floor's
+   * safety factors and the strength-factor field.
+   */
+  struct IncrementExtras
+  {
+    std::function<void(const dealii::TrilinosWrappers::MPI::Vector &solution,
+                       Contact::IncrementResult                    &increment)>
+      describe;
+    std::function<std::vector<std::pair<std::string, std::vector<double>>>(
+      const dealii::TrilinosWrappers::MPI::Vector &solution)>
+      cell_fields;
+  };
+
   template <int dim>
   class IncrementPostProcessor : public Contact::IncrementObserver<dim>
   {
@@ -37,10 +55,13 @@ namespace FloorBlock::Postprocess
      *   stress (m).
      * @param[in] vtu_directory If not empty, a .pvd/.vtu series is
      *   written here per increment.
+     * @param[in] extras What the caller adds to every increment's record
+     *   (called last by describe()) and VTU file.
      */
     IncrementPostProcessor(const Contact::ContactSolver<dim> &solver,
                            const double                       averaging_length,
-                           const std::string                 &vtu_directory);
+                           const std::string                 &vtu_directory,
+                           IncrementExtras extras = {});
 
     /**
      * @brief Fills the balance, joint reports and rigid motions of
@@ -79,6 +100,7 @@ namespace FloorBlock::Postprocess
     const dealii::IndexSet                       &dirichlet_dofs;
     const double                                  averaging_length;
     const std::string                             vtu_directory;
+    const IncrementExtras                         extras;
     /**
      * Length of face the mesh stands for (m): 1 in 2D, the extent along
      * z in 3D; the reports give forces per metre of it.
@@ -94,12 +116,13 @@ namespace FloorBlock::Postprocess
 
   /**
    * @brief Runs @p solver with an IncrementPostProcessor of the averaging
-   * length and VTU directory of @p settings.
+   * length and VTU directory of @p settings, and @p extras.
    * @return Every converged increment with its joint reports; throws as
    *   ContactSolver::run().
    */
   template <int dim>
   Contact::SolveResult
   solve_with_reports(Contact::ContactSolver<dim>          &solver,
-                     const Contact::ContactSolverSettings &settings);
+                     const Contact::ContactSolverSettings &settings,
+                     const IncrementExtras                &extras = {});
 } // namespace FloorBlock::Postprocess

@@ -222,7 +222,8 @@ namespace FloorBlock::Postprocess
     const std::vector<dealii::types::global_dof_index> &state_dofs,
     const std::vector<double>                          &states,
     const std::string                                  &directory,
-    std::vector<std::pair<double, std::string>>        &records)
+    std::vector<std::pair<double, std::string>>        &records,
+    const CellFields                                   &cell_fields)
   {
     const auto    &dof_handler  = space.dof_handler();
     const MPI_Comm communicator = dof_handler.get_communicator();
@@ -265,6 +266,14 @@ namespace FloorBlock::Postprocess
     const Postprocessor stress(model);
     data_out.add_data_vector(displacement, stress);
     data_out.add_data_vector(material, "material_id");
+    // DataOut keeps references: the vectors live until the files are written.
+    std::vector<dealii::Vector<float>> extra_fields;
+    extra_fields.reserve(cell_fields.size());
+    for (const auto &[name, values] : cell_fields)
+      {
+        extra_fields.emplace_back(values.begin(), values.end());
+        data_out.add_data_vector(extra_fields.back(), name);
+      }
     data_out.build_patches(space.mapping(), space.degree());
     // deal.II defaults to best_compression, which took a quarter of the
     // default scene's run time in zlib; best_speed files are about 10 %
@@ -284,7 +293,8 @@ namespace FloorBlock::Postprocess
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
-                      std::vector<std::pair<double, std::string>> &);
+                      std::vector<std::pair<double, std::string>> &,
+                      const CellFields &);
   template void
   write_vtu_increment(const Fem::FeSpace<3> &,
                       const Fem::ElasticModel<3> &,
@@ -292,5 +302,6 @@ namespace FloorBlock::Postprocess
                       const std::vector<dealii::types::global_dof_index> &,
                       const std::vector<double> &,
                       const std::string &,
-                      std::vector<std::pair<double, std::string>> &);
+                      std::vector<std::pair<double, std::string>> &,
+                      const CellFields &);
 } // namespace FloorBlock::Postprocess

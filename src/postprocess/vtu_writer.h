@@ -11,6 +11,9 @@
 
 namespace FloorBlock::Postprocess
 {
+  /** Cell fields of a VTU file by name, one value per active cell. */
+  using CellFields = std::vector<std::pair<std::string, std::vector<double>>>;
+
   /**
    * @brief Writes one increment as `<directory>/solution-NNNN.vtu` and
    * rewrites `<directory>/solution.pvd` listing all increments so far.
@@ -28,6 +31,7 @@ namespace FloorBlock::Postprocess
    * @param[in] states State value of each contact node.
    * @param[in] directory Output folder (created if missing).
    * @param[in,out] records (index, file name) of the increments written.
+   * @param[in] cell_fields Further cell fields (e.g. strength_factor).
    */
   template <int dim>
   void
@@ -38,5 +42,6 @@ namespace FloorBlock::Postprocess
     const std::vector<dealii::types::global_dof_index> &state_dofs,
     const std::vector<double>                          &states,
     const std::string                                  &directory,
-    std::vector<std::pair<double, std::string>>        &records);
+    std::vector<std::pair<double, std::string>>        &records,
+    const CellFields                                   &cell_fields = {});
 } // namespace FloorBlock::Postprocess

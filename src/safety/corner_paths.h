@@ -29,6 +29,13 @@ namespace FloorBlock::Safety
     std::string      block;      ///< "block j", "block j+1" or "face block"
     Geometry::Point2 start;      ///< the corner's surface point (m)
     Geometry::Point2 direction;  ///< unit, into the block
+
+    /** "face block at vertical 6": how reports and estimates name it. */
+    std::string
+    label() const
+    {
+      return block + " at " + joint_name;
+    }
   };
 
   /**

@@ -6,17 +6,14 @@
 
 namespace FloorBlock::Safety
 {
-  namespace
+  Strength::PlaneStrainStress
+  plane_strain(const Fem::PointStress &stress)
   {
-    Strength::PlaneStrainStress
-    plane_strain(const Fem::PointStress &stress)
-    {
-      return {stress.in_plane[0][0],
-              stress.in_plane[1][1],
-              stress.in_plane[0][1],
-              stress.out_of_plane};
-    }
-  } // namespace
+    return {stress.in_plane[0][0],
+            stress.in_plane[1][1],
+            stress.in_plane[0][1],
+            stress.out_of_plane};
+  }
 
   std::vector<CornerSafety>
   corner_safety(const Parameters::ScenarioParameters        &scene,

@@ -2,9 +2,11 @@
 
 #include <fem/elastic_model.h>
 #include <fem/fe_space.h>
+#include <fem/point_stress.h>
 #include <parameters/scenario_parameters.h>
 #include <safety/corner_paths.h>
 #include <strength/critical_distance.h>
+#include <strength/strength_factor.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -12,6 +14,10 @@
 
 namespace FloorBlock::Safety
 {
+  /** @brief The FEM's stress at a point as Strength:: reads it. */
+  Strength::PlaneStrainStress
+  plane_strain(const Fem::PointStress &stress);
+
   /** Samples of the stress along [0, L] of each path: the FE field is
    * smooth within cells, so this many points resolve cells down to L/32
    * with linear interpolation between them. */

@@ -272,12 +272,15 @@ namespace FloorBlock::Scene
   critical_distance_sizes(const Parameters::ScenarioParameters &scene)
   {
     const unsigned int n_cells = scene.mesh.cells_per_critical_distance;
-    if (n_cells == 0)
+    // The corner safety factors are read from 2D solves only; a 3D mesh
+    // swept from this section would carry the fine corners along its
+    // whole length for nothing.
+    if (n_cells == 0 || scene.geometry.dimension == 3)
       return {};
     const double L    = scene.strength.critical_distance;
     const double size = std::max(
       L / n_cells,
-      Geometry::min_relative_corner_size *
+      Geometry::min_relative_local_size *
         std::min(scene.geometry.block_width, scene.geometry.block_height));
     const double r = scene.geometry.corner_rounding_radius;
 

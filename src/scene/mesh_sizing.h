@@ -146,10 +146,11 @@ namespace FloorBlock::Scene
   /**
    * @brief Size requests for the floor safety factor: cells of L / N
    * (Strength/Critical distance L, N = Mesh/Cells per critical distance,
-   * not below Geometry::min_relative_corner_size of the smaller block
+   * not below Geometry::min_relative_local_size of the smaller block
    * side) along the inward bisectors of both top corners of every
    * vertical joint, from the corner out to critical_distance_reach L: the
-   * paths src/safety/ reads the stresses along. Empty when N = 0.
+   * paths src/safety/ reads the stresses along. Empty when N = 0 and for
+   * 3D scenes (the safety factors come from 2D solves).
    */
   std::vector<Geometry::LocalSize>
   critical_distance_sizes(const Parameters::ScenarioParameters &scene);

@@ -56,6 +56,64 @@ namespace FloorBlock::Studies
                std::optional<double>(absolute_error / std::abs(refined_value)) :
                std::nullopt;
     }
+
+    using CornerFactor = double                Safety::CornerSafety::*;
+    using CornerError  = Output::FigureError Output::CornerErrors::*;
+
+    /** The safety factors of a corner and where their estimates go. */
+    const std::pair<CornerFactor, CornerError> estimated_corner_factors[] = {
+      {&Safety::CornerSafety::point_factor, &Output::CornerErrors::point_factor},
+      {&Safety::CornerSafety::line_factor, &Output::CornerErrors::line_factor}};
+
+    /** The corner of @p corners with @p label, if its path is resolved. */
+    const Safety::CornerSafety *
+    resolved_corner(const std::vector<Safety::CornerSafety> &corners,
+                    const std::string                       &label)
+    {
+      for (const Safety::CornerSafety &corner : corners)
+        if (corner.path.label() == label)
+          return corner.resolved() ? &corner : nullptr;
+      return nullptr;
+    }
+
+    /**
+     * The corners' safety factors: a factor is a function of the stress
+     * at and near L/2, which converges like the stresses (to first order
+     * with FE degree 1 where the path's cells are L/16), so the same
+     * factor per difference as the joints' figures. Only corners that both
+     * solves resolve: elsewhere a factor is a cell's value, no figure.
+     */
+    void
+    estimate_corner_factors(Output::FemErrorEstimate   &estimate,
+                            const Pipeline::FemOutcome &coarse,
+                            const Pipeline::FemOutcome &fine,
+                            const double                factor)
+    {
+      const bool coarse_reported =
+        estimate.reported_solve == Output::ReportedSolve::coarse;
+      for (const Safety::CornerSafety &coarse_corner :
+           coarse.report.corner_safety)
+        {
+          const std::string label = coarse_corner.path.label();
+          const Safety::CornerSafety *fine_corner =
+            resolved_corner(fine.report.corner_safety, label);
+          if (!coarse_corner.resolved() || fine_corner == nullptr)
+            continue;
+          Output::CornerErrors &errors = estimate.corners[label];
+          for (const auto &[value, error] : estimated_corner_factors)
+            {
+              Output::FigureError &entry = errors.*error;
+              entry.coarse_value         = coarse_corner.*value;
+              entry.refined_value        = (*fine_corner).*value;
+              entry.value =
+                coarse_reported ? entry.coarse_value : entry.refined_value;
+              entry.absolute_error =
+                factor * std::abs(entry.coarse_value - entry.refined_value);
+              entry.relative_error =
+                relative_to(entry.absolute_error, entry.refined_value);
+            }
+        }
+    }
   } // namespace
 
   Parameters::ScenarioParameters
@@ -124,6 +182,7 @@ namespace FloorBlock::Studies
             entry.coarse_value         = coarse_value;
           }
       }
+    estimate_corner_factors(estimate, coarse, fine, factor);
     return estimate;
   }
 
@@ -131,7 +190,8 @@ namespace FloorBlock::Studies
   {
     /**
      * Calls @p widening(entry, other_value) for every figure of every
-     * joint that @p estimate and the converged solve @p other share; it
+     * joint and every corner factor that @p estimate and the converged
+     * solve @p other share (a corner only where @p other resolves it); it
      * returns the error the entry should have at least. Raises the
      * entry's error to it and returns whether any was raised.
      */
@@ -143,24 +203,30 @@ namespace FloorBlock::Studies
     {
       if (!estimate.available || !other.converged)
         return false;
-      bool widened = false;
+      bool       widened = false;
+      const auto raise   = [&](Output::FigureError &entry, const double value) {
+        const double least = widening(entry, value);
+        if (least > entry.absolute_error)
+          {
+            entry.absolute_error = least;
+            entry.relative_error = relative_to(least, entry.refined_value);
+            widened              = true;
+          }
+      };
       for (const Contact::JointReport &joint : final_joints(other))
         {
           const auto errors = estimate.joints.find(joint.name);
-          if (errors == estimate.joints.end())
-            continue;
-          for (const auto &[figure, error, own_uncertainty] : estimated_figures)
-            {
-              Output::FigureError &entry = errors->second.*error;
-              const double         least = widening(entry, joint.*figure);
-              if (least > entry.absolute_error)
-                {
-                  entry.absolute_error = least;
-                  entry.relative_error =
-                    relative_to(least, entry.refined_value);
-                  widened = true;
-                }
-            }
+          if (errors != estimate.joints.end())
+            for (const auto &[figure, error, own_uncertainty] :
+                 estimated_figures)
+              raise(errors->second.*error, joint.*figure);
+        }
+      for (const Safety::CornerSafety &corner : other.report.corner_safety)
+        {
+          const auto errors = estimate.corners.find(corner.path.label());
+          if (errors != estimate.corners.end() && corner.resolved())
+            for (const auto &[value, error] : estimated_corner_factors)
+              raise(errors->second.*error, corner.*value);
         }
       return widened;
     }

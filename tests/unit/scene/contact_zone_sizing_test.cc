@@ -191,7 +191,15 @@ TEST(CriticalDistanceSizes, FollowTheCornerBisectors)
   EXPECT_EQ(per_joint.size(), 6u);
 }
 
-TEST(CriticalDistanceSizes, NoneByDefault)
+TEST(CriticalDistanceSizes, NoneWhenNotAskedForOrInThreeDimensions)
 {
-  EXPECT_TRUE(Scene::critical_distance_sizes(default_scene()).empty());
+  auto scene = default_scene();
+  ASSERT_EQ(scene.mesh.cells_per_critical_distance, 16u) << "params/default.prm";
+  EXPECT_FALSE(Scene::critical_distance_sizes(scene).empty());
+  scene.mesh.cells_per_critical_distance = 0;
+  EXPECT_TRUE(Scene::critical_distance_sizes(scene).empty());
+  // The corner factors come from 2D solves; a swept 3D mesh needs none.
+  scene.mesh.cells_per_critical_distance = 16;
+  scene.geometry.dimension               = 3;
+  EXPECT_TRUE(Scene::critical_distance_sizes(scene).empty());
 }
