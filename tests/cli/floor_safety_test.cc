@@ -73,4 +73,49 @@ namespace
     EXPECT_FALSE(safety.contains("governing"));
     EXPECT_FALSE(std::filesystem::exists(folder + "/floor_safety_paths.csv"));
   }
+
+  // run's answer: the governing corner's factors with their estimated
+  // errors (the level's check resolves the paths too), the chapter's
+  // route beside them, FS along the lift, and the strength-factor field in
+  // the VTU files and around the face corner.
+  TEST(FloorSafety, RunReportsTheFactorsWithErrorsAlongTheLift)
+  {
+    const std::string folder = fresh_output_folder("floor_safety_run");
+    const auto        run    = run_floorblock(
+      "run " + three_blocks +
+      " --set \"Strength/Critical distance=0.05\""
+      " --set \"Mesh/Cells per critical distance=8\" --set "
+      "\"Solver/FE degree=1\" --set \"Solver/Error estimate=refined solve\" "
+      "--output " +
+      shell_quoted(folder));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_NE(run.output.find("floor safety at the governing corner"),
+              std::string::npos)
+      << run.output;
+    EXPECT_NE(run.output.find("floor safety along the lift"),
+              std::string::npos);
+    const json safety = read_json(folder + "/summary.json")["floor_safety"];
+    ASSERT_TRUE(safety.contains("governing")) << safety.dump(1);
+    const json &governing = safety["governing"];
+    EXPECT_EQ(governing["status"], "estimated");
+    EXPECT_GE(governing["safety_factor_point_relative_error"].get<double>(),
+              0.);
+    EXPECT_GE(governing["safety_factor_line_relative_error"].get<double>(),
+              0.);
+    EXPECT_TRUE(safety.contains("floor_strength_Pa"));
+    const json &along = safety["along_lift"];
+    ASSERT_GT(along["lift_m"].size(), 0u);
+    EXPECT_EQ(along["lift_m"].size(), along["safety_factor_point"].size());
+    // The last increment of the lift is the reported state.
+    EXPECT_NEAR(along["safety_factor_point"].back().get<double>(),
+                governing["safety_factor_point"].get<double>(),
+                1e-12);
+    EXPECT_TRUE(std::filesystem::exists(folder + "/floor_safety_vs_lift.png"));
+    EXPECT_TRUE(std::filesystem::exists(folder + "/strength_factor.png"));
+    EXPECT_NE(read_text(folder + "/vtu/solution-0000.vtu")
+                .find("Name=\"strength_factor\""),
+              std::string::npos);
+    const std::string report = read_text(folder + "/report.md");
+    EXPECT_NE(report.find("## Floor safety"), std::string::npos);
+  }
 } // namespace

@@ -196,3 +196,71 @@ TEST(WidenToContain, NextLevelInsideLeavesTheEstimate)
   EXPECT_DOUBLE_EQ(*after.contact_length.next_level_value, 0.3472025);
   EXPECT_EQ(estimate.method.find("outside"), std::string::npos);
 }
+
+namespace
+{
+  /** A resolved corner (cells of L/8) with the given factors. */
+  Safety::CornerSafety
+  corner(const double point_factor, const double line_factor)
+  {
+    Safety::CornerSafety result;
+    result.path.block        = "face block";
+    result.path.joint_name   = "vertical 6";
+    result.critical_distance = 0.02;
+    result.largest_cell      = 0.02 / 8.;
+    result.point_factor      = point_factor;
+    result.line_factor       = line_factor;
+    return result;
+  }
+} // namespace
+
+// The tool shall estimate the corners' safety factors like the joints'
+// figures: 6 times the difference for the coarse solve, 3 times for the
+// refined one, by corner label.
+TEST(RefinedSolveError, CornerFactorsGetTheSameFactorPerDifference)
+{
+  auto with_corner    = coarse;
+  auto fine_corner    = fine;
+  with_corner.report.corner_safety = {corner(0.535, 0.673)};
+  fine_corner.report.corner_safety = {corner(0.525, 0.674)};
+  const auto estimate = Studies::refined_solve_error(with_corner, fine_corner);
+  const auto &point   = estimate.corners.at("face block at vertical 6").point_factor;
+  EXPECT_DOUBLE_EQ(point.value, 0.535);
+  EXPECT_NEAR(point.absolute_error, 6. * 0.010, 1e-12);
+  EXPECT_NEAR(*point.relative_error, 6. * 0.010 / 0.525, 1e-12);
+  const auto refined = Studies::refined_solve_error(
+    with_corner, fine_corner, ReportedSolve::refined);
+  const auto &line = refined.corners.at("face block at vertical 6").line_factor;
+  EXPECT_DOUBLE_EQ(line.value, 0.674);
+  EXPECT_NEAR(line.absolute_error, 3. * 0.001, 1e-12);
+}
+
+// A corner that either solve does not resolve has a cell's value, not a
+// figure: no estimate for it.
+TEST(RefinedSolveError, UnresolvedCornerGetsNoEstimate)
+{
+  auto with_corner = coarse;
+  auto fine_corner = fine;
+  with_corner.report.corner_safety = {corner(0.535, 0.673)};
+  fine_corner.report.corner_safety = {corner(0.525, 0.674)};
+  fine_corner.report.corner_safety.front().largest_cell = 0.02 / 2.;
+  const auto estimate = Studies::refined_solve_error(with_corner, fine_corner);
+  EXPECT_TRUE(estimate.corners.empty());
+}
+
+// A confirming level outside a corner factor's bracket widens it to the
+// distance, as for the joints' figures.
+TEST(RefinedSolveError, NextLevelOutsideTheBracketWidensACornerFactor)
+{
+  auto with_corner = coarse;
+  auto fine_corner = fine;
+  with_corner.report.corner_safety = {corner(0.535, 0.673)};
+  fine_corner.report.corner_safety = {corner(0.534, 0.673)};
+  auto estimate = Studies::refined_solve_error(with_corner, fine_corner);
+  auto next     = fine_corner;
+  next.report.corner_safety = {corner(0.500, 0.673)};
+  Studies::widen_to_contain(estimate, next, 1);
+  const auto &point = estimate.corners.at("face block at vertical 6").point_factor;
+  EXPECT_NEAR(point.absolute_error, 0.035, 1e-12);
+  EXPECT_DOUBLE_EQ(*point.next_level_value, 0.500);
+}
