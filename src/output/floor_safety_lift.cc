@@ -16,7 +16,7 @@ namespace FloorBlock::Output
         for (const Contact::CornerFactors &corner : point.corner_factors)
           if (corner.resolved &&
               (governing == nullptr ||
-               corner.point_factor < governing->point_factor))
+               corner.line_factor < governing->line_factor))
             governing = &corner;
         if (governing != nullptr)
           along.push_back({point.base_lift,
@@ -30,15 +30,15 @@ namespace FloorBlock::Output
   std::optional<double>
   lift_at_unit_safety(const std::vector<LiftSafety> &along)
   {
-    if (along.empty() || along.front().point_factor <= 1.)
+    if (along.empty() || along.front().line_factor <= 1.)
       return std::nullopt;
     for (std::size_t k = 1; k < along.size(); ++k)
-      if (along[k].point_factor <= 1.)
+      if (along[k].line_factor <= 1.)
         {
           const LiftSafety &a = along[k - 1];
           const LiftSafety &b = along[k];
           const double      t =
-            (a.point_factor - 1.) / (a.point_factor - b.point_factor);
+            (a.line_factor - 1.) / (a.line_factor - b.line_factor);
           return a.base_lift + t * (b.base_lift - a.base_lift);
         }
     return std::nullopt;
@@ -51,18 +51,19 @@ namespace FloorBlock::Output
       return "no increment of the lift resolves a corner's path";
     if (const auto lift = lift_at_unit_safety(along))
       return fmt::format(
-        "the governing corner's point-method FS reaches 1 at a floor lift "
+        "the governing corner's FS (line method) reaches 1 at a floor lift "
         "of {:.2f} mm (between increments)",
         *lift * 1e3);
-    if (along.front().point_factor <= 1.)
+    if (along.front().line_factor <= 1.)
       return fmt::format(
-        "FS is below 1 from the lift's first increment on ({:.3f} at "
-        "{:.2f} mm): the floor fails before the lift, under the blocks' "
-        "weight and the support load",
-        along.front().point_factor,
+        "FS (line method) is below 1 from the lift's first increment on "
+        "({:.3f} at {:.2f} mm): the floor fails before the lift, under the "
+        "blocks' weight and the support load",
+        along.front().line_factor,
         along.front().base_lift * 1e3);
-    return fmt::format("FS stays above 1 over the lift (smallest {:.3f})",
-                       along.back().point_factor);
+    return fmt::format(
+      "FS (line method) stays above 1 over the lift ({:.3f} at its end)",
+      along.back().line_factor);
   }
 
   json

@@ -20,14 +20,15 @@ namespace FloorBlock::Output
   };
 
   /**
-   * @brief The governing corner (smallest point-method factor among the
-   * resolved ones) at every increment of @p history that resolves one.
+   * @brief The governing corner (smallest line-method factor among the
+   * resolved ones, Safety::verdict_factor()) at every increment of
+   * @p history that resolves one.
    */
   std::vector<LiftSafety>
   safety_along_lift(const std::vector<LiftHistoryPoint> &history);
 
   /**
-   * @brief The floor lift at which the governing point-method factor
+   * @brief The floor lift at which the governing line-method factor
    * first reaches 1, linear between the increments around it; none if it
    * stays above 1, or is below 1 from the lift's first increment on (then
    * the floor fails before the lift, under its weight and the supports).

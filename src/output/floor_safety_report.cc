@@ -57,17 +57,21 @@ namespace FloorBlock::Output
     return {
       {"critical_distance_m", governing.critical_distance},
       {"method_text",
-       "Hoek-Brown strength factor sigma_1f(sigma_3)/sigma_1 (compression "
-       "positive) of the stress at L/2 (point method) and of the mean "
+       "Hoek-Brown strength factor (the factor by which the stress state, "
+       "compression positive, can be scaled before it reaches the "
+       "envelope) of the stress at L/2 (point method) and of the mean "
        "stress over L (line method), along the inward bisector of each "
-       "floor-level block corner from its surface point (src/safety/)"},
+       "floor-level block corner from its surface point; the verdict and "
+       "the governing corner go by the line method (src/safety/)"},
       {"corners", records},
       {"governing",
        {{"joint", governing.path.joint_name},
         {"block", governing.path.block},
         {"safety_factor_point", governing.point_factor},
         {"safety_factor_line", governing.line_factor},
-        {"status", governing.point_factor < 1. ? "fails" : "holds"}}}};
+        {"verdict_method", "line"},
+        {"status",
+         Safety::verdict_factor(governing) < 1. ? "fails" : "holds"}}}};
   }
 
   std::string
@@ -80,15 +84,15 @@ namespace FloorBlock::Output
       return "  floor safety: " + unresolved_text(governing) + "\n";
     return fmt::format(
       "  floor safety (Hoek-Brown, critical distance L = {:.1f} mm): "
-      "governing corner {} at {}: FS = {:.2f} (point, sigma_1 = {:.2f} MPa "
-      "at L/2), {:.2f} (line, mean over L): {}\n",
+      "governing corner {} at {}: FS = {:.2f} (line, mean over L: the "
+      "verdict), {:.2f} (point, sigma_1 = {:.2f} MPa at L/2): {}\n",
       governing.critical_distance * 1e3,
       governing.path.block,
       governing.path.joint_name,
+      governing.line_factor,
       governing.point_factor,
       governing.point_stresses.sigma_1 / Units::MPa,
-      governing.line_factor,
-      verdict(governing.point_factor));
+      verdict(Safety::verdict_factor(governing)));
   }
 
   std::string

@@ -120,7 +120,9 @@ namespace FloorBlock::Output
         return summary;
       }
     summary["governing"] = corner_json(governing, estimate);
-    summary["status"]    = governing.point_factor < 1. ? "fails" : "holds";
+    summary["verdict_method"] = "line";
+    summary["status"] =
+      Safety::verdict_factor(governing) < 1. ? "fails" : "holds";
     return summary;
   }
 
@@ -140,15 +142,16 @@ namespace FloorBlock::Output
     const CornerErrors         *errors    = errors_of(governing, estimate);
     return fmt::format(
              "  floor safety at the governing corner ({}, L = {:.1f} mm): "
-             "FS = {:.3f} {} (point method), {:.3f} {} (line method): {}\n",
+             "FS = {:.3f} {} (line method, the verdict), {:.3f} {} (point "
+             "method): {}\n",
              governing.path.label(),
              governing.critical_distance * 1e3,
-             governing.point_factor,
-             error_text(errors, &CornerErrors::point_factor),
              governing.line_factor,
              error_text(errors, &CornerErrors::line_factor),
-             governing.point_factor < 1. ? "the corner fails" :
-                                           "the corner holds") +
+             governing.point_factor,
+             error_text(errors, &CornerErrors::point_factor),
+             Safety::verdict_factor(governing) < 1. ? "the corner fails" :
+                                                      "the corner holds") +
            route;
   }
 
@@ -168,7 +171,8 @@ namespace FloorBlock::Output
     text += fmt::format(
       "The FEM's route: the Hoek-Brown strength factor of the stress at L/2 "
       "(point method) and of its mean over L (line method) along each "
-      "floor-level corner's bisector, L = {:.1f} mm (src/safety/).\n\n"
+      "floor-level corner's bisector, L = {:.1f} mm (src/safety/); the "
+      "verdict goes by the line method.\n\n"
       "| corner | FS point | error | FS line | error |\n|---|---|---|---|---|\n",
       corners.front().critical_distance * 1e3);
     for (const Safety::CornerSafety &corner : corners)

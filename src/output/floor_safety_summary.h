@@ -20,7 +20,8 @@ namespace FloorBlock::Output
    * status saying why, else "estimated"); the governing corner; beside them the chapter's route,
    * safety_factor_eq_6_53 per mechanism (floor strength over Eq. 6.53's
    * sigma_max; absent where that has no answer) and floor_strength_Pa.
-   * status: "holds", "fails" or "unresolved" (with status_text), or
+   * status: "holds", "fails" (by the line method, verdict_method;
+   * Safety::verdict_factor()) or "unresolved" (with status_text), or
    * "not evaluated" where the FEM gave no corner stresses (3D, rigid
    * blocks, no converged increment).
    */

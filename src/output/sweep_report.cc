@@ -21,19 +21,42 @@ namespace FloorBlock::Output
                                           const Scene::MechanismResult &)>;
     using PointKey = std::function<double(const Scene::FigurePoint &)>;
 
+    /** A value every panel draws across as a dashed line, with its key. */
+    struct HorizontalLine
+    {
+      double      value;
+      std::string key;
+    };
+
+    /**
+     * The scene rock's strength sigma_c (MPa) as a line of Figures
+     * 6.10/6.11: the cases whose sigma_max lies above it have FS < 1 by
+     * the chapter's route. The key stays short, as long as the curves'
+     * keys: a longer one widens the key box over the curves of a panel a
+     * third of the picture wide; the figure's title says the rest.
+     */
+    HorizontalLine
+    strength_line(const Scene::FigurePoint &point)
+    {
+      const double strength = point.closed_forms.floor_strength / MPa;
+      return {strength, fmt::format("sigma_c = {:.2f} MPa", strength)};
+    }
+
     /**
      * A multiplot with one panel per mechanism and one curve per value of
      * @p curve_key; x is the bedding friction in degrees. Points without a
      * finite, admissible value are left out of their curve, and the panel's
-     * title says how many.
+     * title says how many. A @p line is drawn dashed across every panel
+     * with an answer.
      */
     std::string
     panels_by_mechanism(const std::vector<const Scene::FigurePoint *> &points,
                         const std::string                             &title,
                         const std::string                             &y_label,
-                        const PointKey    &curve_key,
-                        const std::string &curve_label_format,
-                        const PointValue  &value)
+                        const PointKey                      &curve_key,
+                        const std::string                   &curve_label_format,
+                        const PointValue                    &value,
+                        const std::optional<HorizontalLine> &line = {})
     {
       std::string script = fmt::format(
         "set multiplot layout 1,3 title '{}'\nset grid\nset key top left\n"
@@ -81,6 +104,11 @@ namespace FloorBlock::Output
                                   fmt::format(curve_label_format, key));
               ++index;
             }
+          if (line)
+            plot +=
+              fmt::format(", {} with lines dt 2 lw 2 lc rgb 'black' title '{}'",
+                          line->value,
+                          line->key);
           script += data + plot + "\n";
         }
       return script + "unset multiplot\n";
@@ -104,26 +132,32 @@ namespace FloorBlock::Output
     std::string csv = fmt::format(
       "# {}\n# Q_face: Q_n between block n and the face block. Empty cells: "
       "no finite, admissible answer (see the status columns; the corner "
-      "contact's status is its mechanism's when that is not ok).\n",
+      "contact's status is its mechanism's when that is not ok).\n# "
+      "floor_strength_Pa: the rock mass's uniaxial compressive strength "
+      "sigma_ci s^a (Strength/); <mechanism>_safety_factor_eq_6_53 = "
+      "floor_strength_Pa / <mechanism>_sigma_max_Pa, the chapter's route, "
+      "empty where sigma_max is empty or not positive.\n",
       numbering_note);
-    csv += "figure,k_m,phi_h_deg,phi_v_deg,support_load_t,y_m";
+    csv += "figure,k_m,phi_h_deg,phi_v_deg,support_load_t,y_m,"
+           "floor_strength_Pa";
     for (const auto &entry : points.front().closed_forms.mechanisms)
       csv += fmt::format(
         ",{0}_status,{0}_Q_face_N_per_m,{0}_Q_face_N_over_b,{0}_A_m2,"
-        "{0}_sigma_max_Pa,{0}_contact_status",
+        "{0}_sigma_max_Pa,{0}_contact_status,{0}_safety_factor_eq_6_53",
         Scene::to_string(entry.mechanism));
     csv += "\n";
 
     for (const auto &point : points)
       {
         csv +=
-          fmt::format("{},{},{:.3f},{:.3f},{:.3f},{:.9e}",
+          fmt::format("{},{},{:.3f},{:.3f},{:.3f},{:.9e},{:.9e}",
                       point.figure,
                       point.curvature,
                       Units::radians_to_degrees(point.bedding_friction),
                       Units::radians_to_degrees(point.vertical_friction),
                       point.support_load / Units::tonnes_force_to_newtons(1.0),
-                      point.closed_forms.floor_lift);
+                      point.closed_forms.floor_lift,
+                      point.closed_forms.floor_strength);
         for (const auto &entry : point.closed_forms.mechanisms)
           {
             csv += "," + Analytic::to_string(entry.forces.status);
@@ -138,6 +172,11 @@ namespace FloorBlock::Output
                                  entry.contact.max_stress) :
                      std::string(",,");
             csv += "," + Analytic::to_string(face_contact_status(entry));
+            // Scene::evaluate_closed_forms() sets the factor only where
+            // sigma_max is admissible and positive.
+            csv += entry.floor_safety_factor ?
+                     fmt::format(",{:.9e}", *entry.floor_safety_factor) :
+                     std::string(",");
           }
         csv += "\n";
       }
@@ -175,8 +214,11 @@ namespace FloorBlock::Output
              [&](const Scene::FigurePoint &p) {
                return p.curvature == curvature;
              }),
-      fmt::format("sigma_max at the face (Eq. 6.53), y = x^2/{:.0f}",
-                  curvature),
+      fmt::format("sigma_max at the face (Eq. 6.53), y = x^2/{:.0f}; dashed: "
+                  "rock mass strength sigma_c = {:.2f} MPa (Strength/), above "
+                  "it FS = sigma_c / sigma_max < 1",
+                  curvature,
+                  points.front().closed_forms.floor_strength / MPa),
       "sigma_max (MPa)",
       [](const Scene::FigurePoint &p) {
         return p.support_load / Units::tonnes_force_to_newtons(1.0);
@@ -187,6 +229,7 @@ namespace FloorBlock::Output
         if (!has_admissible_contact(entry))
           return std::nullopt;
         return entry.contact.max_stress / MPa;
-      });
+      },
+      strength_line(points.front()));
   }
 } // namespace FloorBlock::Output

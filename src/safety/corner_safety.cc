@@ -82,6 +82,12 @@ namespace FloorBlock::Safety
            critical_distance / min_cells_per_critical_distance * (1. + 1e-9);
   }
 
+  double
+  verdict_factor(const CornerSafety &corner)
+  {
+    return corner.line_factor;
+  }
+
   const CornerSafety &
   governing_corner(const std::vector<CornerSafety> &corners)
   {
@@ -96,7 +102,7 @@ namespace FloorBlock::Safety
                                  return a.resolved();
                                if (!a.resolved())
                                  return a.largest_cell > b.largest_cell;
-                               return a.point_factor < b.point_factor;
+                               return verdict_factor(a) < verdict_factor(b);
                              });
   }
 } // namespace FloorBlock::Safety

@@ -22,13 +22,13 @@ namespace FloorBlock::Studies
                fmt::format("kn_{:.0e}", record.normal_stiffness);
     }
 
-    /** A corner's verdict: holds or fails by the point method. */
+    /** A corner's verdict: holds or fails (Safety::verdict_factor()). */
     std::string
     verdict(const Safety::CornerSafety &corner)
     {
       if (!corner.resolved())
         return "unresolved";
-      return corner.point_factor < 1. ? "fails" : "holds";
+      return Safety::verdict_factor(corner) < 1. ? "fails" : "holds";
     }
 
     /** The face block's corner at the face joint (joint n), if any. */

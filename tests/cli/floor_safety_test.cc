@@ -46,9 +46,10 @@ namespace
         EXPECT_GT(point, 0.);
         EXPECT_GT(line, 0.);
         EXPECT_LE(point, 100.);
-        smallest = std::min(smallest, point);
+        smallest = std::min(smallest, line);
       }
-    EXPECT_DOUBLE_EQ(safety["governing"]["safety_factor_point"].get<double>(),
+    // The verdict and the governing corner go by the line method.
+    EXPECT_DOUBLE_EQ(safety["governing"]["safety_factor_line"].get<double>(),
                      smallest);
     EXPECT_EQ(safety["governing"]["status"],
               smallest < 1. ? "fails" : "holds");

@@ -20,7 +20,8 @@ namespace
   }
 } // namespace
 
-// The governing corner is the resolved one with the smallest point factor.
+// The governing corner is the resolved one with the smallest line factor
+// (Safety::verdict_factor()).
 TEST(SafetyAlongLift, GoverningCornerIsTheSmallestResolvedOne)
 {
   const auto along = Output::safety_along_lift(
@@ -31,13 +32,13 @@ TEST(SafetyAlongLift, GoverningCornerIsTheSmallestResolvedOne)
   EXPECT_EQ(along[1].corner, "block 6 at vertical 6");
 }
 
-// FS = 1 is found between the increments around it, linearly: 1.5 at
-// 20 mm and 0.5 at 30 mm give 25 mm.
+// FS = 1 (line method) is found between the increments around it,
+// linearly: 1.5 at 20 mm and 0.5 at 30 mm give 25 mm.
 TEST(SafetyAlongLift, UnitSafetyIsInterpolatedBetweenIncrements)
 {
   const auto along = Output::safety_along_lift({increment(0.01, 2.0, 3.0),
-                                                increment(0.02, 1.5, 3.0),
-                                                increment(0.03, 0.5, 3.0)});
+                                                increment(0.02, 1.4, 3.0),
+                                                increment(0.03, 0.4, 3.0)});
   const auto lift = Output::lift_at_unit_safety(along);
   ASSERT_TRUE(lift.has_value());
   EXPECT_NEAR(*lift, 0.025, 1e-15);
@@ -55,7 +56,7 @@ TEST(SafetyAlongLift, NoCrossingIsSaidInWords)
   EXPECT_NE(Output::unit_safety_text(above).find("stays above 1"), std::string::npos);
   EXPECT_FALSE(Output::safety_along_lift_json(above).contains("lift_at_safety_factor_1_m"));
   const auto below = Output::safety_along_lift(
-    {increment(0.01, 0.9, 3.0), increment(0.02, 0.5, 3.0)});
+    {increment(0.01, 0.8, 3.0), increment(0.02, 0.5, 3.0)});
   EXPECT_FALSE(Output::lift_at_unit_safety(below).has_value());
   EXPECT_NE(Output::unit_safety_text(below).find("before the lift"), std::string::npos);
   EXPECT_NE(Output::unit_safety_text({}).find("no increment"), std::string::npos);
