@@ -30,12 +30,14 @@ namespace
     return text.compare(0, prefix.size(), prefix) == 0;
   }
 
-  /** Eqs. 6.51-6.53 cells: they need the contact status as well. */
+  /** Eqs. 6.51-6.53 cells and the safety factor from them: they need the
+   * contact status as well. */
   bool
   is_corner_contact_column(const std::string &column)
   {
     return column.find("_A_m2") != std::string::npos ||
-           column.find("_sigma") != std::string::npos;
+           column.find("_sigma") != std::string::npos ||
+           column.find("_safety_factor") != std::string::npos;
   }
 
   /**
