@@ -58,6 +58,29 @@ namespace FloorBlock::Output
     {
       return figure == "fig6_10_11";
     }
+
+    /**
+     * The face corner of a solve as the sweep reports it. A solve that
+     * stopped early leaves the corner of its last converged increment, a
+     * smaller load than the case's, so it gets no number, like the face
+     * joint's columns.
+     */
+    FemFaceCorner
+    face_corner(const FemReport &report, const unsigned int n_blocks)
+    {
+      if (!report.converged())
+        return {"not converged", std::nullopt, std::nullopt};
+      for (const Safety::CornerSafety &corner : report.corner_safety)
+        if (corner.path.joint == n_blocks && corner.path.block == "face block")
+          {
+            if (!corner.resolved())
+              return {"unresolved", std::nullopt, std::nullopt};
+            return {"resolved",
+                    corner.point_stresses.sigma_1,
+                    corner.point_factor};
+          }
+      return {"not evaluated", std::nullopt, std::nullopt};
+    }
   } // namespace
 
   FemCaseRecord
@@ -86,8 +109,11 @@ namespace FloorBlock::Output
         record.face_sigma_max          = face->peak_normal_stress;
         record.face_sigma_max_averaged = face->averaged_peak_normal_stress;
       }
-    record.n_dofs     = result.n_dofs;
-    record.wall_times = result.wall_times;
+    record.face_corner =
+      face_corner(report, point.closed_forms.chain.n_blocks());
+    record.n_dofs         = result.n_dofs;
+    record.wall_times     = result.wall_times;
+    record.floor_strength = point.closed_forms.floor_strength;
     for (const auto &entry : point.closed_forms.mechanisms)
       {
         record.closed_forms[Scene::to_string(entry.mechanism)] = {
@@ -98,7 +124,8 @@ namespace FloorBlock::Output
           has_admissible_contact(entry) ?
             std::optional<double>(entry.contact.max_stress) :
             std::nullopt,
-          Analytic::to_string(face_contact_status(entry))};
+          Analytic::to_string(face_contact_status(entry)),
+          entry.floor_safety_factor};
       }
     return record;
   }
@@ -108,29 +135,37 @@ namespace FloorBlock::Output
   {
     json closed = json::object();
     for (const auto &[mechanism, entry] : record.closed_forms)
-      closed[mechanism] = {{"status", entry.status},
-                           {"Q_face_N_per_m", optional_json(entry.face_force)},
-                           {"sigma_max_6_53_Pa",
-                            optional_json(entry.max_stress)},
-                           {"contact_status", entry.contact_status}};
-    return {{"id", record.id},
-            {"figure", record.figure},
-            {"k_m", record.curvature},
-            {"phi_h_deg", record.bedding_friction_deg},
-            {"phi_v_deg", record.vertical_friction_deg},
-            {"support_load_t", record.support_load_t},
-            {"fem",
-             {{"status", record.status},
-              {"status_text", record.status_text},
-              {"model", record.model},
-              {"Q_face_N_per_m", optional_json(record.face_force)},
-              {"contact_length_m", optional_json(record.face_contact_length)},
-              {"sigma_max_Pa", optional_json(record.face_sigma_max)},
-              {"sigma_max_averaged_Pa",
-               optional_json(record.face_sigma_max_averaged)},
-              {"n_dofs", record.n_dofs},
-              {"wall_time_s", record.wall_times}}},
-            {"closed_forms", closed}};
+      closed[mechanism] = {
+        {"status", entry.status},
+        {"Q_face_N_per_m", optional_json(entry.face_force)},
+        {"sigma_max_6_53_Pa", optional_json(entry.max_stress)},
+        {"contact_status", entry.contact_status},
+        {"safety_factor_eq_6_53", optional_json(entry.safety_factor)}};
+    return {
+      {"id", record.id},
+      {"figure", record.figure},
+      {"k_m", record.curvature},
+      {"phi_h_deg", record.bedding_friction_deg},
+      {"phi_v_deg", record.vertical_friction_deg},
+      {"support_load_t", record.support_load_t},
+      {"fem",
+       {{"status", record.status},
+        {"status_text", record.status_text},
+        {"model", record.model},
+        {"Q_face_N_per_m", optional_json(record.face_force)},
+        {"contact_length_m", optional_json(record.face_contact_length)},
+        {"sigma_max_Pa", optional_json(record.face_sigma_max)},
+        {"sigma_max_averaged_Pa",
+         optional_json(record.face_sigma_max_averaged)},
+        {"face_corner",
+         {{"status", record.face_corner.status},
+          {"sigma_1_at_half_L_Pa", optional_json(record.face_corner.sigma_1)},
+          {"safety_factor_point",
+           optional_json(record.face_corner.point_factor)}}},
+        {"n_dofs", record.n_dofs},
+        {"wall_time_s", record.wall_times}}},
+      {"floor_strength_Pa", optional_json(record.floor_strength)},
+      {"closed_forms", closed}};
   }
 
   FemCaseRecord
@@ -155,12 +190,26 @@ namespace FloorBlock::Output
     record.n_dofs = fem.at("n_dofs").get<unsigned int>();
     record.wall_times =
       fem.at("wall_time_s").get<std::map<std::string, double>>();
+    // Case files written before the face corner and the strength were
+    // stored lack them; a rerun keeps such files rather than solving again.
+    if (fem.contains("face_corner"))
+      {
+        const json &corner        = fem.at("face_corner");
+        record.face_corner.status = corner.at("status").get<std::string>();
+        record.face_corner.sigma_1 =
+          optional_value(corner.at("sigma_1_at_half_L_Pa"));
+        record.face_corner.point_factor =
+          optional_value(corner.at("safety_factor_point"));
+      }
+    record.floor_strength =
+      optional_value(case_json.value("floor_strength_Pa", json()));
     for (const auto &[mechanism, entry] : case_json.at("closed_forms").items())
       record.closed_forms[mechanism] = {
         entry.at("status").get<std::string>(),
         optional_value(entry.at("Q_face_N_per_m")),
         optional_value(entry.at("sigma_max_6_53_Pa")),
-        entry.at("contact_status").get<std::string>()};
+        entry.at("contact_status").get<std::string>(),
+        optional_value(entry.value("safety_factor_eq_6_53", json()))};
     return record;
   }
 
@@ -171,9 +220,20 @@ namespace FloorBlock::Output
     std::string csv = fmt::format(
       "# {}\n# Face joint (Q_n). FEM values are empty where the FEM did not "
       "converge (fem_status); closed-form values are empty where the "
-      "formula has no finite, admissible answer (its status).\n"
-      "k_m,phi_h_deg,phi_v_deg,support_load_t,fem_status,fem_Q_face_N_per_m,"
-      "fem_contact_length_m,fem_sigma_max_Pa,fem_sigma_max_averaged_Pa",
+      "formula has no finite, admissible answer (its status).\n# Face "
+      "corner (the face block's at the face joint): the FEM's sigma_1 at "
+      "L/2 along the corner's bisector (Strength/Critical distance L) and "
+      "its Hoek-Brown factor (point method), empty unless "
+      "fem_face_corner_status is resolved (Mesh/Cells per critical "
+      "distance). floor_strength_Pa: the rock mass's uniaxial compressive "
+      "strength sigma_ci s^a (Strength/); "
+      "<mechanism>_safety_factor_eq_6_53 = floor_strength_Pa / "
+      "<mechanism>_sigma_max_6_53_Pa, empty where that is empty or not "
+      "positive.\n"
+      "k_m,phi_h_deg,phi_v_deg,support_load_t,floor_strength_Pa,fem_status,"
+      "fem_Q_face_N_per_m,fem_contact_length_m,fem_sigma_max_Pa,"
+      "fem_sigma_max_averaged_Pa,fem_face_corner_status,"
+      "fem_sigma_1_at_half_L_Pa,fem_safety_factor_point",
       numbering_note);
     std::set<std::string> models;
     for (const auto &record : records)
@@ -186,7 +246,8 @@ namespace FloorBlock::Output
                                                  "rotation_no_vertical_slip",
                                                  "rotation_vertical_slip"};
     for (const auto &mechanism : mechanisms)
-      csv += fmt::format(",{0}_status,{0}_Q_face_N_per_m,{0}_sigma_max_6_53_Pa",
+      csv += fmt::format(",{0}_status,{0}_Q_face_N_per_m,{0}_sigma_max_6_53_Pa,"
+                         "{0}_safety_factor_eq_6_53",
                          mechanism);
     csv += "\n";
     for (const auto &record : records)
@@ -194,23 +255,28 @@ namespace FloorBlock::Output
         if (record.figure != figure)
           continue;
         const bool ok = record.status == "converged";
-        csv += fmt::format("{},{},{},{},{},{},{},{},{}",
+        csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}",
                            as_json(record.curvature),
                            as_json(record.bedding_friction_deg),
                            as_json(record.vertical_friction_deg),
                            as_json(record.support_load_t),
+                           cell(record.floor_strength),
                            record.status,
                            ok ? cell(record.face_force) : "",
                            ok ? cell(record.face_contact_length) : "",
                            ok ? cell(record.face_sigma_max) : "",
-                           ok ? cell(record.face_sigma_max_averaged) : "");
+                           ok ? cell(record.face_sigma_max_averaged) : "",
+                           record.face_corner.status,
+                           cell(record.face_corner.sigma_1),
+                           cell(record.face_corner.point_factor));
         for (const auto &mechanism : mechanisms)
           {
             const auto &closed = record.closed_forms.at(mechanism);
-            csv += fmt::format(",{},{},{}",
+            csv += fmt::format(",{},{},{},{}",
                                closed.status,
                                cell(closed.face_force),
-                               cell(closed.max_stress));
+                               cell(closed.max_stress),
+                               cell(closed.safety_factor));
           }
         csv += "\n";
       }
@@ -226,8 +292,9 @@ namespace FloorBlock::Output
     const char  *curve_by = stress ? "support_load_t" : "phi_v_deg";
     const double scale    = stress ? 1. / MPa : 1. / kN;
 
-    // panel -> curve -> rows "phi_h fem closed"
+    // panel -> curve -> rows "phi_h fem closed face_corner"
     std::map<double, std::map<double, std::string>> panels;
+    std::optional<double>                           strength;
     for (const auto &record : records)
       if (record.figure == figure)
         {
@@ -240,43 +307,73 @@ namespace FloorBlock::Output
           const double curve =
             stress ? record.support_load_t : record.vertical_friction_deg;
           panels[panel][curve] +=
-            fmt::format("{} {} {}\n",
+            fmt::format("{} {} {} {}\n",
                         record.bedding_friction_deg,
                         record.status == "converged" ?
                           value(stress ? record.face_sigma_max_averaged :
                                          record.face_force) :
                           "NaN",
-                        value(stress ? closed.max_stress : closed.face_force));
+                        value(stress ? closed.max_stress : closed.face_force),
+                        value(record.face_corner.sigma_1));
+          if (!strength)
+            strength = record.floor_strength;
         }
+    // Only Figures 6.10/6.11 are stresses to hold against the strength.
+    std::string strength_title, strength_line;
+    if (stress && strength)
+      {
+        strength_title = fmt::format(
+          "; dashed: rock mass strength sigma_c = {:.2f} MPa (Strength/)",
+          *strength / MPa);
+        strength_line = fmt::format(
+          ", {} with lines dt 2 lw 2 lc rgb 'black' title 'sigma_c = {:.2f} "
+          "MPa'",
+          *strength / MPa,
+          *strength / MPa);
+      }
 
     std::string script = fmt::format(
       "set multiplot layout 1,{} title '{}: FEM (points) against the "
-      "no-rotation closed form (lines)'\nset grid\nset key top left\n"
+      "no-rotation closed form (lines){}'\nset grid\nset key top left\n"
       "set xlabel 'bedding friction angle (deg)'\nset ylabel '{}'\n",
       std::max<std::size_t>(panels.size(), 1),
       figure,
-      stress ? "sigma_max at the face (MPa)" : "Q at the face (kN/m)");
+      strength_title,
+      stress ? "stress at the face (MPa)" : "Q at the face (kN/m)");
     unsigned int block = 0;
     for (const auto &[panel, curves] : panels)
       {
         script += fmt::format("set title '{} = {}'\n", panel_by, panel);
         std::string plot = "plot ";
+        // Colours by the curve's place in its panel: a support load or
+        // friction has one colour in every panel.
+        unsigned int colour = 1;
         for (const auto &[curve, rows] : curves)
           {
             script += fmt::format("$d{} << EOD\n{}EOD\n", block, rows);
             plot += fmt::format(
               "{}$d{} using 1:2 with points pt 7 lc {} title 'FEM {} {}', "
               "$d{} using 1:3 with lines lc {} notitle",
-              block == 0 || plot == "plot " ? "" : ", ",
+              plot == "plot " ? "" : ", ",
               block,
-              block % 8 + 1,
+              colour,
               curve_by,
               curve,
               block,
-              block % 8 + 1);
+              colour);
+            if (stress)
+              plot += fmt::format(
+                ", $d{} using 1:4 with points pt 6 ps 1.5 lc {} notitle",
+                block,
+                colour);
             ++block;
+            colour = colour % 8 + 1;
           }
-        script += plot + "\n";
+        // One key entry per symbol, in black: the colours are the curves'.
+        if (stress)
+          plot += ", NaN with points pt 6 ps 1.5 lc rgb 'black' title 'FEM "
+                  "sigma_1 at L/2 (face corner)'";
+        script += plot + strength_line + "\n";
       }
     return script + "unset multiplot\n";
   }
