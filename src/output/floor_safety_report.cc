@@ -21,7 +21,8 @@ namespace FloorBlock::Output
       return fmt::format(
         "not evaluated: cells of up to {:.1f} mm along the corner paths "
         "against a critical distance L = {:.1f} mm (at most L/{:.0f} "
-        "needed); set Mesh/Cells per critical distance, e.g. to 16",
+        "needed); set Mesh/Cells per critical distance, e.g. to 16, and "
+        "where the corner cells stay larger, Mesh/Global refinements = 1",
         corner.largest_cell * 1e3,
         corner.critical_distance * 1e3,
         Safety::min_cells_per_critical_distance);

@@ -114,9 +114,12 @@ namespace FloorBlock::Output
     if (!governing.resolved())
       {
         summary["status"]      = "unresolved";
-        summary["status_text"] = "the mesh does not resolve the critical "
-                                 "distance along any corner path; set "
-                                 "Mesh/Cells per critical distance";
+        summary["status_text"] =
+          "the mesh does not resolve the critical distance along every "
+          "corner path (" + governing.path.label() + " has cells of " +
+          fmt::format("{:.1f}", governing.largest_cell * 1e3) +
+          " mm); set Mesh/Cells per critical distance, or Mesh/Global "
+          "refinements where the corner cells stay larger";
         return summary;
       }
     summary["governing"] = corner_json(governing, estimate);

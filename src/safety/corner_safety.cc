@@ -93,13 +93,14 @@ namespace FloorBlock::Safety
   {
     if (corners.empty())
       throw std::logic_error("governing_corner: no corners");
-    // Resolved corners first, then the smallest factor; an unresolved
-    // governing corner (none resolved) is the one with the largest cells.
+    // Any unresolved corner governs, the one with the largest cells: a
+    // corner whose factor is a cell's value may be the weakest, so no
+    // verdict can be given for the floor; else the smallest factor.
     return *std::min_element(corners.begin(),
                              corners.end(),
                              [](const CornerSafety &a, const CornerSafety &b) {
                                if (a.resolved() != b.resolved())
-                                 return a.resolved();
+                                 return !a.resolved();
                                if (!a.resolved())
                                  return a.largest_cell > b.largest_cell;
                                return verdict_factor(a) < verdict_factor(b);

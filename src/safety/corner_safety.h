@@ -79,9 +79,9 @@ namespace FloorBlock::Safety
                 const Fem::ElasticModel<2>                  &model,
                 const dealii::TrilinosWrappers::MPI::Vector &solution);
 
-  /** @brief The corner with the smallest verdict_factor() among the
-   * resolved ones, else the least resolved corner; @p corners must not be
-   * empty. */
+  /** @brief The corner with the smallest verdict_factor() when every
+   * corner is resolved, else the least resolved corner (the floor then has
+   * no verdict); @p corners must not be empty. */
   const CornerSafety &
   governing_corner(const std::vector<CornerSafety> &corners);
 } // namespace FloorBlock::Safety

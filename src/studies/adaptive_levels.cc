@@ -6,6 +6,7 @@
 
 #include <deal.II/base/timer.h>
 
+#include <scene/mesh_sizing.h>
 #include <studies/adaptive_levels.h>
 
 #include <algorithm>
@@ -148,6 +149,13 @@ namespace FloorBlock::Studies
         requests.insert(requests.end(),
                         joint_targets.begin(),
                         joint_targets.end());
+        // The floor safety factor's corner paths keep the cells the Gmsh
+        // mesh gave them (Mesh/Cells per critical distance): coarsening
+        // where the indicators are small would leave a path unresolved.
+        const auto corner_targets = Scene::critical_distance_sizes(scene);
+        requests.insert(requests.end(),
+                        corner_targets.begin(),
+                        corner_targets.end());
         indicator_time += timer.wall_time();
       }
     return outcome;

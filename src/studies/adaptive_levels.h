@@ -33,7 +33,8 @@ namespace FloorBlock::Studies
    * coarsens the previous level's deal.II mesh with hanging nodes where the
    * previous solution's indicators ask (the ends of the closed zones and large
    * traction jumps along the joints, Refinement::joint_size_targets; the
-   * Kelly indicator in the bodies, Refinement::bulk_size_targets), both
+   * Kelly indicator in the bodies, Refinement::bulk_size_targets; the
+   * floor safety's corner paths, Scene::critical_distance_sizes), both
    * sides of every joint alike (Refinement::refine_matched).
    *
    * `converge --mode adaptive` runs it as a ladder; `run` refines with it
