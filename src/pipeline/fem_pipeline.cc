@@ -8,15 +8,14 @@
 #include <geometry/refinement_manifolds.h>
 #include <geometry/triangulation_reader.h>
 #include <output/contact_area_picture.h>
+#include <output/floor_safety_report.h>
+#include <pipeline/contact_zone_sizing.h>
 #include <pipeline/deformed_view.h>
 #include <pipeline/distributed_swept_mesh.h>
-#include <pipeline/contact_zone_sizing.h>
 #include <pipeline/fem_pipeline.h>
-#include <output/floor_safety_report.h>
 #include <pipeline/fem_report_builder.h>
 #include <pipeline/rigid_pipeline.h>
 #include <pipeline/strength_factor_view.h>
-#include <safety/strength_factor_field.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
@@ -34,6 +33,7 @@
 #include <postprocess/increment_post_processor.h>
 #include <postprocess/joint_report.h>
 #include <postprocess/vtu_writer.h>
+#include <safety/strength_factor_field.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -94,8 +94,9 @@ namespace FloorBlock::Pipeline
 
     /**
      * What every increment adds in 2D: its floor safety factors (the
-     * history along the floor lift, Output::safety_along_lift()) and the
-     * strength-factor field of its VTU file. The full corner records are
+     * history along the floor lift, Output::safety_along_lift(); scenes
+     * with Mesh/Cells per critical distance only) and the strength-factor
+     * field of its VTU file. The full corner records are
      * kept for the last increment only (after the solve).
      */
     template <int dim>
@@ -109,18 +110,23 @@ namespace FloorBlock::Pipeline
       else
         {
           Postprocess::IncrementExtras extras;
-          extras.describe =
-            [&scene, &solver, &problem](
-              const dealii::TrilinosWrappers::MPI::Vector &solution,
-              Contact::IncrementResult                    &increment) {
-              for (const Safety::CornerSafety &corner :
-                   Safety::corner_safety(
-                     scene, solver.space(), problem.model, solution))
-                increment.corner_factors.push_back({corner.path.label(),
-                                                    corner.point_factor,
-                                                    corner.line_factor,
-                                                    corner.resolved()});
-            };
+          // Only scenes that resolve the corner paths (Mesh/Cells per
+          // critical distance) get a history: elsewhere every increment's
+          // factors would be cells' values, at the cost of reading the
+          // stresses at every increment.
+          if (scene.mesh.cells_per_critical_distance > 0)
+            extras.describe =
+              [&scene,
+               &solver,
+               &problem](const dealii::TrilinosWrappers::MPI::Vector &solution,
+                         Contact::IncrementResult &increment) {
+                for (const Safety::CornerSafety &corner : Safety::corner_safety(
+                       scene, solver.space(), problem.model, solution))
+                  increment.corner_factors.push_back({corner.path.label(),
+                                                      corner.point_factor,
+                                                      corner.line_factor,
+                                                      corner.resolved()});
+              };
           extras.cell_fields =
             [&scene, &solver, &problem](
               const dealii::TrilinosWrappers::MPI::Vector &solution) {
@@ -285,10 +291,10 @@ namespace FloorBlock::Pipeline
     // Contact-zone sizing (Eq. 6.51, else a first solve), then any requests
     // of the caller (converge --mode remesh); local_size_at() takes the
     // smallest.
-    dealii::Timer                  sizing_timer;
-    const Scene::ContactZoneSizing zones = contact_zone_sizing(scene, folder);
-    const double                   sizing_time = sizing_timer.wall_time();
-    std::vector<Geometry::LocalSize> sizes = zones.sizes;
+    dealii::Timer                    sizing_timer;
+    const Scene::ContactZoneSizing   zones = contact_zone_sizing(scene, folder);
+    const double                     sizing_time = sizing_timer.wall_time();
+    std::vector<Geometry::LocalSize> sizes       = zones.sizes;
     const std::vector<Geometry::LocalSize> corners =
       Scene::critical_distance_sizes(scene);
     sizes.insert(sizes.end(), corners.begin(), corners.end());
@@ -346,28 +352,27 @@ namespace FloorBlock::Pipeline
     // Kept here: the picture's stresses need the bodies' elastic laws.
     const Contact::ContactProblem<2> problem =
       Scene::make_floor_contact_problem(Scene::floor_problem_settings(scene));
-    return solve_on_mesh<2>(scene,
-                            triangulation,
-                            problem,
-                            mesh,
-                            folder,
-                            write_vtu,
-                            [&](const Contact::ContactSolver<2> &solver) {
-                              if (extras.inspect)
-                                extras.inspect(solver);
-                              if (write_vtu)
-                                {
-                                  write_deformed_view(solver,
-                                                      problem.model,
-                                                      folder.path_of(
-                                                        "deformed.png"));
-                                  write_strength_factor_view(
-                                    scene,
-                                    solver,
-                                    problem.model,
-                                    folder.path_of("strength_factor.png"));
-                                }
-                            });
+    return solve_on_mesh<2>(
+      scene,
+      triangulation,
+      problem,
+      mesh,
+      folder,
+      write_vtu,
+      [&](const Contact::ContactSolver<2> &solver) {
+        if (extras.inspect)
+          extras.inspect(solver);
+        if (write_vtu)
+          {
+            write_deformed_view(solver,
+                                problem.model,
+                                folder.path_of("deformed.png"));
+            write_strength_factor_view(scene,
+                                       solver,
+                                       problem.model,
+                                       folder.path_of("strength_factor.png"));
+          }
+      });
   }
 
   void
