@@ -31,7 +31,7 @@ namespace FloorBlock::Pipeline
     const double half_width = std::min(
       10. * L,
       0.5 * std::min(scene.geometry.block_width, scene.geometry.block_height));
-    constexpr unsigned int n_points_across = 161;
+    constexpr unsigned int n_points_across = 61;
     const Safety::StrengthFactorMap map =
       Safety::strength_factor_map(scene,
                                   solver.space(),
