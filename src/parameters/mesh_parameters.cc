@@ -56,9 +56,10 @@ namespace FloorBlock::Parameters
         "0",
         Integer(0, 64),
         "Critical-distance sizing: cells of size L / N (Strength/Critical "
-        "distance; not below 1e-3 of the smaller block side) along the "
+        "distance; not below 2.5e-4 of the smaller block side) along the "
         "bisectors of both top corners of every vertical joint, out to 1.5 "
-        "L, so that the floor safety factor's stresses at L/2 and over L "
+        "L (Gmsh grades towards them, then deal.II halves every cell the "
+        "paths cross until it is within sqrt(2) of L / N), so that the floor safety factor's stresses at L/2 and over L "
         "(src/safety/) are read from cells smaller than L; params/default.prm "
         "sets 16, with which the line method's factor on the default scene "
         "changes by less than 0.2 % per halving of every cell "

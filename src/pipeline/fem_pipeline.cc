@@ -10,6 +10,7 @@
 #include <output/contact_area_picture.h>
 #include <output/floor_safety_report.h>
 #include <pipeline/contact_zone_sizing.h>
+#include <pipeline/corner_path_refinement.h>
 #include <pipeline/deformed_view.h>
 #include <pipeline/distributed_swept_mesh.h>
 #include <pipeline/fem_pipeline.h>
@@ -307,12 +308,15 @@ namespace FloorBlock::Pipeline
     mesh.contact_zone_length = zones.contact_length;
     mesh.sizing_wall_time    = sizing_time;
     Geometry::read_triangulation(folder.path_of("mesh.msh"), triangulation);
-    if (const unsigned int n_refinements = Scene::global_refinements(scene))
+    dealii::Timer      timer;
+    const unsigned int n_refinements = Scene::global_refinements(scene);
+    if (n_refinements > 0)
+      Geometry::refine_globally_on_curves(description,
+                                          n_refinements,
+                                          triangulation);
+    const unsigned int n_path_cells = refine_corner_paths(scene, triangulation);
+    if (n_refinements > 0 || n_path_cells > 0)
       {
-        dealii::Timer timer;
-        Geometry::refine_globally_on_curves(description,
-                                            n_refinements,
-                                            triangulation);
         write_solved_mesh(triangulation, folder.path_of("mesh.msh"), mesh);
         mesh.wall_time += timer.wall_time();
       }

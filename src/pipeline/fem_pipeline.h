@@ -61,8 +61,9 @@ namespace FloorBlock::Pipeline
 
   /**
    * @brief The Gmsh mesh of the scene (with @p local_sizes, adaptive
-   * re-meshing) read into @p triangulation and refined
-   * Scene::global_refinements() times; the mesh solved on is written into
+   * re-meshing) read into @p triangulation, refined
+   * Scene::global_refinements() times and along the floor safety's corner
+   * paths (refine_corner_paths()); the mesh solved on is written into
    * @p folder as mesh.msh: solve_scene()'s first half.
    */
   Geometry::MeshStatistics

@@ -1,12 +1,13 @@
 #include <contact/contact_solver.h>
 #include <geometry/refinement_manifolds.h>
+#include <pipeline/corner_path_refinement.h>
 #include <scene/assembly_inputs.h>
 #include <scene/contact_inputs.h>
 #include <scene/floor_contact_problem.h>
+#include <scene/mesh_sizing.h>
 
 #include <deal.II/base/timer.h>
 
-#include <scene/mesh_sizing.h>
 #include <studies/adaptive_levels.h>
 
 #include <algorithm>
@@ -14,21 +15,6 @@
 
 namespace FloorBlock::Studies
 {
-  namespace
-  {
-    std::vector<Refinement::JointSides>
-    joint_sides(const Parameters::ScenarioParameters &scene)
-    {
-      std::vector<Refinement::JointSides> sides;
-      for (const auto &joint : Scene::make_floor_contact_problem(
-                                 Scene::floor_problem_settings(scene))
-                                 .joints)
-        if (!joint.against_rigid_plane)
-          sides.push_back({joint.side_a, joint.side_b});
-      return sides;
-    }
-  } // namespace
-
   Refinement::RefinementSettings
   bounded_refinement(const Refinement::RefinementSettings &settings,
                      const Parameters::ScenarioParameters &scene)
@@ -50,7 +36,7 @@ namespace FloorBlock::Studies
     , refinement(refinement)
     , coarsen_fraction(coarsen_fraction)
     , description(Scene::assembly_description(scene))
-    , joints(joint_sides(scene))
+    , joints(Pipeline::matched_joint_sides(scene))
   {}
 
   Pipeline::FemOutcome

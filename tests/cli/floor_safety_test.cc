@@ -23,11 +23,11 @@ namespace
   TEST(FloorSafety, ResolvedCornersGiveBothFactors)
   {
     const std::string folder = fresh_output_folder("floor_safety_resolved");
-    const auto        solve  = run_floorblock(
-      "solve " + three_blocks +
-      " --set \"Strength/Critical distance=0.05\""
-      " --set \"Mesh/Cells per critical distance=8\" --output " +
-      shell_quoted(folder));
+    const auto        solve =
+      run_floorblock("solve " + three_blocks +
+                     " --set \"Strength/Critical distance=0.05\""
+                     " --set \"Mesh/Cells per critical distance=8\" --output " +
+                     shell_quoted(folder));
     ASSERT_EQ(solve.exit_code, 0) << solve.output;
     EXPECT_NE(solve.output.find("floor safety (Hoek-Brown, critical "
                                 "distance L = 50.0 mm)"),
@@ -51,9 +51,37 @@ namespace
     // The verdict and the governing corner go by the line method.
     EXPECT_DOUBLE_EQ(safety["governing"]["safety_factor_line"].get<double>(),
                      smallest);
-    EXPECT_EQ(safety["governing"]["status"],
-              smallest < 1. ? "fails" : "holds");
+    EXPECT_EQ(safety["governing"]["status"], smallest < 1. ? "fails" : "holds");
     EXPECT_TRUE(std::filesystem::exists(folder + "/floor_safety_paths.csv"));
+  }
+
+  // A strong rock's short L: the default scene at sigma_ci = 60 MPa has
+  // L = 4.3 mm, and Gmsh, grading towards the paths' requests of L/16 among
+  // the contact zones' own, leaves cells of up to 1.6 mm there (more than
+  // L/4). deal.II halves the cells the paths cross until each is within
+  // sqrt(2) of L/16, both joint sides alike, so every corner is resolved
+  // and the scene still solves.
+  TEST(FloorSafety, ShortCriticalDistanceIsResolvedByRefiningThePaths)
+  {
+    const std::string folder = fresh_output_folder("floor_safety_short_L");
+    const auto        solve  = run_floorblock(
+      "solve tests/scenarios/default.prm --set \"Strength/Intact UCS=60e6\""
+              " --output " +
+      shell_quoted(folder));
+    ASSERT_EQ(solve.exit_code, 0) << solve.output;
+    const json fem = read_json(folder + "/fem.json");
+    EXPECT_EQ(fem["status"], "converged") << fem["status_text"];
+    const json   safety = fem["floor_safety"];
+    const double L      = safety["critical_distance_m"];
+    EXPECT_NEAR(L, 4.33e-3, 0.01e-3);
+    ASSERT_EQ(safety["corners"].size(), 12u); // 6 joints, 2 corners each
+    for (const json &corner : safety["corners"])
+      {
+        EXPECT_TRUE(corner["resolved"].get<bool>()) << corner.dump();
+        EXPECT_LE(corner["largest_cell_m"].get<double>(), L / 4.)
+          << corner.dump();
+      }
+    EXPECT_TRUE(safety.contains("governing"));
   }
 
   // The scene's own mesh (cells of 0.1 m at the corners) against the
@@ -61,8 +89,8 @@ namespace
   TEST(FloorSafety, UnresolvedMeshNamesTheSizeItNeeds)
   {
     const std::string folder = fresh_output_folder("floor_safety_coarse");
-    const auto        solve  = run_floorblock("solve " + three_blocks +
-                                      " --output " + shell_quoted(folder));
+    const auto solve = run_floorblock("solve " + three_blocks + " --output " +
+                                      shell_quoted(folder));
     ASSERT_EQ(solve.exit_code, 0) << solve.output;
     EXPECT_NE(solve.output.find("floor safety: not evaluated"),
               std::string::npos)
@@ -85,9 +113,9 @@ namespace
     const auto        run    = run_floorblock(
       "run " + three_blocks +
       " --set \"Strength/Critical distance=0.05\""
-      " --set \"Mesh/Cells per critical distance=8\" --set "
-      "\"Solver/FE degree=1\" --set \"Solver/Error estimate=refined solve\" "
-      "--output " +
+                " --set \"Mesh/Cells per critical distance=8\" --set "
+                "\"Solver/FE degree=1\" --set \"Solver/Error estimate=refined solve\" "
+                "--output " +
       shell_quoted(folder));
     ASSERT_EQ(run.exit_code, 0) << run.output;
     EXPECT_NE(run.output.find("floor safety at the governing corner"),
@@ -101,8 +129,7 @@ namespace
     EXPECT_EQ(governing["status"], "estimated");
     EXPECT_GE(governing["safety_factor_point_relative_error"].get<double>(),
               0.);
-    EXPECT_GE(governing["safety_factor_line_relative_error"].get<double>(),
-              0.);
+    EXPECT_GE(governing["safety_factor_line_relative_error"].get<double>(), 0.);
     EXPECT_TRUE(safety.contains("floor_strength_Pa"));
     const json &along = safety["along_lift"];
     ASSERT_GT(along["lift_m"].size(), 0u);
