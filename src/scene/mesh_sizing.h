@@ -149,8 +149,9 @@ namespace FloorBlock::Scene
    * not below Geometry::min_relative_local_size of the smaller block
    * side) along the inward bisectors of both top corners of every
    * vertical joint, from the corner out to critical_distance_reach L: the
-   * paths src/safety/ reads the stresses along. Empty when N = 0 and for
-   * 3D scenes (the safety factors come from 2D solves).
+   * paths src/safety/ reads the stresses along. Gmsh's size field and
+   * Pipeline::refine_corner_paths() both take them. Empty when N = 0 and
+   * for 3D scenes (the safety factors come from 2D solves).
    */
   std::vector<Geometry::LocalSize>
   critical_distance_sizes(const Parameters::ScenarioParameters &scene);
