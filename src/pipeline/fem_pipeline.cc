@@ -97,14 +97,16 @@ namespace FloorBlock::Pipeline
      * What every increment adds in 2D: its floor safety factors (the
      * history along the floor lift, Output::safety_along_lift(); scenes
      * with Mesh/Cells per critical distance only) and the strength-factor
-     * field of its VTU file. The full corner records are
-     * kept for the last increment only (after the solve).
+     * field of its VTU file. The full corner records of the latest
+     * increment are kept in @p latest_corners, so that the solve's report
+     * need not read the same stresses again.
      */
     template <int dim>
     Postprocess::IncrementExtras
     increment_extras(const Parameters::ScenarioParameters &scene,
                      const Contact::ContactSolver<dim>    &solver,
-                     const Contact::ContactProblem<dim>   &problem)
+                     const Contact::ContactProblem<dim>   &problem,
+                     std::vector<Safety::CornerSafety>    &latest_corners)
     {
       if constexpr (dim != 2)
         return {};
@@ -117,12 +119,14 @@ namespace FloorBlock::Pipeline
           // stresses at every increment.
           if (scene.mesh.cells_per_critical_distance > 0)
             extras.describe =
-              [&scene,
-               &solver,
-               &problem](const dealii::TrilinosWrappers::MPI::Vector &solution,
-                         Contact::IncrementResult &increment) {
-                for (const Safety::CornerSafety &corner : Safety::corner_safety(
-                       scene, solver.space(), problem.model, solution))
+              [&scene, &solver, &problem, &latest_corners](
+                const dealii::TrilinosWrappers::MPI::Vector &solution,
+                Contact::IncrementResult                    &increment) {
+                latest_corners = Safety::corner_safety(scene,
+                                                       solver.space(),
+                                                       problem.model,
+                                                       solution);
+                for (const Safety::CornerSafety &corner : latest_corners)
                   increment.corner_factors.push_back({corner.path.label(),
                                                       corner.point_factor,
                                                       corner.line_factor,
@@ -167,10 +171,13 @@ namespace FloorBlock::Pipeline
       Contact::ContactSolver<dim> solver(triangulation, problem, numerics);
       std::string status_text = "every loading increment converged";
       std::optional<Output::SolveFailureRecord> failure_record;
+      std::vector<Safety::CornerSafety>         corner_safety;
       try
         {
           outcome.result = Postprocess::solve_with_reports(
-            solver, numerics, increment_extras(scene, solver, problem));
+            solver,
+            numerics,
+            increment_extras(scene, solver, problem, corner_safety));
           outcome.converged = true;
         }
       catch (const Contact::ContactSolveFailure &failure)
@@ -183,13 +190,16 @@ namespace FloorBlock::Pipeline
           outcome.result = failure.partial_result;
         }
       after_solve(solver);
+      // A converged solve's last increment has left its corners in
+      // corner_safety already (scenes with a history only); after a failure
+      // they are read from the state the solver kept.
       if constexpr (dim == 2)
-        if (!outcome.result.increments.empty())
-          outcome.report.corner_safety = Safety::corner_safety(
-            scene, solver.space(), problem.model, solver.solution());
-
-      std::vector<Safety::CornerSafety> corner_safety =
-        std::move(outcome.report.corner_safety);
+        if (!outcome.result.increments.empty() &&
+            (!outcome.converged || corner_safety.empty()))
+          corner_safety = Safety::corner_safety(scene,
+                                                solver.space(),
+                                                problem.model,
+                                                solver.solution());
       outcome.report =
         make_fem_report(outcome.result,
                         scene,
