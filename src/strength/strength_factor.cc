@@ -24,8 +24,7 @@ namespace FloorBlock::Strength
   principal_stresses(const PlaneStrainStress &stress)
   {
     const double centre = 0.5 * (stress.xx + stress.yy);
-    const double radius =
-      std::hypot(0.5 * (stress.xx - stress.yy), stress.xy);
+    const double radius = std::hypot(0.5 * (stress.xx - stress.yy), stress.xy);
     // Tension positive here; flipped on return.
     const double largest  = std::max(centre + radius, stress.zz);
     const double smallest = std::min(centre - radius, stress.zz);
@@ -56,30 +55,36 @@ namespace FloorBlock::Strength
                              sigma_ci,
                              constants);
     };
-    // The unstressed state lies inside (excess -sigma_ci s^a). The first
-    // crossing, bracketed on a geometric scan of k (confinement can bend
-    // the path back inside after a crossing), then bisected.
-    constexpr unsigned int n_scan = 400;
-    const double           ratio  = std::pow(largest_strength_factor / 1e-4,
-                                    1. / n_scan);
-    double inside = 0., outside = 1e-4;
-    if (excess(outside) < 0.)
+    // The unstressed state lies inside (excess -sigma_ci s^a), and the
+    // path k -> k (sigma_1, sigma_3) crosses the envelope at most once:
+    // for sigma_3 >= 0 the excess k (sigma_1 - sigma_3) - sigma_ci (s +
+    // m_b k sigma_3 / sigma_ci)^a is convex in k (a < 1) and negative at
+    // k = 0, so once outside it stays outside; for sigma_3 < 0 it grows
+    // with k (and beyond the tensile cut-off it is k (sigma_1 - sigma_3)
+    // >= 0). So "outside" is monotone in k and bisection finds the one
+    // crossing: on log k between the bounds (each halving a constant
+    // relative step), below the smallest bound linearly from 0.
+    constexpr double smallest_factor = 1e-4;
+    double           inside = 0., outside = smallest_factor;
+    if (excess(smallest_factor) < 0.)
       {
-        bool crossed = false;
-        for (unsigned int step = 0; step < n_scan && !crossed; ++step)
-          {
-            inside  = outside;
-            outside = inside * ratio;
-            crossed = excess(outside) >= 0.;
-          }
-        if (!crossed)
+        if (excess(largest_strength_factor) < 0.)
           return largest_strength_factor;
+        inside  = smallest_factor;
+        outside = largest_strength_factor;
+        // 60 halvings of ln(1e6) = 13.8: 1e-17, below a double's ulp.
+        for (unsigned int halving = 0; halving < 60; ++halving)
+          {
+            const double middle = std::sqrt(inside * outside);
+            (excess(middle) < 0. ? inside : outside) = middle;
+          }
       }
-    for (unsigned int halving = 0; halving < 60; ++halving)
-      {
-        const double middle = 0.5 * (inside + outside);
-        (excess(middle) < 0. ? inside : outside) = middle;
-      }
+    else
+      for (unsigned int halving = 0; halving < 60; ++halving)
+        {
+          const double middle                      = 0.5 * (inside + outside);
+          (excess(middle) < 0. ? inside : outside) = middle;
+        }
     return std::min(0.5 * (inside + outside), largest_strength_factor);
   }
 } // namespace FloorBlock::Strength

@@ -2,9 +2,8 @@
 // positive) and the factor that scales the state onto the Hoek-Brown
 // envelope.
 
-#include <strength/strength_factor.h>
-
 #include <gtest/gtest.h>
+#include <strength/strength_factor.h>
 
 #include <cmath>
 
@@ -36,7 +35,8 @@ TEST(StrengthFactor, PrincipalStressesOfARotatedState)
 // route at a free surface: strength / stress).
 TEST(StrengthFactor, UniaxialCompressionIsStrengthOverStress)
 {
-  const double ucs = Strength::uniaxial_compressive_strength(sigma_ci, mudstone);
+  const double ucs =
+    Strength::uniaxial_compressive_strength(sigma_ci, mudstone);
   EXPECT_NEAR(Strength::strength_factor({0.5 * ucs, 0.}, sigma_ci, mudstone),
               2.,
               1e-9);
@@ -97,4 +97,45 @@ TEST(StrengthFactor, UnloadedPointGetsTheCap)
 {
   EXPECT_DOUBLE_EQ(Strength::strength_factor({0., 0.}, sigma_ci, mudstone),
                    Strength::largest_strength_factor);
+}
+
+// The factor is the smallest scaling that reaches the envelope, and the
+// scaled path is inside below it and outside above it: checked on a dense
+// geometric grid of k for states from biaxial tension to high confinement
+// (the bisection relies on the path crossing the envelope once).
+TEST(StrengthFactor, OneCrossingInsideBelowOutsideAbove)
+{
+  const auto outside = [](const double k, const double s1, const double s3) {
+    return k * s1 >=
+           Strength::major_principal_strength(k * s3, sigma_ci, mudstone);
+  };
+  unsigned int n_states = 0;
+  for (double sigma_1 = -1e6; sigma_1 <= 61e6; sigma_1 += 2e6)
+    for (double sigma_3 = -3e6; sigma_3 <= sigma_1; sigma_3 += 0.5e6)
+      {
+        const double k =
+          Strength::strength_factor({sigma_1, sigma_3}, sigma_ci, mudstone);
+        ASSERT_TRUE(std::isfinite(k) && k > 0.);
+        for (double q = 1e-4; q <= Strength::largest_strength_factor; q *= 1.02)
+          {
+            if (q < k * (1. - 1e-9))
+              EXPECT_FALSE(outside(q, sigma_1, sigma_3))
+                << sigma_1 << ", " << sigma_3 << ": k " << k << ", q " << q;
+            else if (q > k * (1. + 1e-9))
+              EXPECT_TRUE(outside(q, sigma_1, sigma_3))
+                << sigma_1 << ", " << sigma_3 << ": k " << k << ", q " << q;
+          }
+        ++n_states;
+      }
+  EXPECT_GT(n_states, 1000u);
+}
+
+// A stress far beyond the strength (k below 1e-4): still the crossing.
+TEST(StrengthFactor, FactorBelowTheScanStartIsStillOnTheEnvelope)
+{
+  const double sigma_1 = 1e6 * sigma_ci;
+  const double k = Strength::strength_factor({sigma_1, 0.}, sigma_ci, mudstone);
+  EXPECT_NEAR(k * sigma_1,
+              Strength::uniaxial_compressive_strength(sigma_ci, mudstone),
+              1e-9 * sigma_ci);
 }
