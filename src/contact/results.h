@@ -121,7 +121,6 @@ namespace FloorBlock::Contact
     double relative_imbalance = 0.;
   };
 
-  /** @brief One converged increment. */
   /**
    * The floor's safety factors at one floor-level block corner
    * (Safety::CornerSafety), as an increment keeps them for the history
@@ -129,12 +128,16 @@ namespace FloorBlock::Contact
    */
   struct CornerFactors
   {
-    std::string corner;       ///< "face block at vertical 6"
-    double      point_factor; ///< -, the point method's FS
-    double      line_factor;  ///< -, the line method's FS
-    bool        resolved;     ///< the mesh resolves the critical distance
+    std::string corner;         ///< "face block at vertical 6"
+    double      point_factor;   ///< -, the point method's FS
+    double      line_factor;    ///< -, the line method's FS
+    double      area_factor;    ///< -, the area method's FS
+    double      verdict_factor; ///< -, the factor the verdict goes by
+    std::string verdict_method; ///< "line" or "area"
+    bool        resolved;       ///< the mesh resolves the critical distance
   };
 
+  /** @brief One converged increment. */
   struct IncrementResult
   {
     Loading::LoadStage stage = Loading::LoadStage::gravity;

@@ -95,7 +95,8 @@ namespace FloorBlock::Output
     for (const auto &[name, errors] : estimate.corners)
       corners[name] = {
         {"safety_factor_point", figure_error_json(errors.point_factor)},
-        {"safety_factor_line", figure_error_json(errors.line_factor)}};
+        {"safety_factor_line", figure_error_json(errors.line_factor)},
+        {"safety_factor_area", figure_error_json(errors.area_factor)}};
     result["status"]         = "available";
     result["reported_solve"] = reported_solve_name(estimate.reported_solve);
     result["refined_n_dofs"] = estimate.refined_n_dofs;

@@ -59,6 +59,7 @@ namespace FloorBlock::Output
   {
     FigureError point_factor; ///< -, the point method's FS
     FigureError line_factor;  ///< -, the line method's FS
+    FigureError area_factor;  ///< -, the area method's FS
   };
 
   /** Which solve of a compared pair the figures are reported from. */

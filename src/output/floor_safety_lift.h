@@ -14,13 +14,16 @@ namespace FloorBlock::Output
   struct LiftSafety
   {
     double      base_lift = 0.; ///< m
-    std::string corner;         ///< the corner with the smallest point FS
-    double      point_factor = 0.;
-    double      line_factor  = 0.;
+    std::string corner;           ///< the governing corner
+    double      point_factor   = 0.;
+    double      line_factor    = 0.;
+    double      area_factor    = 0.;
+    double      verdict_factor = 0.; ///< the factor the verdict goes by
+    std::string verdict_method;      ///< "line" or "area"
   };
 
   /**
-   * @brief The governing corner (smallest line-method factor among the
+   * @brief The governing corner (smallest verdict factor among the
    * resolved ones, Safety::verdict_factor()) at every increment of
    * @p history that resolves one.
    */
@@ -28,7 +31,7 @@ namespace FloorBlock::Output
   safety_along_lift(const std::vector<LiftHistoryPoint> &history);
 
   /**
-   * @brief The floor lift at which the governing line-method factor
+   * @brief The floor lift at which the governing corner's verdict factor
    * first reaches 1, linear between the increments around it; none if it
    * stays above 1, or is below 1 from the lift's first increment on (then
    * the floor fails before the lift, under its weight and the supports).
@@ -38,8 +41,9 @@ namespace FloorBlock::Output
 
   /**
    * @brief summary.json's floor_safety.along_lift: lift_m,
-   * safety_factor_point and safety_factor_line (governing corner per
-   * increment), lift_at_safety_factor_1_m (absent if none) and its text.
+   * safety_factor_point, safety_factor_line and safety_factor_area
+   * (governing corner per increment), verdict_method,
+   * lift_at_safety_factor_1_m (absent if none) and its text.
    */
   nlohmann::json
   safety_along_lift_json(const std::vector<LiftSafety> &along);

@@ -43,11 +43,15 @@ namespace FloorBlock::Output
          {"path_direction", {corner.path.direction.x, corner.path.direction.y}},
          {"safety_factor_point", corner.point_factor},
          {"safety_factor_line", corner.line_factor},
+         {"safety_factor_area", corner.area_factor},
          {"sigma_1_at_half_L_Pa", corner.point_stresses.sigma_1},
          {"sigma_3_at_half_L_Pa", corner.point_stresses.sigma_3},
          {"sigma_1_mean_over_L_Pa", corner.line_stresses.sigma_1},
          {"sigma_3_mean_over_L_Pa", corner.line_stresses.sigma_3},
+         {"sigma_1_mean_within_L_Pa", corner.area_stresses.sigma_1},
+         {"sigma_3_mean_within_L_Pa", corner.area_stresses.sigma_3},
          {"largest_cell_m", corner.largest_cell},
+         {"largest_cell_within_L_m", corner.largest_cell_within_L},
          {"resolved", corner.resolved()}});
     const Safety::CornerSafety &governing = Safety::governing_corner(corners);
     if (!governing.resolved())
@@ -61,16 +65,20 @@ namespace FloorBlock::Output
        "Hoek-Brown strength factor (the factor by which the stress state, "
        "compression positive, can be scaled before it reaches the "
        "envelope) of the stress at L/2 (point method) and of the mean "
-       "stress over L (line method), along the inward bisector of each "
-       "floor-level block corner from its surface point; the verdict and "
-       "the governing corner go by the line method (src/safety/)"},
+       "stress over L (line method) along the inward bisector of each "
+       "floor-level block corner from its surface point, and of the mean "
+       "stress over the block within L of that point (area method); the "
+       "verdict and the governing corner go by verdict_method: the line "
+       "method with compliant joints, the area method with exact contact "
+       "(src/safety/)"},
       {"corners", records},
       {"governing",
        {{"joint", governing.path.joint_name},
         {"block", governing.path.block},
         {"safety_factor_point", governing.point_factor},
         {"safety_factor_line", governing.line_factor},
-        {"verdict_method", "line"},
+        {"safety_factor_area", governing.area_factor},
+        {"verdict_method", Safety::to_string(governing.verdict_method)},
         {"status",
          Safety::verdict_factor(governing) < 1. ? "fails" : "holds"}}}};
   }
@@ -85,14 +93,16 @@ namespace FloorBlock::Output
       return "  floor safety: " + unresolved_text(governing) + "\n";
     return fmt::format(
       "  floor safety (Hoek-Brown, critical distance L = {:.1f} mm): "
-      "governing corner {} at {}: FS = {:.2f} (line, mean over L: the "
-      "verdict), {:.2f} (point, sigma_1 = {:.2f} MPa at L/2): {}\n",
+      "governing corner {} at {}: FS = {:.2f} ({} method, the verdict); "
+      "point {:.2f}, line {:.2f}, area {:.2f}: {}\n",
       governing.critical_distance * 1e3,
       governing.path.block,
       governing.path.joint_name,
-      governing.line_factor,
+      Safety::verdict_factor(governing),
+      Safety::to_string(governing.verdict_method),
       governing.point_factor,
-      governing.point_stresses.sigma_1 / Units::MPa,
+      governing.line_factor,
+      governing.area_factor,
       verdict(Safety::verdict_factor(governing)));
   }
 

@@ -52,6 +52,10 @@ namespace FloorBlock::Output
         {"safety_factor_line_relative_error",
          errors ? optional_json(errors->line_factor.relative_error) :
                   json(nullptr)},
+        {"safety_factor_area", corner.area_factor},
+        {"safety_factor_area_relative_error",
+         errors ? optional_json(errors->area_factor.relative_error) :
+                  json(nullptr)},
         // The errors are null where not estimated; status says why.
         {"status", error_status(corner, estimate)}};
     }
@@ -123,7 +127,7 @@ namespace FloorBlock::Output
         return summary;
       }
     summary["governing"] = corner_json(governing, estimate);
-    summary["verdict_method"] = "line";
+    summary["verdict_method"] = Safety::to_string(governing.verdict_method);
     summary["status"] =
       Safety::verdict_factor(governing) < 1. ? "fails" : "holds";
     return summary;
@@ -145,14 +149,17 @@ namespace FloorBlock::Output
     const CornerErrors         *errors    = errors_of(governing, estimate);
     return fmt::format(
              "  floor safety at the governing corner ({}, L = {:.1f} mm): "
-             "FS = {:.3f} {} (line method, the verdict), {:.3f} {} (point "
-             "method): {}\n",
+             "FS = {:.3f} {} (point method), {:.3f} {} (line method), {:.3f} "
+             "{} (area method); the verdict goes by the {} method: {}\n",
              governing.path.label(),
              governing.critical_distance * 1e3,
-             governing.line_factor,
-             error_text(errors, &CornerErrors::line_factor),
              governing.point_factor,
              error_text(errors, &CornerErrors::point_factor),
+             governing.line_factor,
+             error_text(errors, &CornerErrors::line_factor),
+             governing.area_factor,
+             error_text(errors, &CornerErrors::area_factor),
+             Safety::to_string(governing.verdict_method),
              Safety::verdict_factor(governing) < 1. ? "the corner fails" :
                                                       "the corner holds") +
            route;
@@ -174,21 +181,26 @@ namespace FloorBlock::Output
     text += fmt::format(
       "The FEM's route: the Hoek-Brown strength factor of the stress at L/2 "
       "(point method) and of its mean over L (line method) along each "
-      "floor-level corner's bisector, L = {:.1f} mm (src/safety/); the "
-      "verdict goes by the line method.\n\n"
-      "| corner | FS point | error | FS line | error |\n|---|---|---|---|---|\n",
-      corners.front().critical_distance * 1e3);
+      "floor-level corner's bisector, and of the mean stress over the block "
+      "within L of the corner (area method), L = {:.1f} mm (src/safety/); "
+      "the verdict goes by the {} method.\n\n"
+      "| corner | FS point | error | FS line | error | FS area | error |\n"
+      "|---|---|---|---|---|---|---|\n",
+      corners.front().critical_distance * 1e3,
+      Safety::to_string(corners.front().verdict_method));
     for (const Safety::CornerSafety &corner : corners)
       {
         const CornerErrors *errors = errors_of(corner, estimate);
         text += corner.resolved() ?
-                  fmt::format("| {} | {:.3f} | {} | {:.3f} | {} |\n",
+                  fmt::format("| {} | {:.3f} | {} | {:.3f} | {} | {:.3f} | {} |\n",
                               corner.path.label(),
                               corner.point_factor,
                               error_text(errors, &CornerErrors::point_factor),
                               corner.line_factor,
-                              error_text(errors, &CornerErrors::line_factor)) :
-                  fmt::format("| {} | unresolved (cells of {:.1f} mm) | | | |\n",
+                              error_text(errors, &CornerErrors::line_factor),
+                              corner.area_factor,
+                              error_text(errors, &CornerErrors::area_factor)) :
+                  fmt::format("| {} | unresolved (cells of {:.1f} mm) | | | | | |\n",
                               corner.path.label(),
                               corner.largest_cell * 1e3);
       }

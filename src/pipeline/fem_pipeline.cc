@@ -127,10 +127,14 @@ namespace FloorBlock::Pipeline
                                                        problem.model,
                                                        solution);
                 for (const Safety::CornerSafety &corner : latest_corners)
-                  increment.corner_factors.push_back({corner.path.label(),
-                                                      corner.point_factor,
-                                                      corner.line_factor,
-                                                      corner.resolved()});
+                  increment.corner_factors.push_back(
+                    {corner.path.label(),
+                     corner.point_factor,
+                     corner.line_factor,
+                     corner.area_factor,
+                     Safety::verdict_factor(corner),
+                     Safety::to_string(corner.verdict_method),
+                     corner.resolved()});
               };
           extras.cell_fields =
             [&scene, &solver, &problem](

@@ -2,6 +2,7 @@
 #include <safety/corner_safety.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace FloorBlock::Safety
@@ -30,40 +31,67 @@ namespace FloorBlock::Safety
     const double hair = 1e-9 * scene.geometry.block_width;
 
     const Fem::SmoothedStress field(space, model, solution);
+    // The stress along the ray from @p start in @p direction over [0, L],
+    // and the largest cell it crosses.
+    const auto read_ray = [&](const Geometry::Point2 &start,
+                              const Geometry::Point2 &direction,
+                              double                 &largest_cell) {
+      std::vector<dealii::Point<2>> points;
+      std::vector<double>           distances;
+      for (unsigned int k = 0; k <= samples_per_critical_distance; ++k)
+        {
+          const double d     = L * k / samples_per_critical_distance;
+          const double along = std::max(d, hair);
+          distances.push_back(d);
+          points.emplace_back(start.x + along * direction.x,
+                              start.y + along * direction.y);
+        }
+      const std::vector<Fem::PointStress> stresses = field.at(points);
+      std::vector<Strength::PathSample>   samples;
+      for (std::size_t k = 0; k < stresses.size(); ++k)
+        {
+          samples.push_back({distances[k], plane_strain(stresses[k])});
+          largest_cell = std::max(largest_cell, stresses[k].cell_size);
+        }
+      return samples;
+    };
+
     std::vector<CornerSafety> result;
     for (const CornerPath &path : floor_corner_paths(scene))
       {
-        std::vector<dealii::Point<2>> points;
-        std::vector<double>           distances;
-        for (unsigned int k = 0; k <= samples_per_critical_distance; ++k)
+        CornerSafety corner;
+        corner.samples = read_ray(path.start, path.direction, corner.largest_cell);
+        // The block's material within L of the hot spot is the quarter
+        // disc between its two faces, the path's bisector +- 45 degrees
+        // (with a fillet too: the quarter disc at the fillet's middle
+        // lies inside it).
+        std::vector<std::vector<Strength::PathSample>> rays;
+        for (unsigned int j = 0; j < rays_per_corner; ++j)
           {
-            const double d = L * k / samples_per_critical_distance;
-            const double along = std::max(d, hair);
-            distances.push_back(d);
-            points.emplace_back(path.start.x + along * path.direction.x,
-                                path.start.y + along * path.direction.y);
-          }
-        const std::vector<Fem::PointStress> stresses = field.at(points);
-        std::vector<Strength::PathSample> samples;
-        CornerSafety                      corner;
-        for (std::size_t k = 0; k < stresses.size(); ++k)
-          {
-            samples.push_back({distances[k], plane_strain(stresses[k])});
-            corner.largest_cell =
-              std::max(corner.largest_cell, stresses[k].cell_size);
+            const double turn =
+              (-0.25 + 0.5 * (j + 0.5) / rays_per_corner) * M_PI;
+            const Geometry::Point2 direction{
+              std::cos(turn) * path.direction.x - std::sin(turn) * path.direction.y,
+              std::sin(turn) * path.direction.x + std::cos(turn) * path.direction.y};
+            rays.push_back(
+              read_ray(path.start, direction, corner.largest_cell_within_L));
           }
 
-        corner.samples           = samples;
         corner.path              = path;
         corner.critical_distance = L;
         corner.point_stresses    = Strength::principal_stresses(
-          Strength::point_method_stress(samples, L));
+          Strength::point_method_stress(corner.samples, L));
         corner.line_stresses = Strength::principal_stresses(
-          Strength::line_method_stress(samples, L));
+          Strength::line_method_stress(corner.samples, L));
+        corner.area_stresses = Strength::principal_stresses(
+          Strength::area_method_stress(rays, L));
         corner.point_factor =
           Strength::strength_factor(corner.point_stresses, sigma_ci, constants);
         corner.line_factor =
           Strength::strength_factor(corner.line_stresses, sigma_ci, constants);
+        corner.area_factor =
+          Strength::strength_factor(corner.area_stresses, sigma_ci, constants);
+        corner.verdict_method = verdict_method(scene.joints.law);
         // The factor along the path, for floor_safety_paths.csv: only
         // where the path is resolved (elsewhere it is not written).
         if (corner.resolved())
@@ -82,10 +110,47 @@ namespace FloorBlock::Safety
            critical_distance / min_cells_per_critical_distance * (1. + 1e-9);
   }
 
+  const char *
+  to_string(const SafetyMethod method)
+  {
+    switch (method)
+      {
+        case SafetyMethod::point:
+          return "point";
+        case SafetyMethod::line:
+          return "line";
+        case SafetyMethod::area:
+          return "area";
+      }
+    return "unknown";
+  }
+
+  SafetyMethod
+  verdict_method(const Contact::JointLawKind law)
+  {
+    return law == Contact::JointLawKind::rigid ? SafetyMethod::area :
+                                                 SafetyMethod::line;
+  }
+
+  double
+  factor(const CornerSafety &corner, const SafetyMethod method)
+  {
+    switch (method)
+      {
+        case SafetyMethod::point:
+          return corner.point_factor;
+        case SafetyMethod::line:
+          return corner.line_factor;
+        case SafetyMethod::area:
+          return corner.area_factor;
+      }
+    throw std::logic_error("factor: unknown method");
+  }
+
   double
   verdict_factor(const CornerSafety &corner)
   {
-    return corner.line_factor;
+    return factor(corner, corner.verdict_method);
   }
 
   const CornerSafety &

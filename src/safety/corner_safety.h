@@ -1,5 +1,6 @@
 #pragma once
 
+#include <contact/joint_law_kind.h>
 #include <fem/elastic_model.h>
 #include <fem/fe_space.h>
 #include <fem/point_stress.h>
@@ -23,13 +24,57 @@ namespace FloorBlock::Safety
    * with linear interpolation between them. */
   constexpr unsigned int samples_per_critical_distance = 128;
 
+  /** Rays at equal angles across the block's right-angled corner for the
+   * area method (the midpoint rule in angle: for a field varying as
+   * cos(2 theta) its error is 0.2 % of the amplitude). */
+  constexpr unsigned int rays_per_corner = 16;
+
+  /** The critical-distance measures a corner's factor is read from. */
+  enum class SafetyMethod
+  {
+    point, ///< the stress at L/2 along the path
+    line,  ///< the mean stress over L along the path
+    area   ///< the mean stress over the block's material within L
+  };
+
+  /** @brief "point", "line", "area". */
+  const char *
+  to_string(SafetyMethod method);
+
+  /**
+   * @brief The measure a corner's verdict (holds, fails) and the governing
+   * corner go by under the joint law @p law: the one that depends on
+   * neither the mesh nor a rounding radius much smaller than L under it
+   * (results/FINDINGS.md, section 13, with L = 20 mm on the default
+   * scene).
+   *
+   * Compliant joints: the line method (0.7 % over three nested levels,
+   * 1.1 % over radii of 1-5 mm). The joint spreads the contact pressure
+   * down the face; the point method's stress at L/2 sits where sigma_3
+   * turns from compression to tension and moves 2.6 % and 14 %; the area
+   * method counts the top r of the joint, which a fillet takes out of
+   * contact, and moves 25 % over the radii.
+   *
+   * Exact contact: the area method (0.6 % over the levels, 0.6 % over the
+   * radii). The corner carries a concentrated load, applied where the
+   * fillet's normal meets the contact force, up to about r from the
+   * path's start: every stress within L of the corner follows r (the
+   * point method moves 42 % over the radii, the line method 22 %), but the
+   * mean over the region is set by the tractions on its boundary, which r
+   * hardly moves (Strength::area_method_stress()).
+   */
+  SafetyMethod
+  verdict_method(Contact::JointLawKind law);
+
   /**
    * @brief The floor's safety factor at one block corner by the theory of
    * critical distances (Strength/Critical distance L): the Hoek-Brown
    * strength factor (Strength::strength_factor) of the stress at L/2 along
-   * the corner's path (point method) and of the mean stress over L (line
-   * method). Neither depends on the pointwise peak at the corner, which
-   * the mesh and the rounding radius decide.
+   * the corner's path (point method), of the mean stress over L along it
+   * (line method) and of the mean stress over the block's material within
+   * L of the hot spot (area method, Strength::area_method_stress()). None
+   * depends on the pointwise peak at the corner, which the mesh and the
+   * rounding radius decide.
    */
   struct CornerSafety
   {
@@ -37,14 +82,23 @@ namespace FloorBlock::Safety
     double                       critical_distance = 0.; ///< L (m)
     Strength::PrincipalStresses  point_stresses;          ///< at L/2 (Pa)
     Strength::PrincipalStresses  line_stresses;           ///< mean over L (Pa)
+    /** Mean over the block's material within L of the hot spot (Pa). */
+    Strength::PrincipalStresses  area_stresses;
     double                       point_factor = 0.;       ///< FS, point method
     double                       line_factor  = 0.;       ///< FS, line method
+    double                       area_factor  = 0.;       ///< FS, area method
+    /** The method the verdict goes by (verdict_method() of the law). */
+    SafetyMethod                 verdict_method = SafetyMethod::line;
     /** The stress along the path over [0, L], and its strength factor
      * (resolved paths only; else empty). */
     std::vector<Strength::PathSample> samples;
     std::vector<double>               sample_factors;
     /** Largest cell along the path over [0, L] (m). */
     double largest_cell = 0.;
+    /** Largest cell the area method's rays cross (m). Its mean is an
+     * integral of the field, so it asks less of the mesh than the stress
+     * at one point; resolved() goes by the path. */
+    double largest_cell_within_L = 0.;
 
     /** @brief Whether the mesh resolves L: cells along the path at most
      * L / min_cells_per_critical_distance. Elsewhere the stress at L/2 is
@@ -53,15 +107,11 @@ namespace FloorBlock::Safety
     resolved() const;
   };
 
-  /**
-   * @brief The factor a corner's verdict (holds, fails) and the governing
-   * corner go by: the line method's. On the default scene with L = 20 mm
-   * it changes by less than 0.2 % over three nested refinement levels and
-   * by 1.1 % over corner radii of 1-5 mm, where the point method's changes
-   * by 2.9 % and 13 %: the stress at L/2 sits where sigma_3 turns from
-   * compression to a tension close to the rock mass's tensile strength,
-   * and the factor follows sigma_3 there (results/FINDINGS.md, section 13).
-   */
+  /** @brief @p corner's factor by @p method. */
+  double
+  factor(const CornerSafety &corner, SafetyMethod method);
+
+  /** @brief The factor @p corner's verdict goes by: its verdict_method's. */
   double
   verdict_factor(const CornerSafety &corner);
 

@@ -65,4 +65,35 @@ namespace FloorBlock::Strength
       }
     return (1. / length) * integral;
   }
+
+  PlaneStrainStress
+  area_method_stress(const std::vector<std::vector<PathSample>> &rays,
+                     const double                                length)
+  {
+    if (rays.empty())
+      throw std::invalid_argument("critical distance: no rays for the area");
+    PlaneStrainStress sum;
+    for (const std::vector<PathSample> &ray : rays)
+      {
+        require_path_to(ray, length);
+        // Over a segment [a, b] where the stress is linear,
+        // int sigma rho drho = (b - a)/6 [sigma_a (2a + b) + sigma_b (a + 2b)].
+        PlaneStrainStress moment;
+        for (std::size_t k = 1; k < ray.size(); ++k)
+          {
+            const PathSample &a = ray[k - 1];
+            if (a.distance >= length)
+              break;
+            const double     end = std::min(ray[k].distance, length);
+            const PathSample b{end, between(a, ray[k], end)};
+            const double     h = end - a.distance;
+            moment             = moment +
+                     (h / 6.) *
+                       ((2. * a.distance + end) * a.stress +
+                        (a.distance + 2. * end) * b.stress);
+          }
+        sum = sum + (2. / (length * length)) * moment;
+      }
+    return (1. / rays.size()) * sum;
+  }
 } // namespace FloorBlock::Strength

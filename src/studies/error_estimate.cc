@@ -63,7 +63,8 @@ namespace FloorBlock::Studies
     /** The safety factors of a corner and where their estimates go. */
     const std::pair<CornerFactor, CornerError> estimated_corner_factors[] = {
       {&Safety::CornerSafety::point_factor, &Output::CornerErrors::point_factor},
-      {&Safety::CornerSafety::line_factor, &Output::CornerErrors::line_factor}};
+      {&Safety::CornerSafety::line_factor, &Output::CornerErrors::line_factor},
+      {&Safety::CornerSafety::area_factor, &Output::CornerErrors::area_factor}};
 
     /** The corner of @p corners with @p label, if its path is resolved. */
     const Safety::CornerSafety *

@@ -31,10 +31,11 @@ namespace FloorBlock::Studies
       for (const KnSafetyCase &record : sweep.cases)
         if (!is_rigid(record) && record.point_factor)
           {
-            data += fmt::format("{:.6e} {:.9e} {:.9e}\n",
+            data += fmt::format("{:.6e} {:.9e} {:.9e} {:.9e}\n",
                                 record.normal_stiffness,
                                 *record.point_factor,
-                                *record.line_factor);
+                                *record.line_factor,
+                                *record.area_factor);
             ++n_rows;
           }
       return data + "EOD\n";
@@ -47,28 +48,33 @@ namespace FloorBlock::Studies
     std::string csv = fmt::format(
       "# Floor safety factor against the joints' normal stiffness "
       "(floorblock sweep --figure kn_safety): the governing floor-level "
-      "corner's Hoek-Brown factor, point method at L/2 and line method over "
-      "L (src/safety/), L = {:.6g} m, {} cells per L asked for; ks = {:.6g} "
-      "kn (the scene's ks/kn); law rigid: exact contact, no kn or ks; the face "
-      "corner is the face block's at the face joint\n"
+      "corner's Hoek-Brown factor, point method at L/2, line method over L "
+      "and area method within L (src/safety/), L = {:.6g} m, {} cells per L "
+      "asked for; ks = {:.6g} kn (the scene's ks/kn); law rigid: exact "
+      "contact, no kn or ks; the verdict (status) goes by verdict_method; "
+      "the face corner is the face block's at the face joint\n"
       "kn_Pa_per_m,ks_Pa_per_m,law,safety_factor_point,safety_factor_line,"
-      "status,governing_corner,face_corner_point,face_corner_line,"
+      "safety_factor_area,verdict_method,status,governing_corner,"
+      "face_corner_point,face_corner_line,face_corner_area,"
       "face_corner_status,mesh_cells\n",
       sweep.critical_distance,
       sweep.cells_per_critical_distance,
       sweep.stiffness_ratio);
     for (const KnSafetyCase &record : sweep.cases)
       csv += fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{}\n",
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
         is_rigid(record) ? "" : fmt::format("{:.9e}", record.normal_stiffness),
         is_rigid(record) ? "" : fmt::format("{:.9e}", record.shear_stiffness),
         is_rigid(record) ? "rigid" : "compliant",
         optional_number(record.point_factor),
         optional_number(record.line_factor),
+        optional_number(record.area_factor),
+        record.verdict_method,
         record.status,
         record.governing_corner,
         optional_number(record.face_point_factor),
         optional_number(record.face_line_factor),
+        optional_number(record.face_area_factor),
         record.face_status,
         record.n_cells);
     return csv;
@@ -99,6 +105,8 @@ namespace FloorBlock::Studies
                          "'#1b9e77' title 'point method (L/2)'");
         curves.push_back("$fs using 1:3 with linespoints lw 2 pt 5 lc "
                          "'#d95f02' title 'line method (mean over L)'");
+        curves.push_back("$fs using 1:4 with linespoints lw 2 pt 9 lc "
+                         "'#7570b3' title 'area method (mean within L)'");
       }
     for (const KnSafetyCase &record : sweep.cases)
       if (is_rigid(record) && record.point_factor)
@@ -111,6 +119,10 @@ namespace FloorBlock::Studies
                                        "'#d95f02' title 'exact (rigid law), "
                                        "line'",
                                        *record.line_factor));
+          curves.push_back(fmt::format("{:.9e} with lines dt 2 lw 2 lc "
+                                       "'#7570b3' title 'exact (rigid law), "
+                                       "area'",
+                                       *record.area_factor));
         }
     curves.push_back("1 with lines lw 1 lc 'black' title 'FS = 1'");
 
@@ -138,17 +150,23 @@ namespace FloorBlock::Studies
     // The face corner where another corner governs.
     const std::string face =
       record.governing_corner.rfind("face block", 0) == 0 ? "" :
-      record.face_point_factor ? fmt::format("; face corner {:.3f}, {:.3f}",
-                                             *record.face_point_factor,
-                                             *record.face_line_factor) :
-                                 "; face corner " + record.face_status;
-    return fmt::format("  {}: FS = {:.3f} (point), {:.3f} (line) at {}: {}{}",
-                       law,
-                       *record.point_factor,
-                       *record.line_factor,
-                       record.governing_corner,
-                       record.status,
-                       face);
+      record.face_point_factor ?
+        fmt::format("; face corner {:.3f}, {:.3f}, {:.3f}",
+                    *record.face_point_factor,
+                    *record.face_line_factor,
+                    *record.face_area_factor) :
+        "; face corner " + record.face_status;
+    return fmt::format(
+      "  {}: FS = {:.3f} (point), {:.3f} (line), {:.3f} (area) at {}: {} "
+      "(by the {} method){}",
+      law,
+      *record.point_factor,
+      *record.line_factor,
+      *record.area_factor,
+      record.governing_corner,
+      record.status,
+      record.verdict_method,
+      face);
   }
 
   void

@@ -68,13 +68,16 @@ namespace FloorBlock::Studies
         {
           record.point_factor = governing.point_factor;
           record.line_factor  = governing.line_factor;
+          record.area_factor  = governing.area_factor;
         }
+      record.verdict_method = Safety::to_string(governing.verdict_method);
       const Safety::CornerSafety *face = face_corner(corners, n_blocks);
       record.face_status               = face ? verdict(*face) : "none";
       if (face && face->resolved())
         {
           record.face_point_factor = face->point_factor;
           record.face_line_factor  = face->line_factor;
+          record.face_area_factor  = face->area_factor;
         }
     }
 

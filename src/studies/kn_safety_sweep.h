@@ -35,6 +35,9 @@ namespace FloorBlock::Studies
     std::string           status;
     std::optional<double> point_factor; ///< FS, point method (L/2)
     std::optional<double> line_factor;  ///< FS, line method (mean over L)
+    std::optional<double> area_factor;  ///< FS, area method (mean within L)
+    /// The method the verdict goes by: "line" (compliant), "area" (rigid).
+    std::string           verdict_method;
     std::string governing_corner; ///< "block 6 at vertical 6"; empty if none
     /// The face corner, the face block's at the face joint: its status
     /// ("holds", "fails", "unresolved", "not converged") and factors,
@@ -42,6 +45,7 @@ namespace FloorBlock::Studies
     std::string           face_status;
     std::optional<double> face_point_factor;
     std::optional<double> face_line_factor;
+    std::optional<double> face_area_factor;
     unsigned int          n_cells = 0; ///< of the mesh solved on
     std::string           folder;      ///< where the solve's files are
   };

@@ -62,20 +62,25 @@ namespace
           {
             EXPECT_TRUE(row.at("safety_factor_point").empty());
             EXPECT_TRUE(row.at("safety_factor_line").empty());
+            EXPECT_TRUE(row.at("safety_factor_area").empty());
             ++n_marginal;
             continue;
           }
         ASSERT_TRUE(status == "holds" || status == "fails") << status;
         ++n_resolved;
-        for (const char *column : {"safety_factor_point", "safety_factor_line"})
+        for (const char *column :
+             {"safety_factor_point", "safety_factor_line", "safety_factor_area"})
           {
             const double factor = number_in(row, column);
             EXPECT_TRUE(std::isfinite(factor) && factor > 0.) << column;
           }
-        // The verdict goes by the line method (Safety::verdict_factor()).
+        // The verdict goes by the line method with compliant joints, the
+        // area method with exact contact (Safety::verdict_method()).
+        const std::string method = rigid ? "area" : "line";
+        EXPECT_EQ(row.at("verdict_method"), method);
         EXPECT_EQ(status,
-                  number_in(row, "safety_factor_line") < 1. ? "fails" :
-                                                              "holds");
+                  number_in(row, "safety_factor_" + method) < 1. ? "fails" :
+                                                                   "holds");
       }
     EXPECT_EQ(stiffnesses,
               (std::set<double>{1e9, 3e9, 1e10, 3e10, 1e11, 1e12}));

@@ -14,31 +14,33 @@ namespace
   {
     Output::LiftHistoryPoint point;
     point.base_lift      = lift;
-    point.corner_factors = {{"face block at vertical 6", face, face + 0.1, face_resolved},
-                            {"block 6 at vertical 6", other, other + 0.1, true}};
+    // Point, line and area factors; the verdict goes by the line method's.
+    point.corner_factors = {{"face block at vertical 6", face - 0.1, face, face + 0.2, face, "line", face_resolved},
+                            {"block 6 at vertical 6", other - 0.1, other, other + 0.2, other, "line", true}};
     return point;
   }
 } // namespace
 
-// The governing corner is the resolved one with the smallest line factor
-// (Safety::verdict_factor()).
+// The governing corner is the resolved one with the smallest verdict
+// factor (Safety::verdict_factor()).
 TEST(SafetyAlongLift, GoverningCornerIsTheSmallestResolvedOne)
 {
   const auto along = Output::safety_along_lift(
     {increment(0.01, 2.0, 3.0), increment(0.02, 1.5, 1.2, false)});
   ASSERT_EQ(along.size(), 2u);
   EXPECT_EQ(along[0].corner, "face block at vertical 6");
-  EXPECT_DOUBLE_EQ(along[0].line_factor, 2.1);
+  EXPECT_DOUBLE_EQ(along[0].verdict_factor, 2.0);
+  EXPECT_DOUBLE_EQ(along[0].area_factor, 2.2);
   EXPECT_EQ(along[1].corner, "block 6 at vertical 6");
 }
 
-// FS = 1 (line method) is found between the increments around it,
+// FS = 1 (the verdict's method) is found between the increments around it,
 // linearly: 1.5 at 20 mm and 0.5 at 30 mm give 25 mm.
 TEST(SafetyAlongLift, UnitSafetyIsInterpolatedBetweenIncrements)
 {
   const auto along = Output::safety_along_lift({increment(0.01, 2.0, 3.0),
-                                                increment(0.02, 1.4, 3.0),
-                                                increment(0.03, 0.4, 3.0)});
+                                                increment(0.02, 1.5, 3.0),
+                                                increment(0.03, 0.5, 3.0)});
   const auto lift = Output::lift_at_unit_safety(along);
   ASSERT_TRUE(lift.has_value());
   EXPECT_NEAR(*lift, 0.025, 1e-15);

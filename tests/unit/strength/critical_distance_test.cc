@@ -1,6 +1,7 @@
-// The theory of critical distances: L from K_Ic and sigma_t, and the point
+// The theory of critical distances: L from K_Ic and sigma_t, the point
 // and line methods on the Hertz line contact's axis, whose stresses are
-// known in closed form (Johnson 1985, eq. 4.75).
+// known in closed form (Johnson 1985, eq. 4.75), and the area method on
+// fields whose means over a quarter disc are known in closed form.
 
 #include <analytic/hertz.h>
 #include <strength/critical_distance.h>
@@ -88,4 +89,54 @@ TEST(CriticalDistance, RefusesAPathThatDoesNotReachL)
   EXPECT_THROW(Strength::line_method_stress(path, 2. * a), std::invalid_argument);
   EXPECT_NO_THROW(Strength::point_method_stress(path, 2. * a));
   EXPECT_THROW(Strength::point_method_stress(path, 3. * a), std::invalid_argument);
+}
+
+namespace
+{
+  /** Rays over the quarter disc 0 <= theta <= pi/2, radius @p length, of
+   * the field sigma_xx = x^2, sigma_yy = 6 x, sigma_xy = x y. */
+  std::vector<std::vector<Strength::PathSample>>
+  quarter_disc_rays(const double length, const unsigned int n_rays)
+  {
+    std::vector<std::vector<Strength::PathSample>> rays;
+    for (unsigned int j = 0; j < n_rays; ++j)
+      {
+        const double theta = 0.5 * M_PI * (j + 0.5) / n_rays;
+        std::vector<Strength::PathSample> ray;
+        for (unsigned int k = 0; k <= 128; ++k)
+          {
+            const double rho = 1.1 * length * k / 128;
+            const double x   = rho * std::cos(theta);
+            const double y   = rho * std::sin(theta);
+            ray.push_back({rho, {x * x, 6. * x, x * y, 0.}});
+          }
+        rays.push_back(ray);
+      }
+    return rays;
+  }
+} // namespace
+
+// Area method over a quarter disc of radius L, sampled on 16 rays as the
+// corners are: mean x^2 = L^2/4, mean x = 4L/(3 pi), mean x y =
+// L^2/(2 pi), within 0.5 % (the midpoint rule in angle).
+TEST(CriticalDistance, AreaMethodOverAQuarterDisc)
+{
+  const double length = 0.02;
+  const auto   mean   = Strength::area_method_stress(quarter_disc_rays(length, 16), length);
+  EXPECT_NEAR(mean.xx / (0.25 * length * length), 1., 0.005);
+  EXPECT_NEAR(mean.yy / (8. * length / M_PI), 1., 0.005);
+  EXPECT_NEAR(mean.xy / (length * length / (2. * M_PI)), 1., 0.005);
+}
+
+// A field uniform in angle and linear in the radius, a + b rho: its
+// mean over the disc is a + (2/3) b L, exactly, with L between samples.
+TEST(CriticalDistance, AreaMethodExactForARadiallyLinearField)
+{
+  std::vector<Strength::PathSample> ray;
+  for (const double d : {0., 0.003, 0.01, 0.04})
+    ray.push_back({d, {1e6 + 2e8 * d, 0., 0., 0.}});
+  const auto mean = Strength::area_method_stress({ray, ray, ray}, 0.02);
+  EXPECT_NEAR(mean.xx, 1e6 + 2e8 * 2. / 3. * 0.02, 1e-6);
+  EXPECT_THROW(Strength::area_method_stress({}, 0.02), std::invalid_argument);
+  EXPECT_THROW(Strength::area_method_stress({ray}, 0.05), std::invalid_argument);
 }
