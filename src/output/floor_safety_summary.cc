@@ -41,23 +41,22 @@ namespace FloorBlock::Output
                 const std::optional<FemErrorEstimate> &estimate)
     {
       const CornerErrors *errors = errors_of(corner, estimate);
-      return {
-        {"corner", corner.path.label()},
-        {"resolved", corner.resolved()},
-        {"safety_factor_point", corner.point_factor},
-        {"safety_factor_point_relative_error",
-         errors ? optional_json(errors->point_factor.relative_error) :
-                  json(nullptr)},
-        {"safety_factor_line", corner.line_factor},
-        {"safety_factor_line_relative_error",
-         errors ? optional_json(errors->line_factor.relative_error) :
-                  json(nullptr)},
-        {"safety_factor_area", corner.area_factor},
-        {"safety_factor_area_relative_error",
-         errors ? optional_json(errors->area_factor.relative_error) :
-                  json(nullptr)},
-        // The errors are null where not estimated; status says why.
-        {"status", error_status(corner, estimate)}};
+      return {{"corner", corner.path.label()},
+              {"resolved", corner.resolved()},
+              {"safety_factor_point", corner.point_factor},
+              {"safety_factor_point_relative_error",
+               errors ? optional_json(errors->point_factor.relative_error) :
+                        json(nullptr)},
+              {"safety_factor_line", corner.line_factor},
+              {"safety_factor_line_relative_error",
+               errors ? optional_json(errors->line_factor.relative_error) :
+                        json(nullptr)},
+              {"safety_factor_area", corner.area_factor},
+              {"safety_factor_area_relative_error",
+               errors ? optional_json(errors->area_factor.relative_error) :
+                        json(nullptr)},
+              // The errors are null where not estimated; status says why.
+              {"status", error_status(corner, estimate)}};
     }
 
     json
@@ -77,7 +76,8 @@ namespace FloorBlock::Output
     {
       if (errors == nullptr || !(errors->*figure).relative_error)
         return "(error not estimated)";
-      return fmt::format("+- {:.2g} %", 100. * *(errors->*figure).relative_error);
+      return fmt::format("+- {:.2g} %",
+                         100. * *(errors->*figure).relative_error);
     }
 
     std::string
@@ -90,8 +90,9 @@ namespace FloorBlock::Output
                               text.empty() ? "" : ", ",
                               Scene::to_string(entry.mechanism),
                               *entry.floor_safety_factor);
-      return text.empty() ? std::string("no mechanism gives Eq. 6.53 an answer") :
-                            text;
+      return text.empty() ?
+               std::string("no mechanism gives Eq. 6.53 an answer") :
+               text;
     }
   } // namespace
 
@@ -101,32 +102,35 @@ namespace FloorBlock::Output
                             const Scene::ClosedForms &closed_forms)
   {
     json summary = {{"floor_strength_Pa", closed_forms.floor_strength},
-                    {"safety_factor_eq_6_53", chapter_route_json(closed_forms)}};
+                    {"safety_factor_eq_6_53",
+                     chapter_route_json(closed_forms)}};
     if (corners.empty())
       {
-        summary["status"]      = "not evaluated";
-        summary["status_text"] = "the FEM gave no corner stresses (a 2D elastic "
-                                 "FEM solve with a converged increment does)";
+        summary["status"] = "not evaluated";
+        summary["status_text"] =
+          "the FEM gave no corner stresses (a 2D elastic "
+          "FEM solve with a converged increment does)";
         return summary;
       }
     json records = json::array();
     for (const Safety::CornerSafety &corner : corners)
       records.push_back(corner_json(corner, estimate));
     const Safety::CornerSafety &governing = Safety::governing_corner(corners);
-    summary["critical_distance_m"] = governing.critical_distance;
-    summary["corners"]             = records;
+    summary["critical_distance_m"]        = governing.critical_distance;
+    summary["corners"]                    = records;
     if (!governing.resolved())
       {
-        summary["status"]      = "unresolved";
+        summary["status"] = "unresolved";
         summary["status_text"] =
           "the mesh does not resolve the critical distance along every "
-          "corner path (" + governing.path.label() + " has cells of " +
+          "corner path (" +
+          governing.path.label() + " has cells of " +
           fmt::format("{:.1f}", governing.largest_cell * 1e3) +
           " mm); set Mesh/Cells per critical distance, or Mesh/Global "
           "refinements where the corner cells stay larger";
         return summary;
       }
-    summary["governing"] = corner_json(governing, estimate);
+    summary["governing"]      = corner_json(governing, estimate);
     summary["verdict_method"] = Safety::to_string(governing.verdict_method);
     summary["status"] =
       Safety::verdict_factor(governing) < 1. ? "fails" : "holds";
@@ -135,7 +139,7 @@ namespace FloorBlock::Output
 
   std::string
   floor_safety_summary_lines(const std::vector<Safety::CornerSafety> &corners,
-                             const std::optional<FemErrorEstimate> &estimate,
+                             const std::optional<FemErrorEstimate>   &estimate,
                              const Scene::ClosedForms &closed_forms)
   {
     const std::string route =
@@ -191,18 +195,19 @@ namespace FloorBlock::Output
     for (const Safety::CornerSafety &corner : corners)
       {
         const CornerErrors *errors = errors_of(corner, estimate);
-        text += corner.resolved() ?
-                  fmt::format("| {} | {:.3f} | {} | {:.3f} | {} | {:.3f} | {} |\n",
-                              corner.path.label(),
-                              corner.point_factor,
-                              error_text(errors, &CornerErrors::point_factor),
-                              corner.line_factor,
-                              error_text(errors, &CornerErrors::line_factor),
-                              corner.area_factor,
-                              error_text(errors, &CornerErrors::area_factor)) :
-                  fmt::format("| {} | unresolved (cells of {:.1f} mm) | | | | | |\n",
-                              corner.path.label(),
-                              corner.largest_cell * 1e3);
+        text +=
+          corner.resolved() ?
+            fmt::format("| {} | {:.3f} | {} | {:.3f} | {} | {:.3f} | {} |\n",
+                        corner.path.label(),
+                        corner.point_factor,
+                        error_text(errors, &CornerErrors::point_factor),
+                        corner.line_factor,
+                        error_text(errors, &CornerErrors::line_factor),
+                        corner.area_factor,
+                        error_text(errors, &CornerErrors::area_factor)) :
+            fmt::format("| {} | unresolved (cells of {:.1f} mm) | | | | | |\n",
+                        corner.path.label(),
+                        corner.largest_cell * 1e3);
       }
     return text;
   }

@@ -14,13 +14,15 @@ namespace FloorBlock::Output
 {
   /**
    * @brief summary.json's "floor_safety": the engineer's answer of `run`.
-   * Per floor-level corner (Safety::corner_safety()) safety_factor_point
-   * and safety_factor_line, each with its estimated relative error
+   * Per floor-level corner (Safety::corner_safety()) safety_factor_point,
+   * safety_factor_line and safety_factor_area, each with its estimated
+   * relative error
    * (FemErrorEstimate::corners; null where not estimated, the corner's
    * status saying why, else "estimated"); the governing corner; beside them the chapter's route,
    * safety_factor_eq_6_53 per mechanism (floor strength over Eq. 6.53's
    * sigma_max; absent where that has no answer) and floor_strength_Pa.
-   * status: "holds", "fails" (by the line method, verdict_method;
+   * status: "holds", "fails" (by verdict_method, the line method with
+   * compliant joints, the area method with exact contact;
    * Safety::verdict_factor()) or "unresolved" (with status_text), or
    * "not evaluated" where the FEM gave no corner stresses (3D, rigid
    * blocks, no converged increment).

@@ -1,4 +1,5 @@
 #include <fem/smoothed_stress.h>
+
 #include <safety/corner_safety.h>
 
 #include <algorithm>
@@ -60,7 +61,8 @@ namespace FloorBlock::Safety
     for (const CornerPath &path : floor_corner_paths(scene))
       {
         CornerSafety corner;
-        corner.samples = read_ray(path.start, path.direction, corner.largest_cell);
+        corner.samples =
+          read_ray(path.start, path.direction, corner.largest_cell);
         // The block's material within L of the hot spot is the quarter
         // disc between its two faces, the path's bisector +- 45 degrees
         // (with a fillet too: the quarter disc at the fillet's middle
@@ -70,9 +72,12 @@ namespace FloorBlock::Safety
           {
             const double turn =
               (-0.25 + 0.5 * (j + 0.5) / rays_per_corner) * M_PI;
-            const Geometry::Point2 direction{
-              std::cos(turn) * path.direction.x - std::sin(turn) * path.direction.y,
-              std::sin(turn) * path.direction.x + std::cos(turn) * path.direction.y};
+            const Geometry::Point2 direction{std::cos(turn) * path.direction.x -
+                                               std::sin(turn) *
+                                                 path.direction.y,
+                                             std::sin(turn) * path.direction.x +
+                                               std::cos(turn) *
+                                                 path.direction.y};
             rays.push_back(
               read_ray(path.start, direction, corner.largest_cell_within_L));
           }
@@ -83,8 +88,8 @@ namespace FloorBlock::Safety
           Strength::point_method_stress(corner.samples, L));
         corner.line_stresses = Strength::principal_stresses(
           Strength::line_method_stress(corner.samples, L));
-        corner.area_stresses = Strength::principal_stresses(
-          Strength::area_method_stress(rays, L));
+        corner.area_stresses =
+          Strength::principal_stresses(Strength::area_method_stress(rays, L));
         corner.point_factor =
           Strength::strength_factor(corner.point_stresses, sigma_ci, constants);
         corner.line_factor =
@@ -97,7 +102,9 @@ namespace FloorBlock::Safety
         if (corner.resolved())
           for (const Strength::PathSample &sample : corner.samples)
             corner.sample_factors.push_back(Strength::strength_factor(
-              Strength::principal_stresses(sample.stress), sigma_ci, constants));
+              Strength::principal_stresses(sample.stress),
+              sigma_ci,
+              constants));
         result.push_back(corner);
       }
     return result;

@@ -5,11 +5,12 @@
 #include <fem/fe_space.h>
 #include <fem/point_stress.h>
 #include <parameters/scenario_parameters.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
 #include <safety/corner_paths.h>
 #include <strength/critical_distance.h>
 #include <strength/strength_factor.h>
-
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <vector>
 
@@ -78,17 +79,17 @@ namespace FloorBlock::Safety
    */
   struct CornerSafety
   {
-    CornerPath                   path;
-    double                       critical_distance = 0.; ///< L (m)
-    Strength::PrincipalStresses  point_stresses;          ///< at L/2 (Pa)
-    Strength::PrincipalStresses  line_stresses;           ///< mean over L (Pa)
+    CornerPath                  path;
+    double                      critical_distance = 0.; ///< L (m)
+    Strength::PrincipalStresses point_stresses;         ///< at L/2 (Pa)
+    Strength::PrincipalStresses line_stresses;          ///< mean over L (Pa)
     /** Mean over the block's material within L of the hot spot (Pa). */
-    Strength::PrincipalStresses  area_stresses;
-    double                       point_factor = 0.;       ///< FS, point method
-    double                       line_factor  = 0.;       ///< FS, line method
-    double                       area_factor  = 0.;       ///< FS, area method
+    Strength::PrincipalStresses area_stresses;
+    double                      point_factor = 0.; ///< FS, point method
+    double                      line_factor  = 0.; ///< FS, line method
+    double                      area_factor  = 0.; ///< FS, area method
     /** The method the verdict goes by (verdict_method() of the law). */
-    SafetyMethod                 verdict_method = SafetyMethod::line;
+    SafetyMethod verdict_method = SafetyMethod::line;
     /** The stress along the path over [0, L], and its strength factor
      * (resolved paths only; else empty). */
     std::vector<Strength::PathSample> samples;

@@ -1,5 +1,6 @@
 #include <strength/critical_distance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,8 +11,8 @@ namespace FloorBlock::Strength
     void
     require_path_to(const std::vector<PathSample> &path, const double reach)
     {
-      if (path.size() < 2 || path.front().distance != 0. ||
-          !(reach > 0.) || path.back().distance < reach)
+      if (path.size() < 2 || path.front().distance != 0. || !(reach > 0.) ||
+          path.back().distance < reach)
         throw std::invalid_argument(
           "critical distance: the path must start at the hot spot and "
           "reach the distance asked for");
@@ -27,6 +28,24 @@ namespace FloorBlock::Strength
     {
       const double t = (distance - a.distance) / (b.distance - a.distance);
       return (1. - t) * a.stress + t * b.stress;
+    }
+
+    /** Calls @p add(a, b) for every piece [a, b] of the linear interpolant
+     * of @p path over [0, length] (the last one cut at length). */
+    template <typename Add>
+    void
+    for_each_piece(const std::vector<PathSample> &path,
+                   const double                   length,
+                   const Add                     &add)
+    {
+      for (std::size_t k = 1; k < path.size(); ++k)
+        {
+          const PathSample &a = path[k - 1];
+          if (a.distance >= length)
+            break;
+          const double end = std::min(path[k].distance, length);
+          add(a, PathSample{end, between(a, path[k], end)});
+        }
     }
   } // namespace
 
@@ -54,15 +73,10 @@ namespace FloorBlock::Strength
   {
     require_path_to(path, length);
     PlaneStrainStress integral;
-    for (std::size_t k = 1; k < path.size(); ++k)
-      {
-        const PathSample &a = path[k - 1];
-        if (a.distance >= length)
-          break;
-        const double      end = std::min(path[k].distance, length);
-        const PathSample  b{end, between(a, path[k], end)};
-        integral = integral + (0.5 * (end - a.distance)) * (a.stress + b.stress);
-      }
+    for_each_piece(path, length, [&](const PathSample &a, const PathSample &b) {
+      integral =
+        integral + (0.5 * (b.distance - a.distance)) * (a.stress + b.stress);
+    });
     return (1. / length) * integral;
   }
 
@@ -79,19 +93,14 @@ namespace FloorBlock::Strength
         // Over a segment [a, b] where the stress is linear,
         // int sigma rho drho = (b - a)/6 [sigma_a (2a + b) + sigma_b (a + 2b)].
         PlaneStrainStress moment;
-        for (std::size_t k = 1; k < ray.size(); ++k)
-          {
-            const PathSample &a = ray[k - 1];
-            if (a.distance >= length)
-              break;
-            const double     end = std::min(ray[k].distance, length);
-            const PathSample b{end, between(a, ray[k], end)};
-            const double     h = end - a.distance;
-            moment             = moment +
-                     (h / 6.) *
-                       ((2. * a.distance + end) * a.stress +
-                        (a.distance + 2. * end) * b.stress);
-          }
+        for_each_piece(ray,
+                       length,
+                       [&](const PathSample &a, const PathSample &b) {
+                         moment = moment +
+                                  ((b.distance - a.distance) / 6.) *
+                                    ((2. * a.distance + b.distance) * a.stress +
+                                     (a.distance + 2. * b.distance) * b.stress);
+                       });
         sum = sum + (2. / (length * length)) * moment;
       }
     return (1. / rays.size()) * sum;

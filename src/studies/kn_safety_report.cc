@@ -149,7 +149,8 @@ namespace FloorBlock::Studies
                            " at " + record.governing_corner);
     // The face corner where another corner governs.
     const std::string face =
-      record.governing_corner.rfind("face block", 0) == 0 ? "" :
+      record.governing_corner.rfind("face block", 0) == 0 ?
+        "" :
       record.face_point_factor ?
         fmt::format("; face corner {:.3f}, {:.3f}, {:.3f}",
                     *record.face_point_factor,

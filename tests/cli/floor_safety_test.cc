@@ -48,11 +48,53 @@ namespace
         EXPECT_LE(point, 100.);
         smallest = std::min(smallest, line);
       }
-    // The verdict and the governing corner go by the line method.
+    // With compliant joints the verdict and the governing corner go by
+    // the line method.
+    EXPECT_EQ(safety["governing"]["verdict_method"], "line");
     EXPECT_DOUBLE_EQ(safety["governing"]["safety_factor_line"].get<double>(),
                      smallest);
     EXPECT_EQ(safety["governing"]["status"], smallest < 1. ? "fails" : "holds");
     EXPECT_TRUE(std::filesystem::exists(folder + "/floor_safety_paths.csv"));
+  }
+
+  // With exact contact the verdict and the governing corner go by the area
+  // method (Safety::verdict_method()): every corner has the three factors,
+  // the governing one the smallest area-method factor, and the terminal
+  // names the method.
+  TEST(FloorSafety, ExactContactGoesByTheAreaMethod)
+  {
+    const std::string folder = fresh_output_folder("floor_safety_exact");
+    const auto        solve =
+      run_floorblock("solve " + three_blocks +
+                     " --set \"Strength/Critical distance=0.05\""
+                     " --set \"Mesh/Cells per critical distance=8\""
+                     " --set \"Joints/Law=rigid\" --output " +
+                     shell_quoted(folder));
+    ASSERT_EQ(solve.exit_code, 0) << solve.output;
+    EXPECT_NE(solve.output.find("(area method, the verdict)"), std::string::npos)
+      << solve.output;
+
+    const json safety = read_json(folder + "/fem.json")["floor_safety"];
+    ASSERT_EQ(safety["corners"].size(), 6u);
+    double smallest = 1e300;
+    for (const json &corner : safety["corners"])
+      {
+        EXPECT_TRUE(corner["resolved"].get<bool>()) << corner.dump();
+        for (const char *key :
+             {"safety_factor_point", "safety_factor_line", "safety_factor_area"})
+          {
+            const double factor = corner[key];
+            EXPECT_TRUE(factor > 0. && factor <= 100.) << key;
+          }
+        // The principal stresses of the mean within L, ordered.
+        EXPECT_GE(corner["sigma_1_mean_within_L_Pa"].get<double>(),
+                  corner["sigma_3_mean_within_L_Pa"].get<double>());
+        smallest = std::min(smallest, corner["safety_factor_area"].get<double>());
+      }
+    EXPECT_EQ(safety["governing"]["verdict_method"], "area");
+    EXPECT_DOUBLE_EQ(safety["governing"]["safety_factor_area"].get<double>(),
+                     smallest);
+    EXPECT_EQ(safety["governing"]["status"], smallest < 1. ? "fails" : "holds");
   }
 
   // A strong rock's short L: the default scene at sigma_ci = 60 MPa has
