@@ -80,6 +80,20 @@ namespace FloorBlock::Output
                          100. * *(errors->*figure).relative_error);
     }
 
+    /** A factor and its error as two cells of report.md's table. At the
+     * cap (an almost unloaded corner) the factor only says "at least" and
+     * an error of it says nothing. */
+    std::string
+    factor_cells(const double        factor,
+                 const CornerErrors *errors,
+                 FigureError CornerErrors::*figure)
+    {
+      if (factor >= Strength::largest_strength_factor)
+        return fmt::format(">= {:.0f} (almost unloaded) | |",
+                           Strength::largest_strength_factor);
+      return fmt::format("{:.3f} | {}", factor, error_text(errors, figure));
+    }
+
     std::string
     chapter_route_text(const Scene::ClosedForms &closed_forms)
     {
@@ -197,14 +211,17 @@ namespace FloorBlock::Output
         const CornerErrors *errors = errors_of(corner, estimate);
         text +=
           corner.resolved() ?
-            fmt::format("| {} | {:.3f} | {} | {:.3f} | {} | {:.3f} | {} |\n",
+            fmt::format("| {} | {} | {} | {} |\n",
                         corner.path.label(),
-                        corner.point_factor,
-                        error_text(errors, &CornerErrors::point_factor),
-                        corner.line_factor,
-                        error_text(errors, &CornerErrors::line_factor),
-                        corner.area_factor,
-                        error_text(errors, &CornerErrors::area_factor)) :
+                        factor_cells(corner.point_factor,
+                                     errors,
+                                     &CornerErrors::point_factor),
+                        factor_cells(corner.line_factor,
+                                     errors,
+                                     &CornerErrors::line_factor),
+                        factor_cells(corner.area_factor,
+                                     errors,
+                                     &CornerErrors::area_factor)) :
             fmt::format("| {} | unresolved (cells of {:.1f} mm) | | | | | |\n",
                         corner.path.label(),
                         corner.largest_cell * 1e3);
