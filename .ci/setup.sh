@@ -14,6 +14,7 @@ packages=(
   libdeal.ii-dev libgmsh-dev gmsh
   libcli11-dev nlohmann-json3-dev libfmt-dev
   libgtest-dev gnuplot-nox
+  libopenturns-dev   # statistics, sampling, reliability (src/uncertainty/)
   libopenblas0   # drop-in BLAS; the default reference BLAS slows direct solvers
 )
 missing=()
