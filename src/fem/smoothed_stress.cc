@@ -19,6 +19,12 @@ namespace FloorBlock::Fem
     , model(model)
     , displacement(displacement)
     , cache(space.dof_handler().get_triangulation(), space.mapping())
+    // The trapezoidal rule's points are the cell's vertices, in deal.II's
+    // vertex order.
+    , at_vertices(space.mapping(),
+                  space.fe(),
+                  dealii::QTrapezoid<2>(),
+                  dealii::update_gradients)
   {}
 
   const PointStress &
@@ -28,18 +34,12 @@ namespace FloorBlock::Fem
     const auto known = vertex_means.find({vertex, material});
     if (known != vertex_means.end())
       return known->second;
-    // The trapezoidal rule's points are the cell's vertices, in deal.II's
-    // vertex order.
-    const dealii::QTrapezoid<2>              at_vertices;
-    dealii::FEValues<2>                      fe_values(space.mapping(),
-                                  space.fe(),
-                                  at_vertices,
-                                  dealii::update_gradients);
     const dealii::FEValuesExtractors::Vector displacements(0);
-    std::vector<dealii::Tensor<2, 2>>        gradients(at_vertices.size());
-    const Material::ElasticLaw<2>           &law = model.laws.at(material);
-    PointStress                              sum;
-    unsigned int                             count = 0;
+    std::vector<dealii::Tensor<2, 2>>        gradients(
+      at_vertices.n_quadrature_points);
+    const Material::ElasticLaw<2> &law = model.laws.at(material);
+    PointStress                    sum;
+    unsigned int                   count = 0;
     // The map also lists coarser neighbours on whose face a hanging vertex
     // lies: only cells that have the vertex as one of theirs count.
     for (const auto &cell : cache.get_vertex_to_cell_map()[vertex])
@@ -51,9 +51,9 @@ namespace FloorBlock::Fem
               cell->level(),
               cell->index(),
               &space.dof_handler());
-            fe_values.reinit(dof_cell);
-            fe_values[displacements].get_function_gradients(displacement,
-                                                            gradients);
+            at_vertices.reinit(dof_cell);
+            at_vertices[displacements].get_function_gradients(displacement,
+                                                              gradients);
             const auto strain = dealii::symmetrize(gradients[v]);
             sum.in_plane += law.stress(strain);
             sum.out_of_plane += law.out_of_plane_stress(strain);
@@ -65,10 +65,11 @@ namespace FloorBlock::Fem
       .first->second;
   }
 
-  std::vector<PointStress>
-  SmoothedStress::at(const std::vector<dealii::Point<2>> &points) const
+  std::vector<PointLocation>
+  locate_points(const dealii::GridTools::Cache<2>   &cache,
+                const std::vector<dealii::Point<2>> &points)
   {
-    std::vector<PointStress> result;
+    std::vector<PointLocation> result;
     // Points along a path: the last point's cell is the best first guess.
     dealii::Triangulation<2>::active_cell_iterator hint;
     for (const dealii::Point<2> &point : points)
@@ -76,16 +77,33 @@ namespace FloorBlock::Fem
         const auto [cell, reference] =
           dealii::GridTools::find_active_cell_around_point(cache, point, hint);
         if (cell.state() != dealii::IteratorState::valid)
-          throw std::invalid_argument("SmoothedStress: the point (" +
-                                      std::to_string(point[0]) + ", " +
-                                      std::to_string(point[1]) +
-                                      ") lies outside the mesh");
+          throw std::invalid_argument(
+            "SmoothedStress: the point (" + std::to_string(point[0]) + ", " +
+            std::to_string(point[1]) + ") lies outside the mesh");
         hint = cell;
+        result.push_back({cell, reference});
+      }
+    return result;
+  }
+
+  std::vector<PointStress>
+  SmoothedStress::at(const std::vector<dealii::Point<2>> &points) const
+  {
+    return at(locate_points(cache, points));
+  }
+
+  std::vector<PointStress>
+  SmoothedStress::at(const std::vector<PointLocation> &locations) const
+  {
+    std::vector<PointStress> result;
+    for (const PointLocation &location : locations)
+      {
+        const auto &cell = location.cell;
         PointStress stress;
         stress.cell_size = cell->diameter() / std::sqrt(2.);
         // Bilinear weights of the four vertices (deal.II order: (0,0),
         // (1,0), (0,1), (1,1) in reference coordinates).
-        const double x = reference[0], y = reference[1];
+        const double x = location.reference[0], y = location.reference[1];
         const double weights[4] = {(1 - x) * (1 - y),
                                    x * (1 - y),
                                    (1 - x) * y,

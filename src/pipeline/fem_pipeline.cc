@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -119,10 +120,21 @@ namespace FloorBlock::Pipeline
           // stresses at every increment.
           if (scene.mesh.cells_per_critical_distance > 0)
             extras.describe =
-              [&scene, &solver, &problem, &latest_corners](
+              [&scene,
+               &solver,
+               &problem,
+               &latest_corners,
+               // The mesh stays through the load path: its sample points
+               // are located at the first increment and kept.
+               sample_points =
+                 std::make_shared<std::vector<Safety::CornerSamplePoints>>()](
                 const dealii::TrilinosWrappers::MPI::Vector &solution,
                 Contact::IncrementResult                    &increment) {
+                if (sample_points->empty())
+                  *sample_points =
+                    Safety::locate_corner_samples(scene, solver.space());
                 latest_corners = Safety::corner_safety(scene,
+                                                       *sample_points,
                                                        solver.space(),
                                                        problem.model,
                                                        solution);

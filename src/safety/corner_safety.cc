@@ -23,31 +23,28 @@ namespace FloorBlock::Safety
                 const Fem::ElasticModel<2>                  &model,
                 const dealii::TrilinosWrappers::MPI::Vector &solution)
   {
+    return corner_safety(
+      scene, locate_corner_samples(scene, space), space, model, solution);
+  }
+
+  std::vector<CornerSafety>
+  corner_safety(const Parameters::ScenarioParameters        &scene,
+                const std::vector<CornerSamplePoints>       &sample_points,
+                const Fem::FeSpace<2>                       &space,
+                const Fem::ElasticModel<2>                  &model,
+                const dealii::TrilinosWrappers::MPI::Vector &solution)
+  {
     const double L         = scene.strength.critical_distance;
     const double sigma_ci  = scene.strength.intact_ucs;
     const auto   constants = scene.strength.hoek_brown();
-    // The first sample sits a hair inside the block: at a sharp corner the
-    // two blocks' meshes share the point, and the stress belongs to this
-    // block's cell.
-    const double hair = 1e-9 * scene.geometry.block_width;
 
     const Fem::SmoothedStress field(space, model, solution);
-    // The stress along the ray from @p start in @p direction over [0, L],
-    // and the largest cell it crosses.
-    const auto read_ray = [&](const Geometry::Point2 &start,
-                              const Geometry::Point2 &direction,
-                              double                 &largest_cell) {
-      std::vector<dealii::Point<2>> points;
-      std::vector<double>           distances;
-      for (unsigned int k = 0; k <= samples_per_critical_distance; ++k)
-        {
-          const double d     = L * k / samples_per_critical_distance;
-          const double along = std::max(d, hair);
-          distances.push_back(d);
-          points.emplace_back(start.x + along * direction.x,
-                              start.y + along * direction.y);
-        }
-      const std::vector<Fem::PointStress> stresses = field.at(points);
+    // The stress at @p located points over [0, L] (at @p distances), and
+    // the largest cell they lie in.
+    const auto read = [&](const std::vector<double>             &distances,
+                          const std::vector<Fem::PointLocation> &located,
+                          double                                &largest_cell) {
+      const std::vector<Fem::PointStress> stresses = field.at(located);
       std::vector<Strength::PathSample>   samples;
       for (std::size_t k = 0; k < stresses.size(); ++k)
         {
@@ -58,29 +55,16 @@ namespace FloorBlock::Safety
     };
 
     std::vector<CornerSafety> result;
-    for (const CornerPath &path : floor_corner_paths(scene))
+    for (const CornerSamplePoints &points : sample_points)
       {
-        CornerSafety corner;
+        const CornerPath &path = points.path;
+        CornerSafety      corner;
         corner.samples =
-          read_ray(path.start, path.direction, corner.largest_cell);
-        // The block's material within L of the hot spot is the quarter
-        // disc between its two faces, the path's bisector +- 45 degrees
-        // (with a fillet too: the quarter disc at the fillet's middle
-        // lies inside it).
+          read(points.distances, points.along_path, corner.largest_cell);
         std::vector<std::vector<Strength::PathSample>> rays;
-        for (unsigned int j = 0; j < rays_per_corner; ++j)
-          {
-            const double turn =
-              (-0.25 + 0.5 * (j + 0.5) / rays_per_corner) * M_PI;
-            const Geometry::Point2 direction{std::cos(turn) * path.direction.x -
-                                               std::sin(turn) *
-                                                 path.direction.y,
-                                             std::sin(turn) * path.direction.x +
-                                               std::cos(turn) *
-                                                 path.direction.y};
-            rays.push_back(
-              read_ray(path.start, direction, corner.largest_cell_within_L));
-          }
+        for (const auto &ray : points.rays)
+          rays.push_back(
+            read(points.distances, ray, corner.largest_cell_within_L));
 
         corner.path              = path;
         corner.critical_distance = L;

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <safety/corner_paths.h>
+#include <safety/corner_sampling.h>
 #include <strength/critical_distance.h>
 #include <strength/strength_factor.h>
 
@@ -19,16 +20,6 @@ namespace FloorBlock::Safety
   /** @brief The FEM's stress at a point as Strength:: reads it. */
   Strength::PlaneStrainStress
   plane_strain(const Fem::PointStress &stress);
-
-  /** Samples of the stress along [0, L] of each path: the FE field is
-   * smooth within cells, so this many points resolve cells down to L/32
-   * with linear interpolation between them. */
-  constexpr unsigned int samples_per_critical_distance = 128;
-
-  /** Rays at equal angles across the block's right-angled corner for the
-   * area method (the midpoint rule in angle: for a field varying as
-   * cos(2 theta) its error is 0.2 % of the amplitude). */
-  constexpr unsigned int rays_per_corner = 16;
 
   /** The critical-distance measures a corner's factor is read from. */
   enum class SafetyMethod
@@ -126,6 +117,16 @@ namespace FloorBlock::Safety
    */
   std::vector<CornerSafety>
   corner_safety(const Parameters::ScenarioParameters        &scene,
+                const Fem::FeSpace<2>                       &space,
+                const Fem::ElasticModel<2>                  &model,
+                const dealii::TrilinosWrappers::MPI::Vector &solution);
+
+  /** @brief The same, at sample points already located in @p space's
+   * mesh (locate_corner_samples(): once per mesh, for every increment of
+   * a load path on it). */
+  std::vector<CornerSafety>
+  corner_safety(const Parameters::ScenarioParameters        &scene,
+                const std::vector<CornerSamplePoints>       &sample_points,
                 const Fem::FeSpace<2>                       &space,
                 const Fem::ElasticModel<2>                  &model,
                 const dealii::TrilinosWrappers::MPI::Vector &solution);
