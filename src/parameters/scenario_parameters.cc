@@ -3,6 +3,7 @@
 #include <parameters/scenario_parameters.h>
 #include <parameters/scene_file_checks.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -268,6 +269,27 @@ namespace FloorBlock::Parameters
     resolve_floor_lift(geometry, bedding, loading, warnings);
 
     model.choose(bedding, joints, loading);
+
+    // A 2D elastic solve reads the stress within L of every top corner of
+    // every block (src/safety/): the quarter disc of radius L from the
+    // corner's surface point must lie in its block.
+    if (model.chosen == BlockModel::elastic && geometry.dimension == 2)
+      {
+        const double smallest_side = std::min({geometry.block_width,
+                                               geometry.block_height,
+                                               geometry.face_block_width});
+        const double room = smallest_side - geometry.corner_rounding_radius;
+        if (!(strength.critical_distance < room))
+          throw InputError(
+            "Strength/Critical distance",
+            std::to_string(strength.critical_distance) + " m",
+            "must be below the smallest block side less the corner "
+            "rounding radius, " +
+              std::to_string(room) +
+              " m: the floor's safety factor reads the stress within L of "
+              "each block's top corners, inside the block (set it, or "
+              "Strength/Fracture toughness and Tensile strength for auto)");
+      }
 
     // The elastic FEM pairs the nodes of both joint sides one to one
     // (src/contact/README.md). Refused here, non-matching sides stop before

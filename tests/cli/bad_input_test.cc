@@ -189,6 +189,13 @@ namespace
      "",
      "--set 'Strength/Tensile strength=50e6'",
      "must be below Strength/Intact UCS"},
+    {"critical_distance_beyond_the_block",
+     "",
+     "",
+     "--set 'Geometry/Block width=0.5' --set 'Loading/Floor lift=auto' "
+     "--set 'Strength/Critical distance=0.9'",
+     "'Strength/Critical distance' = '0.900000 m': must be below the "
+     "smallest block side"},
     {"critical_distance_from_toughness_out_of_range",
      "",
      "",
