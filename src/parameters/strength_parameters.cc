@@ -67,8 +67,10 @@ namespace FloorBlock::Parameters
       AutoOrDouble(1e-5, 1.),
       "L of the theory of critical distances (Taylor 2007): the point "
       "method reads the stress at L/2 from a corner, the line method "
-      "averages it over L. auto: L = (K_Ic / sigma_t)^2 / pi (9.7 mm for "
-      "the defaults). Units: m.");
+      "averages it over L along the corner's bisector, the area method "
+      "over the block within L of the corner. auto: L = (K_Ic / sigma_t)^2 "
+      "/ pi (9.7 mm for the defaults). In a 2D elastic solve below the "
+      "smallest block side less the corner rounding radius. Units: m.");
     prm.leave_subsection();
   }
 
