@@ -1,9 +1,7 @@
 #include <fem/smoothed_stress.h>
-
 #include <safety/corner_safety.h>
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace FloorBlock::Safety
