@@ -1,5 +1,7 @@
 #include <parameters/parameter_error_text.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
 #include <cctype>
 #include <sstream>
@@ -116,6 +118,33 @@ namespace FloorBlock::Parameters
     if (parameter_path.empty())
       return text;
     return "parameter '" + parameter_path + "' = '" + value + "': " + text;
+  }
+
+  std::vector<std::string>
+  entry_paths(const dealii::ParameterHandler &prm)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
+    std::istringstream       lines(text.str());
+    std::string              line;
+    std::vector<std::string> open, paths;
+    while (std::getline(lines, line))
+      {
+        const std::string trimmed = dealii::Utilities::trim(line);
+        if (trimmed.rfind("subsection ", 0) == 0)
+          open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+        else if (trimmed == "end" && !open.empty())
+          open.pop_back();
+        else if (trimmed.rfind("set ", 0) == 0)
+          {
+            std::string path;
+            for (const std::string &subsection : open)
+              path += subsection + "/";
+            paths.push_back(path + dealii::Utilities::trim(trimmed.substr(
+                                     4, trimmed.find('=') - 4)));
+          }
+      }
+    return paths;
   }
 
   std::vector<std::string>

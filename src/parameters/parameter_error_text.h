@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ namespace FloorBlock::Parameters
   parameter_error_text(const dealii::ExceptionBase &error,
                        const std::string           &parameter_path,
                        const std::string           &value);
+
+  /**
+   * @brief Every entry declared in @p prm as "Subsection/Entry" (nested:
+   * "A/B/Entry").
+   */
+  std::vector<std::string>
+  entry_paths(const dealii::ParameterHandler &prm);
 
   /**
    * @brief Up to three declared "Subsection/Entry" paths whose entry name

@@ -27,6 +27,7 @@ namespace FloorBlock::Parameters
     VerifyParameters::declare_parameters(prm);
     ModelParameters::declare_parameters(prm);
     CornerParameters::declare_parameters(prm);
+    UncertaintyParameters::declare_parameters(prm);
   }
 
   namespace
@@ -235,6 +236,7 @@ namespace FloorBlock::Parameters
     verify.parse_parameters(prm);
     model.parse_parameters(prm);
     corner.parse_parameters(prm, geometry.n_blocks);
+    uncertainty.parse_parameters(prm);
     // Here, so that every command solves with the same joints.
     joints.resolve_stiffness(geometry, strength);
 
@@ -343,35 +345,13 @@ namespace FloorBlock::Parameters
       return text.str();
     }
 
-    /** Every declared entry as "Subsection/Entry" (nested: "A/B/Entry"). */
+    /** Every entry a scene file may set. */
     std::vector<std::string>
     declared_entry_paths()
     {
       ParameterHandler prm;
       ScenarioParameters::declare_parameters(prm);
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
-      std::istringstream       lines(text.str());
-      std::string              line;
-      std::vector<std::string> open, paths;
-      while (std::getline(lines, line))
-        {
-          const std::string trimmed = dealii::Utilities::trim(line);
-          if (trimmed.rfind("subsection ", 0) == 0)
-            open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
-          else if (trimmed == "end" && !open.empty())
-            open.pop_back();
-          else if (trimmed.rfind("set ", 0) == 0)
-            {
-              std::string path;
-              for (const std::string &subsection : open)
-                path += subsection + "/";
-              paths.push_back(path +
-                              dealii::Utilities::trim(
-                                trimmed.substr(4, trimmed.find('=') - 4)));
-            }
-        }
-      return paths;
+      return entry_paths(prm);
     }
 
     /** parameter_error_text() and, where it helps, what to do about it. */

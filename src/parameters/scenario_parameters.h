@@ -28,6 +28,7 @@ namespace FloorBlock::Parameters
     VerifyParameters   verify;
     ModelParameters    model;
     CornerParameters   corner;
+    UncertaintyParameters uncertainty;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).
     std::string scene_name;

@@ -4,6 +4,7 @@
 #include <geometry/bedding_kinds.h>
 #include <geometry/end_faces.h>
 #include <solver/solver_kinds.h>
+#include <parameters/uncertain_inputs.h>
 #include <strength/hoek_brown.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -399,5 +400,38 @@ namespace FloorBlock::Parameters
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm, unsigned int n_blocks);
+  };
+
+  /**
+   * Subsection "Uncertainty": the inputs `floorblock assess` treats as
+   * random, and how it estimates the probability of failure P(FS < 1).
+   * Other commands read it and leave it unused.
+   */
+  struct UncertaintyParameters
+  {
+    /** Uncertain scene parameters, each with its distribution. */
+    std::vector<UncertainInput> inputs;
+    /** Correlations of their Gaussian copula (others independent). */
+    std::vector<InputCorrelation> correlations;
+    /** Largest half-width of P_f's 95 % confidence interval (-). */
+    double half_width;
+    /** FEM cases the surrogate is fitted on. */
+    unsigned int training_cases;
+    /** FEM cases held out to check the surrogate. */
+    unsigned int validation_cases;
+    /** Seed of every random design and sample. */
+    unsigned int seed;
+    /** Wall time of the whole command (s). */
+    double time_budget;
+
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /**
+     * Reads the subsection, and checks every input's path against @p prm:
+     * a numeric parameter outside Uncertainty whose declared range holds
+     * every value the distribution can take.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
   };
 } // namespace FloorBlock::Parameters

@@ -2,10 +2,19 @@
 #include <parameters/value_text.h>
 
 #include <algorithm>
+#include <charconv>
 #include <sstream>
 
 namespace FloorBlock::Parameters
 {
+  std::string
+  number(const double value)
+  {
+    char       text[32];
+    const auto end = std::to_chars(text, text + sizeof(text), value).ptr;
+    return std::string(text, end);
+  }
+
   std::string
   pascals(const double value)
   {

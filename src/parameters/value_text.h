@@ -4,6 +4,11 @@
 
 namespace FloorBlock::Parameters
 {
+  /** @brief The shortest text that reads back as @p value ("89", "4e+07",
+   * "0.1"): for messages, and for setting a parameter to that exact value. */
+  std::string
+  number(double value);
+
   /** @brief A stress or modulus for an error message: six significant
    * digits and its unit, "4e+07 Pa". */
   std::string
