@@ -83,4 +83,6 @@ namespace FloorBlock::App
   converge_command(const CommandOptions &options);
   int
   corner_command(const CommandOptions &options);
+  int
+  assess_command(const CommandOptions &options);
 } // namespace FloorBlock::App

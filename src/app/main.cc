@@ -23,14 +23,16 @@ namespace
 
   /// Subcommands that run the finite-element engine.
   const std::set<std::string> needs_mpi =
-    {"mesh", "solve", "run", "verify", "converge", "sweep", "corner"};
+    {"mesh", "solve", "run", "verify", "converge", "sweep", "corner", "assess"};
 
   /**
    * Of those, the ones that use several processes under mpirun: `solve`
    * spreads one 3D mesh over them, `sweep` its cases. The others would
    * run whole on every process and write the same files side by side.
    */
-  const std::set<std::string> uses_several_processes = {"solve", "sweep"};
+  const std::set<std::string> uses_several_processes = {"solve",
+                                                        "sweep",
+                                                        "assess"};
 
   /** Refuses @p command on several processes when it uses only one. */
   void
@@ -42,8 +44,8 @@ namespace
       throw InputError("number of processes (mpirun -np)",
                        std::to_string(n_processes),
                        "1 for `floorblock " + command +
-                         "`; several processes serve `solve` of a 3D scene "
-                         "and `sweep`");
+                         "`; several processes serve `solve` of a 3D scene, "
+                         "`sweep` and `assess`");
   }
 
   /**
@@ -147,7 +149,12 @@ namespace
         {"corner",
          {"Corner-stress field at a joint's floor-level corner: state, "
           "asymptotic exponent and intensity, rounding study",
-          App::corner_command}}};
+          App::corner_command}},
+        {"assess",
+         {"Probability of floor failure under the scene's uncertain inputs "
+          "(subsection Uncertainty): FEM cases, a surrogate, P(FS < 1), "
+          "FORM, Sobol' indices",
+          App::assess_command}}};
     return commands;
   }
 

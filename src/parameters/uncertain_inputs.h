@@ -34,6 +34,9 @@ namespace FloorBlock::Parameters
     DistributionFamily  family;
     std::vector<double> arguments; ///< as written, in the parameter's units
     std::string         text;      ///< the entry as written, for messages
+    /** The parameter's unit as its documentation states it ("degrees",
+     * "Pa", "t"; "none"), set when the scene checks the input. */
+    std::string unit;
 
     /** @brief Whether the distribution is cut to [min, max]. */
     bool

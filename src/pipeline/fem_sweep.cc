@@ -3,30 +3,17 @@
 #include <pipeline/case_runner.h>
 #include <pipeline/fem_pipeline.h>
 #include <pipeline/fem_sweep.h>
+#include <pipeline/scratch_folder.h>
 #include <scene/rigid_inputs.h>
 
 #include <deal.II/base/mpi.h>
 
-#include <unistd.h>
-
-#include <filesystem>
 #include <iostream>
 
 namespace FloorBlock::Pipeline
 {
   namespace
   {
-    /// Removes the scratch folder of a case however its solve ends.
-    struct ScratchFolder
-    {
-      std::filesystem::path path;
-      ~ScratchFolder()
-      {
-        std::error_code ignored;
-        std::filesystem::remove_all(path, ignored);
-      }
-    };
-
     /// Case file name: rigid-block cases are stored apart, so a rigid and
     /// an elastic sweep into one folder never take each other's cases.
     std::string
@@ -39,9 +26,7 @@ namespace FloorBlock::Pipeline
     void
     fem_case(const Scene::FigurePoint &point, const Output::CaseStore &store)
     {
-      const ScratchFolder scratch{
-        std::filesystem::temp_directory_path() /
-        ("floorblock_case_" + std::to_string(::getpid()) + "_" + point.id())};
+      const ScratchFolder scratch(point.id());
       const FemOutcome outcome =
         solve_scene(point.scene,
                     Output::ResultFolder(scratch.path.string()),

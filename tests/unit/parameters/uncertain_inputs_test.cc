@@ -145,6 +145,9 @@ TEST(UncertainInputs, SceneTakesInputsWithinTheParametersRanges)
     {"Uncertainty/Inputs=Joints/Bedding friction angle: normal(30, 3, 15, "
      "45); Joints/Normal stiffness: lognormal(9e9, 4.5e9, 1e8, 1e12)"});
   ASSERT_EQ(scene.uncertainty.inputs.size(), 2u);
+  // Each input knows its parameter's unit, from its documentation.
+  EXPECT_EQ(scene.uncertainty.inputs[0].unit, "degrees");
+  EXPECT_EQ(scene.uncertainty.inputs[1].unit, "Pa/m");
   // The range probes set the entries; they must put them back, or the
   // expanded parameters (parameters.prm) would show a probed value.
   const ScenarioParameters plain = read_defaults("plain", {});

@@ -1,0 +1,226 @@
+#include <assessment/assessment.h>
+#include <common/input_error.h>
+#include <uncertainty/input_distribution.h>
+
+#include <deal.II/base/timer.h>
+
+#include <openturns/ComposedDistribution.hxx>
+#include <openturns/ComposedFunction.hxx>
+#include <openturns/LHSExperiment.hxx>
+#include <openturns/Normal.hxx>
+#include <openturns/RandomGenerator.hxx>
+#include <openturns/SymbolicFunction.hxx>
+
+#include <fmt/format.h>
+
+#include <ostream>
+
+namespace FloorBlock::Assessment
+{
+  namespace
+  {
+    /** Highest total degree of the chaos: cubic interactions at most, which
+     * some 100 cases in five inputs can still select among. */
+    constexpr std::uint64_t max_chaos_degree = 4;
+
+    /** The surrogate's evaluations for P_f and Sobol' indices are cheap:
+     * these bound them far beyond what the half-widths need. */
+    constexpr std::uint64_t max_surrogate_evaluations = 20000000;
+    constexpr std::uint64_t sobol_base_size           = 20000;
+
+    CaseDraws
+    draws_of(const std::string &prefix, const OT::Sample &sample)
+    {
+      CaseDraws draws;
+      for (OT::UnsignedInteger i = 0; i < sample.getSize(); ++i)
+        {
+          draws.ids.push_back(fmt::format("{}_{:04d}", prefix, i + 1));
+          const OT::Point point = sample[i];
+          draws.points.emplace_back(point.begin(), point.end());
+        }
+      return draws;
+    }
+
+    /**
+     * A Latin hypercube of @p size points in the standard normal space of
+     * @p distribution, taken to the inputs by its inverse
+     * iso-probabilistic transformation: the strata hold with correlated
+     * inputs too.
+     */
+    OT::Sample
+    latin_hypercube(const OT::Distribution &distribution,
+                    const std::uint64_t     size)
+    {
+      const OT::Normal standard(distribution.getDimension());
+      const OT::Sample u = OT::LHSExperiment(standard, size).generate();
+      return distribution.getInverseIsoProbabilisticTransformation()(u);
+    }
+
+    /** The solved cases' inputs and safety factors. */
+    std::pair<OT::Sample, OT::Sample>
+    solved_samples(const std::vector<SafetyCase> &cases,
+                   const std::size_t              dimension)
+    {
+      OT::Sample x(0, dimension), y(0, 1);
+      for (const SafetyCase &c : cases)
+        if (c.solved())
+          {
+            x.add(OT::Point(c.inputs.begin(), c.inputs.end()));
+            y.add(OT::Point(1, c.safety_factor));
+          }
+      return {x, y};
+    }
+
+    /** @p model shifted by @p shift: FS + shift. */
+    OT::Function
+    shifted(const OT::Function &model, const double shift)
+    {
+      const OT::SymbolicFunction add(
+        OT::Description(1, "fs"),
+        OT::Description(1, fmt::format("fs + ({:.17g})", shift)));
+      return OT::ComposedFunction(add, model);
+    }
+
+    std::vector<double>
+    predictions(const OT::Function &model, const std::vector<SafetyCase> &cases)
+    {
+      std::vector<double> values;
+      for (const SafetyCase &c : cases)
+        values.push_back(
+          model(OT::Point(c.inputs.begin(), c.inputs.end()))[0]);
+      return values;
+    }
+
+    double
+    summed_wall_time(const std::vector<SafetyCase> &cases)
+    {
+      double total = 0.;
+      for (const SafetyCase &c : cases)
+        total += c.wall_time;
+      return total;
+    }
+  } // namespace
+
+  OT::Distribution
+  checked_input_distribution(const Parameters::ScenarioParameters &scene)
+  {
+    if (scene.uncertainty.inputs.empty())
+      throw InputError("Uncertainty/Inputs",
+                       "",
+                       "at least one uncertain scene parameter for `assess`, "
+                       "e.g. \"Joints/Bedding friction angle: normal(30, 3, "
+                       "15, 45)\"");
+    return Uncertainty::input_distribution(scene.uncertainty.inputs,
+                                           scene.uncertainty.correlations);
+  }
+
+  bool
+  run_assessment(const Parameters::ScenarioParameters &scene,
+                 const SceneSource                    &source,
+                 const std::string                    &case_folder,
+                 std::ostream                         &progress,
+                 AssessmentResult                     &result,
+                 AssessmentIncomplete                 &incomplete)
+  {
+    const auto            &settings     = scene.uncertainty;
+    const OT::Distribution distribution = checked_input_distribution(scene);
+    const std::size_t      dimension    = distribution.getDimension();
+    result.inputs                       = settings.inputs;
+    result.correlations                 = settings.correlations;
+
+    OT::RandomGenerator::SetSeed(settings.seed);
+    const CaseDraws training =
+      draws_of("training", latin_hypercube(distribution, settings.training_cases));
+    OT::RandomGenerator::SetSeed(settings.seed + 1);
+    const CaseDraws validation =
+      draws_of("validation", distribution.getSample(settings.validation_cases));
+
+    // One batch, so that the ranks share all cases.
+    CaseDraws all = training;
+    all.ids.insert(all.ids.end(), validation.ids.begin(), validation.ids.end());
+    all.points.insert(all.points.end(),
+                      validation.points.begin(),
+                      validation.points.end());
+    const CaseBatch batch =
+      solve_safety_cases(source,
+                         all,
+                         Output::CaseStore(case_folder),
+                         MPI_COMM_WORLD,
+                         progress);
+    if (!batch.complete)
+      {
+        incomplete.n_cases_done  = batch.cases.size();
+        incomplete.n_cases_total = all.ids.size();
+        return false;
+      }
+    result.training.assign(batch.cases.begin(),
+                           batch.cases.begin() + training.ids.size());
+    result.validation.assign(batch.cases.begin() + training.ids.size(),
+                             batch.cases.end());
+    result.costs.push_back({"fem",
+                            batch.cases.size(),
+                            batch.n_from_earlier_runs,
+                            summed_wall_time(batch.cases)});
+
+    const auto [x, y] = solved_samples(result.training, dimension);
+    if (x.getSize() < dimension + 2)
+      throw std::runtime_error(fmt::format(
+        "only {} of {} training cases solved (the others were refused or "
+        "did not converge; cases.csv says why): a surrogate of {} inputs "
+        "needs at least {}",
+        x.getSize(),
+        result.training.size(),
+        dimension,
+        dimension + 2));
+
+    dealii::Timer surrogate_timer;
+    result.surrogate =
+      Uncertainty::fit_chaos_surrogate(x, y, distribution, max_chaos_degree);
+    const auto [x_check, y_check] =
+      solved_samples(result.validation, dimension);
+    result.held_out = Uncertainty::held_out_errors(result.surrogate.model,
+                                                   x_check,
+                                                   y_check,
+                                                   result.surrogate.stated_error);
+    result.surrogate_at_training =
+      predictions(result.surrogate.model, result.training);
+    result.surrogate_at_validation =
+      predictions(result.surrogate.model, result.validation);
+
+    const Uncertainty::SimulationSettings simulation{settings.half_width,
+                                                     max_surrogate_evaluations,
+                                                     1000,
+                                                     settings.seed + 2};
+    result.failure.monte_carlo =
+      Uncertainty::monte_carlo_failure_probability(result.surrogate.model,
+                                                   distribution,
+                                                   simulation);
+    // Where P_f lies if the surrogate errs by its stated error near FS = 1.
+    const double error = result.surrogate.stated_error;
+    const Uncertainty::FailureProbability lower =
+      Uncertainty::monte_carlo_failure_probability(
+        shifted(result.surrogate.model, error), distribution, simulation);
+    const Uncertainty::FailureProbability upper =
+      Uncertainty::monte_carlo_failure_probability(
+        shifted(result.surrogate.model, -error), distribution, simulation);
+    result.failure.lower_with_surrogate_error = lower.probability;
+    result.failure.upper_with_surrogate_error = upper.probability;
+    result.design_point =
+      Uncertainty::form_design_point(result.surrogate.model, distribution);
+
+    OT::ComposedDistribution::DistributionCollection marginals;
+    for (std::size_t i = 0; i < dimension; ++i)
+      marginals.add(distribution.getMarginal(i));
+    result.sobol = Uncertainty::sobol_indices(result.surrogate.model,
+                                              OT::ComposedDistribution(marginals),
+                                              sobol_base_size,
+                                              settings.seed + 3);
+    result.costs.push_back({"surrogate",
+                            result.sobol.evaluations +
+                              result.failure.monte_carlo.evaluations +
+                              lower.evaluations + upper.evaluations,
+                            0,
+                            surrogate_timer.wall_time()});
+    return true;
+  }
+} // namespace FloorBlock::Assessment
