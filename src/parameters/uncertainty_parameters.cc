@@ -237,9 +237,10 @@ namespace FloorBlock::Parameters
     prm.declare_entry(
       "Training cases",
       "120",
-      Integer(10, 100000),
+      Integer(3, 100000),
       "FEM cases (a Latin hypercube over the inputs) the surrogate of the "
-      "safety factor is fitted on. Units: none.");
+      "safety factor is fitted on; at least the number of inputs + 2. "
+      "Units: none.");
     prm.declare_entry(
       "Validation cases",
       "50",
@@ -278,6 +279,13 @@ namespace FloorBlock::Parameters
     correlations = parse_input_correlations(correlations_text, inputs);
     if (inputs.empty())
       return;
+    if (training_cases < inputs.size() + 2)
+      throw InputError("Uncertainty/Training cases",
+                       std::to_string(training_cases),
+                       "at least the number of uncertain inputs + 2 = " +
+                         std::to_string(inputs.size() + 2) +
+                         ", the fewest a surrogate can be fitted and "
+                         "cross-validated on");
     const std::vector<std::string>           paths = entry_paths(prm);
     const std::map<std::string, std::string> units = entry_units(prm);
     for (UncertainInput &input : inputs)
