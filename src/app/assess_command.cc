@@ -1,14 +1,17 @@
 #include <app/command_options.h>
-#include <assessment/assessment.h>
-#include <assessment/assessment_files.h>
 #include <common/input_error.h>
 #include <common/wall_clock.h>
+#include <output/gnuplot.h>
 #include <output/result_folder.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <assessment/assessment.h>
+#include <assessment/assessment_files.h>
+#include <assessment/assessment_plots.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,18 +25,38 @@ namespace FloorBlock::App
     const std::string case_folder_name = "assess_cases";
 
     /**
-     * The scene as the cases solve it, less the budgets (which change no
-     * result): a rerun into the same folder must solve the same scene to
-     * reuse its records.
+     * The scene as the cases solve it, less subsection Uncertainty: what
+     * is drawn there each case record holds itself (solve_safety_cases
+     * recomputes a record of other inputs), and the rest (budget, targets)
+     * changes no case.
      */
     std::string
     case_scene_text(const Parameters::ScenarioParameters &scene)
     {
       std::istringstream lines(scene.expanded_text);
       std::string        line, text;
+      unsigned int       depth = 0, uncertainty_depth = 0;
       while (std::getline(lines, line))
-        if (line.find("set Time budget") == std::string::npos)
-          text += line + "\n";
+        {
+          const auto        first = line.find_first_not_of(' ');
+          const std::string trimmed =
+            first == std::string::npos ? "" : line.substr(first);
+          if (trimmed.rfind("subsection ", 0) == 0)
+            {
+              ++depth;
+              if (uncertainty_depth == 0 && trimmed == "subsection Uncertainty")
+                uncertainty_depth = depth;
+            }
+          const bool inside = uncertainty_depth > 0;
+          if (trimmed == "end")
+            {
+              if (depth == uncertainty_depth)
+                uncertainty_depth = 0;
+              --depth;
+            }
+          if (!inside)
+            text += line + "\n";
+        }
       return text;
     }
 
@@ -53,15 +76,14 @@ namespace FloorBlock::App
       std::ostringstream stored;
       stored << file.rdbuf();
       if (stored.str() != scene_text)
-        throw InputError("--output",
-                         folder,
-                         "a folder without FEM cases of another scene: " +
-                           path.string() +
-                           " records other scene parameters than this "
-                           "run's; remove " +
-                           (std::filesystem::path(folder) / case_folder_name)
-                             .string() +
-                           " or choose another --output");
+        throw InputError(
+          "--output",
+          folder,
+          "a folder without FEM cases of another scene: " + path.string() +
+            " records other scene parameters than this "
+            "run's; remove " +
+            (std::filesystem::path(folder) / case_folder_name).string() +
+            " or choose another --output");
     }
 
     void
@@ -71,17 +93,17 @@ namespace FloorBlock::App
       const auto &mc = result.failure.monte_carlo;
       std::cout << fmt::format(
         "P(FS < 1) = {:.4f} +- {:.4f} (95 %, {} surrogate evaluations); "
-        "{:.4f} to {:.4f} if the surrogate errs by its stated {:.3f}\n",
+        "{:.4f} to {:.4f} if the surrogate's FS errs by its stated factor "
+        "{:.3f}\n",
         mc.probability,
         mc.half_width,
         mc.evaluations,
         result.failure.lower_with_surrogate_error,
         result.failure.upper_with_surrogate_error,
-        result.surrogate.stated_error);
-      std::cout << fmt::format(
-        "FORM: beta = {:.3f}, P = {:.4f}\n",
-        result.design_point.reliability_index,
-        result.design_point.probability);
+        std::exp(result.surrogate.stated_error));
+      std::cout << fmt::format("FORM: beta = {:.3f}, P = {:.4f}\n",
+                               result.design_point.reliability_index,
+                               result.design_point.probability);
       std::cout << "Sobol' indices (first order / total):\n";
       for (std::size_t i = 0; i < result.inputs.size(); ++i)
         std::cout << fmt::format("  {:<40} {:.3f} / {:.3f}\n",
@@ -89,15 +111,28 @@ namespace FloorBlock::App
                                  result.sobol.first_order[i],
                                  result.sobol.total_order[i]);
       std::cout << fmt::format(
-        "surrogate: polynomial chaos of degree {}, {} terms; stated error "
-        "{:.4f} (cross-validated), held-out rms {:.4f} over {} FEM cases, "
-        "{:.0f} % within the stated error\n",
+        "surrogate: polynomial chaos of ln FS, degree {}, {} terms; stated "
+        "error {:.1f} % of FS (cross-validated), held-out rms {:.1f} % over "
+        "{} FEM cases, {:.0f} % of them within the stated error\n",
         result.surrogate.degree,
         result.surrogate.n_terms,
-        result.surrogate.stated_error,
-        result.held_out.rms,
+        100. * std::expm1(result.surrogate.stated_error),
+        100. * std::expm1(result.held_out.rms),
         result.held_out.n_points,
         100. * result.held_out.share_within_stated);
+      if (result.design_limit)
+        for (const auto &[target, value] : result.design_limit->limits)
+          std::cout << fmt::format(
+            "design limit: P(FS < 1) = {:g} {}\n",
+            target,
+            value ?
+              fmt::format("at {} = {:.4g} {}",
+                          result.inputs[result.design_limit->input].path,
+                          *value,
+                          result.inputs[result.design_limit->input].unit) :
+              fmt::format("is not reached between the 1 % and 99 % "
+                          "quantiles of {}",
+                          result.inputs[result.design_limit->input].path));
       for (const auto &cost : result.costs)
         std::cout << fmt::format("cost: {} {} evaluations ({} from an "
                                  "earlier run), {:.1f} s\n",
@@ -106,7 +141,10 @@ namespace FloorBlock::App
                                  cost.from_earlier_runs,
                                  cost.wall_time);
       std::cout << "wrote " << folder.path_of("assess.json") << ", "
-                << folder.path_of("cases.csv") << std::endl;
+                << folder.path_of("cases.csv") << ", "
+                << folder.path_of("assess_fs.png") << ", "
+                << folder.path_of("assess_sobol.png") << ", "
+                << folder.path_of("assess_fs_inputs.png") << std::endl;
     }
   } // namespace
 
@@ -132,7 +170,7 @@ namespace FloorBlock::App
     folder.write_inputs(scene);
     folder.write(case_folder_name + "/scene.prm", scene_text);
 
-    const ScopedSolveDeadline deadline(scene.uncertainty.time_budget);
+    const ScopedSolveDeadline        deadline(scene.uncertainty.time_budget);
     Assessment::AssessmentResult     result;
     Assessment::AssessmentIncomplete incomplete;
     const bool                       complete = Assessment::run_assessment(
@@ -159,6 +197,27 @@ namespace FloorBlock::App
       {
         folder.write("cases.csv", Assessment::cases_csv(result));
         folder.write_json("assess.json", Assessment::assessment_json(result));
+        Output::render_png(Assessment::safety_factor_distribution_plot(result),
+                           folder.path_of("assess_fs.png"),
+                           1400,
+                           550);
+        Output::render_png(Assessment::sobol_indices_plot(result),
+                           folder.path_of("assess_sobol.png"),
+                           1000,
+                           600);
+        Output::render_png(Assessment::safety_factor_inputs_plot(result),
+                           folder.path_of("assess_fs_inputs.png"),
+                           1400,
+                           550);
+        if (result.design_limit)
+          {
+            folder.write("design_limit.csv",
+                         Assessment::design_limit_csv(result));
+            Output::render_png(Assessment::design_limit_plot(result),
+                               folder.path_of("assess_design_limit.png"),
+                               1000,
+                               600);
+          }
         print_result(result, folder);
       }
     return exit_code::success;

@@ -1,18 +1,19 @@
-#include <assessment/assessment.h>
 #include <common/input_error.h>
-#include <uncertainty/input_distribution.h>
 
 #include <deal.II/base/timer.h>
 
+#include <assessment/assessment.h>
+#include <fmt/format.h>
 #include <openturns/ComposedDistribution.hxx>
 #include <openturns/ComposedFunction.hxx>
 #include <openturns/LHSExperiment.hxx>
 #include <openturns/Normal.hxx>
+#include <openturns/ParametricFunction.hxx>
 #include <openturns/RandomGenerator.hxx>
 #include <openturns/SymbolicFunction.hxx>
+#include <uncertainty/input_distribution.h>
 
-#include <fmt/format.h>
-
+#include <cmath>
 #include <ostream>
 
 namespace FloorBlock::Assessment
@@ -27,6 +28,7 @@ namespace FloorBlock::Assessment
      * these bound them far beyond what the half-widths need. */
     constexpr std::uint64_t max_surrogate_evaluations = 20000000;
     constexpr std::uint64_t sobol_base_size           = 20000;
+    constexpr std::uint64_t fs_sample_size            = 20000;
 
     CaseDraws
     draws_of(const std::string &prefix, const OT::Sample &sample)
@@ -56,7 +58,13 @@ namespace FloorBlock::Assessment
       return distribution.getInverseIsoProbabilisticTransformation()(u);
     }
 
-    /** The solved cases' inputs and safety factors. */
+    /**
+     * The solved cases' inputs and ln FS. The surrogate models ln FS: a
+     * safety factor is a ratio of strength to stress, which the rock's
+     * strength and the loads scale, so its logarithm is nearly linear in
+     * the logarithms of lognormal inputs (their normal scores) where FS
+     * itself bends; its error is then a factor on FS.
+     */
     std::pair<OT::Sample, OT::Sample>
     solved_samples(const std::vector<SafetyCase> &cases,
                    const std::size_t              dimension)
@@ -66,19 +74,19 @@ namespace FloorBlock::Assessment
         if (c.solved())
           {
             x.add(OT::Point(c.inputs.begin(), c.inputs.end()));
-            y.add(OT::Point(1, c.safety_factor));
+            y.add(OT::Point(1, std::log(c.safety_factor)));
           }
       return {x, y};
     }
 
-    /** @p model shifted by @p shift: FS + shift. */
+    /** FS = exp(ln FS + @p log_shift) from the surrogate of ln FS. */
     OT::Function
-    shifted(const OT::Function &model, const double shift)
+    safety_factor_of(const OT::Function &log_model, const double log_shift)
     {
-      const OT::SymbolicFunction add(
-        OT::Description(1, "fs"),
-        OT::Description(1, fmt::format("fs + ({:.17g})", shift)));
-      return OT::ComposedFunction(add, model);
+      const OT::SymbolicFunction exponential(
+        OT::Description(1, "g"),
+        OT::Description(1, fmt::format("exp(g + ({:.17g}))", log_shift)));
+      return OT::ComposedFunction(exponential, log_model);
     }
 
     std::vector<double>
@@ -86,8 +94,7 @@ namespace FloorBlock::Assessment
     {
       std::vector<double> values;
       for (const SafetyCase &c : cases)
-        values.push_back(
-          model(OT::Point(c.inputs.begin(), c.inputs.end()))[0]);
+        values.push_back(model(OT::Point(c.inputs.begin(), c.inputs.end()))[0]);
       return values;
     }
 
@@ -98,6 +105,64 @@ namespace FloorBlock::Assessment
       for (const SafetyCase &c : cases)
         total += c.wall_time;
       return total;
+    }
+
+    /**
+     * P(FS < 1) with input @p index fixed at a grid of its 1 % to 99 %
+     * quantiles, the others drawn from their joint distribution (the input
+     * is uncorrelated with them, as the parameters check), and where the
+     * curve reaches each target probability.
+     */
+    DesignLimit
+    design_limit(const OT::Function                    &safety_factor,
+                 const OT::Distribution                &distribution,
+                 const std::size_t                      index,
+                 const std::vector<double>             &targets,
+                 const Uncertainty::SimulationSettings &simulation)
+    {
+      constexpr unsigned int n_values = 25;
+      DesignLimit            limit;
+      limit.input = index;
+      OT::Indices others;
+      for (std::size_t i = 0; i < distribution.getDimension(); ++i)
+        if (i != index)
+          others.add(i);
+      const OT::Distribution input = distribution.getMarginal(index);
+      const double           low   = input.computeQuantile(0.01)[0];
+      const double           high  = input.computeQuantile(0.99)[0];
+      for (unsigned int k = 0; k < n_values; ++k)
+        {
+          const double value = low + (high - low) * k / (n_values - 1.);
+          limit.values.push_back(value);
+          if (others.getSize() == 0)
+            {
+              const double fs = safety_factor(OT::Point(1, value))[0];
+              limit.probabilities.push_back({fs < 1. ? 1. : 0., 0., 1});
+              continue;
+            }
+          const OT::ParametricFunction fixed(safety_factor,
+                                             OT::Indices(1, index),
+                                             OT::Point(1, value));
+          limit.probabilities.push_back(
+            Uncertainty::monte_carlo_failure_probability(
+              fixed, distribution.getMarginal(others), simulation));
+        }
+      for (const double target : targets)
+        {
+          std::optional<double> reached;
+          for (unsigned int k = 0; k + 1 < n_values && !reached; ++k)
+            {
+              const double a = limit.probabilities[k].probability - target;
+              const double b = limit.probabilities[k + 1].probability - target;
+              if (a == 0.)
+                reached = limit.values[k];
+              else if (a * b < 0.)
+                reached = limit.values[k] +
+                          (limit.values[k + 1] - limit.values[k]) * a / (a - b);
+            }
+          limit.limits.emplace_back(target, reached);
+        }
+      return limit;
     }
   } // namespace
 
@@ -130,7 +195,8 @@ namespace FloorBlock::Assessment
 
     OT::RandomGenerator::SetSeed(settings.seed);
     const CaseDraws training =
-      draws_of("training", latin_hypercube(distribution, settings.training_cases));
+      draws_of("training",
+               latin_hypercube(distribution, settings.training_cases));
     OT::RandomGenerator::SetSeed(settings.seed + 1);
     const CaseDraws validation =
       draws_of("validation", distribution.getSample(settings.validation_cases));
@@ -141,12 +207,8 @@ namespace FloorBlock::Assessment
     all.points.insert(all.points.end(),
                       validation.points.begin(),
                       validation.points.end());
-    const CaseBatch batch =
-      solve_safety_cases(source,
-                         all,
-                         Output::CaseStore(case_folder),
-                         MPI_COMM_WORLD,
-                         progress);
+    const CaseBatch batch = solve_safety_cases(
+      source, all, Output::CaseStore(case_folder), MPI_COMM_WORLD, progress);
     if (!batch.complete)
       {
         incomplete.n_cases_done  = batch.cases.size();
@@ -178,49 +240,67 @@ namespace FloorBlock::Assessment
       Uncertainty::fit_chaos_surrogate(x, y, distribution, max_chaos_degree);
     const auto [x_check, y_check] =
       solved_samples(result.validation, dimension);
-    result.held_out = Uncertainty::held_out_errors(result.surrogate.model,
-                                                   x_check,
-                                                   y_check,
-                                                   result.surrogate.stated_error);
-    result.surrogate_at_training =
-      predictions(result.surrogate.model, result.training);
+    result.held_out = Uncertainty::held_out_errors(
+      result.surrogate.model, x_check, y_check, result.surrogate.stated_error);
+    const OT::Function safety_factor =
+      safety_factor_of(result.surrogate.model, 0.);
+    result.surrogate_at_training = predictions(safety_factor, result.training);
     result.surrogate_at_validation =
-      predictions(result.surrogate.model, result.validation);
+      predictions(safety_factor, result.validation);
 
     const Uncertainty::SimulationSettings simulation{settings.half_width,
                                                      max_surrogate_evaluations,
                                                      1000,
                                                      settings.seed + 2};
     result.failure.monte_carlo =
-      Uncertainty::monte_carlo_failure_probability(result.surrogate.model,
+      Uncertainty::monte_carlo_failure_probability(safety_factor,
                                                    distribution,
                                                    simulation);
-    // Where P_f lies if the surrogate errs by its stated error near FS = 1.
-    const double error = result.surrogate.stated_error;
+    // Where P_f lies if the surrogate errs by its stated factor near FS = 1.
+    const double                          error = result.surrogate.stated_error;
     const Uncertainty::FailureProbability lower =
       Uncertainty::monte_carlo_failure_probability(
-        shifted(result.surrogate.model, error), distribution, simulation);
+        safety_factor_of(result.surrogate.model, error),
+        distribution,
+        simulation);
     const Uncertainty::FailureProbability upper =
       Uncertainty::monte_carlo_failure_probability(
-        shifted(result.surrogate.model, -error), distribution, simulation);
+        safety_factor_of(result.surrogate.model, -error),
+        distribution,
+        simulation);
     result.failure.lower_with_surrogate_error = lower.probability;
     result.failure.upper_with_surrogate_error = upper.probability;
+    OT::RandomGenerator::SetSeed(settings.seed + 4);
+    const OT::Sample fs_sample =
+      safety_factor(distribution.getSample(fs_sample_size));
+    for (OT::UnsignedInteger i = 0; i < fs_sample.getSize(); ++i)
+      result.surrogate_fs_sample.push_back(fs_sample(i, 0));
     result.design_point =
-      Uncertainty::form_design_point(result.surrogate.model, distribution);
+      Uncertainty::form_design_point(safety_factor, distribution);
+
+    for (std::size_t i = 0; i < dimension; ++i)
+      if (settings.inputs[i].path == settings.design_limit_input)
+        result.design_limit =
+          design_limit(safety_factor,
+                       distribution,
+                       i,
+                       settings.design_limit_probabilities,
+                       {0.002, 100000, 1000, settings.seed + 5});
 
     OT::ComposedDistribution::DistributionCollection marginals;
     for (std::size_t i = 0; i < dimension; ++i)
       marginals.add(distribution.getMarginal(i));
-    result.sobol = Uncertainty::sobol_indices(result.surrogate.model,
-                                              OT::ComposedDistribution(marginals),
-                                              sobol_base_size,
-                                              settings.seed + 3);
-    result.costs.push_back({"surrogate",
-                            result.sobol.evaluations +
-                              result.failure.monte_carlo.evaluations +
-                              lower.evaluations + upper.evaluations,
-                            0,
-                            surrogate_timer.wall_time()});
+    result.sobol =
+      Uncertainty::sobol_indices(safety_factor,
+                                 OT::ComposedDistribution(marginals),
+                                 sobol_base_size,
+                                 settings.seed + 3);
+    result.costs.push_back(
+      {"surrogate",
+       result.sobol.evaluations + result.failure.monte_carlo.evaluations +
+         lower.evaluations + upper.evaluations + fs_sample_size,
+       0,
+       surrogate_timer.wall_time()});
     return true;
   }
 } // namespace FloorBlock::Assessment

@@ -1,14 +1,15 @@
 #pragma once
 
-#include <assessment/safety_cases.h>
 #include <parameters/scenario_parameters.h>
+
+#include <assessment/safety_cases.h>
+#include <openturns/Distribution.hxx>
 #include <uncertainty/reliability.h>
 #include <uncertainty/sensitivity.h>
 #include <uncertainty/surrogate.h>
 
-#include <openturns/Distribution.hxx>
-
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,11 @@ namespace FloorBlock::Assessment
   /** @brief A model's share of the study's work. */
   struct ModelCost
   {
-    std::string   model;       ///< "fem", "surrogate"
+    std::string   model; ///< "fem", "surrogate"
     std::uint64_t evaluations = 0;
     /** Of them, those an earlier run computed (FEM records reused). */
     std::uint64_t from_earlier_runs = 0;
-    double        wall_time = 0.; ///< s, summed over the evaluations
+    double        wall_time         = 0.; ///< s, summed over the evaluations
   };
 
   /** @brief P(FS < 1) from a model, with what bounds it. */
@@ -29,11 +30,25 @@ namespace FloorBlock::Assessment
   {
     Uncertainty::FailureProbability monte_carlo; ///< with its 95 % interval
     /**
-     * P(FS < 1 - e) and P(FS < 1 + e) for the surrogate's stated error e:
-     * where P_f may lie if the surrogate errs by e near FS = 1.
+     * P(FS e^e < 1) and P(FS e^-e < 1) for the surrogate's stated error e
+     * of ln FS: where P_f may lie if the surrogate errs by that factor
+     * near FS = 1.
      */
     double lower_with_surrogate_error = 0.;
     double upper_with_surrogate_error = 0.;
+  };
+
+  /** @brief P(FS < 1) with one input fixed, over that input's range. */
+  struct DesignLimit
+  {
+    std::size_t input = 0; ///< index into the inputs
+    /** The input's values (its 1 % to 99 % quantiles), and P(FS < 1) with
+     * its 95 % half-width at each. */
+    std::vector<double>                          values;
+    std::vector<Uncertainty::FailureProbability> probabilities;
+    /** Each target P(FS < 1) and the value where the curve reaches it
+     * (linear between grid points), or none: not reached in the range. */
+    std::vector<std::pair<double, std::optional<double>>> limits;
   };
 
   /** @brief Everything `assess` found. */
@@ -43,15 +58,22 @@ namespace FloorBlock::Assessment
     std::vector<Parameters::InputCorrelation> correlations;
     std::vector<SafetyCase>                   training;
     std::vector<SafetyCase>                   validation;
-    Uncertainty::Surrogate                    surrogate;
-    Uncertainty::HeldOutErrors                held_out;
-    FailureEstimate                           failure;
-    Uncertainty::DesignPoint                  design_point;
+    /** Of ln FS; its errors are of ln FS (a factor on FS). */
+    Uncertainty::Surrogate     surrogate;
+    Uncertainty::HeldOutErrors held_out;
+    FailureEstimate            failure;
+    Uncertainty::DesignPoint   design_point;
     /** Of the surrogate over the inputs' marginals taken independent. */
     Uncertainty::SobolIndices sobol;
     std::vector<ModelCost>    costs;
-    /** The surrogate's FS at every training and validation case. */
+    /** The surrogate's FS (not its log) at every training and validation
+     * case. */
     std::vector<double> surrogate_at_training, surrogate_at_validation;
+    /** FS of the surrogate at random draws of the inputs, for the
+     * distribution's pictures. */
+    std::vector<double> surrogate_fs_sample;
+    /** Over Uncertainty/Design limit input, if it is an input. */
+    std::optional<DesignLimit> design_limit;
   };
 
   /** @brief The study ended early: what it had done by its time budget. */
@@ -74,7 +96,8 @@ namespace FloorBlock::Assessment
    * Uncertainty subsection: FEM cases on a Latin hypercube (the
    * surrogate's training) and on random draws (held out), stored in
    * @p case_folder and resumed from it, over the ranks of MPI_COMM_WORLD;
-   * a polynomial chaos of the verdict's safety factor fitted on them; then
+   * a polynomial chaos of ln FS (the verdict's safety factor) fitted on
+   * them; then
    * on the surrogate, P(FS < 1) by Monte Carlo to Uncertainty/Failure
    * probability half width, FORM's design point and Sobol' indices.
    * @return false (and @p incomplete filled) if the time budget ended

@@ -1,5 +1,4 @@
 #include <assessment/assessment_files.h>
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,10 +14,10 @@ namespace FloorBlock::Assessment
     {
       nlohmann::json json = nlohmann::json::object();
       for (std::size_t i = 0; i < result.inputs.size(); ++i)
-        json[result.inputs[i].path] = {
-          {"index", indices[i]},
-          {"interval_95",
-           {interval.getLowerBound()[i], interval.getUpperBound()[i]}}};
+        json[result.inputs[i].path] = {{"index", indices[i]},
+                                       {"interval_95",
+                                        {interval.getLowerBound()[i],
+                                         interval.getUpperBound()[i]}}};
       return json;
     }
 
@@ -62,15 +61,17 @@ namespace FloorBlock::Assessment
   {
     nlohmann::json inputs = nlohmann::json::array();
     for (const auto &input : result.inputs)
-      inputs.push_back({{"path", input.path},
-                        {"unit", input.unit},
-                        {"distribution", input.text.substr(input.text.rfind(':') + 1)}});
+      inputs.push_back(
+        {{"path", input.path},
+         {"unit", input.unit},
+         {"distribution", input.text.substr(input.text.rfind(':') + 1)}});
     nlohmann::json correlations = nlohmann::json::array();
     for (const auto &c : result.correlations)
-      correlations.push_back(
-        {{"first", c.first}, {"second", c.second}, {"gaussian_copula", c.value}});
+      correlations.push_back({{"first", c.first},
+                              {"second", c.second},
+                              {"gaussian_copula", c.value}});
 
-    const auto    &mc = result.failure.monte_carlo;
+    const auto    &mc           = result.failure.monte_carlo;
     nlohmann::json design_point = nlohmann::json::object();
     for (std::size_t i = 0; i < result.inputs.size(); ++i)
       design_point[input_column(result.inputs[i])] =
@@ -83,56 +84,101 @@ namespace FloorBlock::Assessment
                        {"from_earlier_runs", cost.from_earlier_runs},
                        {"wall_time_s", cost.wall_time}});
 
-    const auto &s = result.surrogate;
-    return {
-      {"status", "complete"},
-      {"question", "P(FS < 1): the probability that the governing floor "
-                   "corner's safety factor (the verdict's method) is below 1"},
-      {"inputs", inputs},
-      {"correlations", correlations},
-      {"failure_probability",
-       {{"estimate", mc.probability},
-        {"half_width_95", mc.half_width},
-        {"interval_95",
-         {std::max(0., mc.probability - mc.half_width),
-          std::min(1., mc.probability + mc.half_width)}},
-        {"evaluations", mc.evaluations},
-        {"model", "surrogate"},
-        {"with_surrogate_error",
-         {{"stated_error", s.stated_error},
-          {"P_FS_below_1_minus_error", result.failure.lower_with_surrogate_error},
-          {"P_FS_below_1_plus_error", result.failure.upper_with_surrogate_error}}}}},
-      {"form",
-       {{"reliability_index", result.design_point.reliability_index},
-        {"probability", result.design_point.probability},
-        {"design_point", design_point},
-        {"model", "surrogate"}}},
-      {"sobol_indices",
-       {{"first_order",
-         indices_json(result, result.sobol.first_order, result.sobol.first_order_interval)},
-        {"total_order",
-         indices_json(result, result.sobol.total_order, result.sobol.total_order_interval)},
-        {"evaluations", result.sobol.evaluations},
-        {"assumption", "the inputs' marginals taken independent (Saltelli "
-                       "estimators, bootstrap intervals, on the surrogate)"}}},
-      {"surrogate",
-       {{"kind", "sparse polynomial chaos (Hermite in the inputs' normal "
-                 "scores, LARS)"},
-        {"degree", s.degree},
-        {"terms", s.n_terms},
-        {"leave_one_out_rms", s.leave_one_out_rms},
-        {"cross_validation_rms", s.cross_validation_rms},
-        {"cross_validation_folds", s.n_folds},
-        {"stated_error", s.stated_error},
-        {"held_out",
-         {{"cases", result.held_out.n_points},
-          {"rms", result.held_out.rms},
-          {"largest", result.held_out.largest},
-          {"share_within_stated_error", result.held_out.share_within_stated}}}}},
-      {"fem_cases",
-       {{"training", case_counts(result.training)},
-        {"validation", case_counts(result.validation)}}},
-      {"cost_by_model", costs}};
+    const auto    &s     = result.surrogate;
+    nlohmann::json limit = nullptr;
+    if (result.design_limit)
+      {
+        const DesignLimit &d = *result.design_limit;
+        limit                = {{"input", input_column(result.inputs[d.input])},
+                                {"range", {d.values.front(), d.values.back()}},
+                                {"range_is", "the input's 1 % to 99 % quantiles"},
+                                {"model", "surrogate"},
+                                {"file", "design_limit.csv"}};
+        nlohmann::json limits = nlohmann::json::array();
+        for (const auto &[target, value] : d.limits)
+          limits.push_back(
+            value ? nlohmann::json{{"P_FS_below_1", target},
+                                   {"value", *value},
+                                   {"status", "reached"}} :
+                    nlohmann::json{{"P_FS_below_1", target},
+                                   {"value", nullptr},
+                                   {"status", "not reached within the range"}});
+        limit["limits"] = limits;
+      }
+    return {{"status", "complete"},
+            {"question",
+             "P(FS < 1): the probability that the governing floor "
+             "corner's safety factor (the verdict's method) is below 1"},
+            {"inputs", inputs},
+            {"correlations", correlations},
+            {"failure_probability",
+             {{"estimate", mc.probability},
+              {"half_width_95", mc.half_width},
+              {"interval_95",
+               {std::max(0., mc.probability - mc.half_width),
+                std::min(1., mc.probability + mc.half_width)}},
+              {"evaluations", mc.evaluations},
+              {"model", "surrogate"},
+              {"with_surrogate_error",
+               {{"stated_error_of_ln_FS", s.stated_error},
+                {"P_FS_times_exp_error_below_1",
+                 result.failure.lower_with_surrogate_error},
+                {"P_FS_over_exp_error_below_1",
+                 result.failure.upper_with_surrogate_error}}}}},
+            {"form",
+             {{"reliability_index", result.design_point.reliability_index},
+              {"probability", result.design_point.probability},
+              {"design_point", design_point},
+              {"model", "surrogate"}}},
+            {"sobol_indices",
+             {{"first_order",
+               indices_json(result,
+                            result.sobol.first_order,
+                            result.sobol.first_order_interval)},
+              {"total_order",
+               indices_json(result,
+                            result.sobol.total_order,
+                            result.sobol.total_order_interval)},
+              {"evaluations", result.sobol.evaluations},
+              {"assumption",
+               "the inputs' marginals taken independent (Saltelli "
+               "estimators, bootstrap intervals, on the surrogate)"}}},
+            {"surrogate",
+             {{"kind",
+               "sparse polynomial chaos of ln FS (Hermite in the "
+               "inputs' normal scores, LARS); errors are of ln FS, a "
+               "factor exp(error) on FS"},
+              {"degree", s.degree},
+              {"terms", s.n_terms},
+              {"leave_one_out_rms", s.leave_one_out_rms},
+              {"cross_validation_rms", s.cross_validation_rms},
+              {"cross_validation_folds", s.n_folds},
+              {"stated_error", s.stated_error},
+              {"held_out",
+               {{"cases", result.held_out.n_points},
+                {"rms", result.held_out.rms},
+                {"largest", result.held_out.largest},
+                {"share_within_stated_error",
+                 result.held_out.share_within_stated}}}}},
+            {"design_limit", limit},
+            {"fem_cases",
+             {{"training", case_counts(result.training)},
+              {"validation", case_counts(result.validation)}}},
+            {"cost_by_model", costs}};
+  }
+
+  std::string
+  design_limit_csv(const AssessmentResult &result)
+  {
+    const DesignLimit &d   = result.design_limit.value();
+    std::string        csv = field(input_column(result.inputs[d.input])) +
+                      ",P_FS_below_1,half_width_95\n";
+    for (std::size_t k = 0; k < d.values.size(); ++k)
+      csv += fmt::format("{},{},{}\n",
+                         d.values[k],
+                         d.probabilities[k].probability,
+                         d.probabilities[k].half_width);
+    return csv;
   }
 
   std::string

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <assessment/assessment.h>
-
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -24,6 +23,13 @@ namespace FloorBlock::Assessment
    */
   std::string
   cases_csv(const AssessmentResult &result);
+
+  /**
+   * @brief design_limit.csv: P(FS < 1) with its 95 % half-width at each
+   * value of the design limit input (result.design_limit must be set).
+   */
+  std::string
+  design_limit_csv(const AssessmentResult &result);
 
   /** @brief A column name for an input: its path with its unit,
    * "Joints/Bedding friction angle (degrees)". */

@@ -1,4 +1,3 @@
-#include <assessment/safety_case.h>
 #include <common/input_error.h>
 #include <parameters/scenario_parameters.h>
 #include <parameters/value_text.h>
@@ -6,6 +5,8 @@
 #include <pipeline/scratch_folder.h>
 
 #include <deal.II/base/timer.h>
+
+#include <assessment/safety_case.h>
 
 #include <algorithm>
 
@@ -45,10 +46,12 @@ namespace FloorBlock::Assessment
         return result;
       }
 
-    const Pipeline::ScratchFolder   scratch(id);
-    const Pipeline::FemOutcome outcome = Pipeline::solve_scene(
-      scene, Output::ResultFolder(scratch.path.string()), false);
-    result.n_dofs = outcome.result.n_dofs;
+    const Pipeline::ScratchFolder scratch(id);
+    const Pipeline::FemOutcome    outcome =
+      Pipeline::solve_scene(scene,
+                            Output::ResultFolder(scratch.path.string()),
+                            false);
+    result.n_dofs          = outcome.result.n_dofs;
     const auto &increments = outcome.result.increments;
     if (!outcome.converged || increments.empty() ||
         increments.back().corner_factors.empty())
@@ -60,11 +63,13 @@ namespace FloorBlock::Assessment
       }
     else
       {
-        const auto &factors  = increments.back().corner_factors;
-        const auto  governing = std::min_element(
-          factors.begin(), factors.end(), [](const auto &a, const auto &b) {
-            return a.verdict_factor < b.verdict_factor;
-          });
+        const auto &factors = increments.back().corner_factors;
+        const auto  governing =
+          std::min_element(factors.begin(),
+                           factors.end(),
+                           [](const auto &a, const auto &b) {
+                             return a.verdict_factor < b.verdict_factor;
+                           });
         result.status           = "solved";
         result.safety_factor    = governing->verdict_factor;
         result.point_factor     = governing->point_factor;

@@ -30,12 +30,12 @@ namespace FloorBlock::Assessment
     std::string status;
     std::string message;
     /** The governing corner's factor by the verdict's method (-). */
-    double      safety_factor = 0.;
-    double      point_factor  = 0.;
-    double      line_factor   = 0.;
-    double      area_factor   = 0.;
-    std::string verdict_method;
-    std::string governing_corner;
+    double       safety_factor = 0.;
+    double       point_factor  = 0.;
+    double       line_factor   = 0.;
+    double       area_factor   = 0.;
+    std::string  verdict_method;
+    std::string  governing_corner;
     unsigned int n_dofs    = 0;
     double       wall_time = 0.; ///< s, of the whole case
 

@@ -1,8 +1,11 @@
-#include <assessment/safety_cases.h>
 #include <common/wall_clock.h>
 #include <pipeline/case_runner.h>
 
 #include <deal.II/base/mpi.h>
+
+#include <assessment/safety_cases.h>
+
+#include <filesystem>
 
 namespace FloorBlock::Assessment
 {
@@ -14,6 +17,16 @@ namespace FloorBlock::Assessment
                      std::ostream            &progress)
   {
     CaseBatch batch;
+    // A record of other inputs (a study drawn with another seed or size)
+    // is removed by the first rank and computed anew.
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      for (std::size_t k = 0; k < draws.ids.size(); ++k)
+        if (store.has(draws.ids[k]) &&
+            safety_case_from_json(store.load(draws.ids[k])).inputs !=
+              draws.points[k])
+          std::filesystem::remove(store.path_of(draws.ids[k]));
+    MPI_Barrier(communicator);
+
     std::vector<Pipeline::SweepCase> cases;
     for (std::size_t k = 0; k < draws.ids.size(); ++k)
       {
@@ -37,19 +50,17 @@ namespace FloorBlock::Assessment
         stopped = 1;
       }
     // Every rank waits for the others' records before reading them.
-    const int any_stopped =
-      dealii::Utilities::MPI::max(stopped, communicator);
-    batch.complete = any_stopped == 0;
+    const int any_stopped = dealii::Utilities::MPI::max(stopped, communicator);
+    batch.complete        = any_stopped == 0;
 
     for (std::size_t k = 0; k < draws.ids.size(); ++k)
       if (store.has(draws.ids[k]))
         {
           SafetyCase record = safety_case_from_json(store.load(draws.ids[k]));
           if (record.inputs != draws.points[k])
-            throw std::runtime_error(
-              "the stored case " + store.path_of(draws.ids[k]) +
-              " holds other inputs than this study draws: the folder holds "
-              "another study's cases (remove it, or choose --output)");
+            throw std::runtime_error("the stored case " +
+                                     store.path_of(draws.ids[k]) +
+                                     " changed while the study ran");
           batch.cases.push_back(std::move(record));
         }
       else

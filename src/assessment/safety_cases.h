@@ -1,8 +1,8 @@
 #pragma once
 
-#include <assessment/safety_case.h>
 #include <output/case_store.h>
 
+#include <assessment/safety_case.h>
 #include <mpi.h>
 
 #include <iosfwd>
@@ -34,11 +34,10 @@ namespace FloorBlock::Assessment
    * the FEM (solve_safety_case()), spread over the ranks of @p communicator
    * (Pipeline::run_cases: case k on rank k mod size, a progress line per
    * case on @p progress), each record stored as it finishes; then every
-   * rank reads every record. A passed solve deadline (ScopedSolveDeadline)
-   * stops the batch at its next safe point, leaving the finished records:
-   * a rerun resumes.
-   * @throws std::runtime_error if a stored record holds other inputs than
-   *   its draw (the store belongs to another study).
+   * rank reads every record. A stored record of other inputs than its
+   * draw (a study drawn with another seed or size) is computed anew. A
+   * passed solve deadline (ScopedSolveDeadline) stops the batch at its
+   * next safe point, leaving the finished records: a rerun resumes.
    */
   CaseBatch
   solve_safety_cases(const SceneSource       &source,

@@ -140,8 +140,8 @@ namespace FloorBlock::Parameters
             std::string path;
             for (const std::string &subsection : open)
               path += subsection + "/";
-            paths.push_back(path + dealii::Utilities::trim(trimmed.substr(
-                                     4, trimmed.find('=') - 4)));
+            paths.push_back(path + dealii::Utilities::trim(
+                                     trimmed.substr(4, trimmed.find('=') - 4)));
           }
       }
     return paths;

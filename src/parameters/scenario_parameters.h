@@ -17,17 +17,17 @@ namespace FloorBlock::Parameters
    */
   struct ScenarioParameters
   {
-    GeometryParameters geometry;
-    BeddingParameters  bedding;
-    MaterialParameters material;
-    StrengthParameters strength;
-    JointParameters    joints;
-    LoadingParameters  loading;
-    MeshParameters     mesh;
-    SolverParameters   solver;
-    VerifyParameters   verify;
-    ModelParameters    model;
-    CornerParameters   corner;
+    GeometryParameters    geometry;
+    BeddingParameters     bedding;
+    MaterialParameters    material;
+    StrengthParameters    strength;
+    JointParameters       joints;
+    LoadingParameters     loading;
+    MeshParameters        mesh;
+    SolverParameters      solver;
+    VerifyParameters      verify;
+    ModelParameters       model;
+    CornerParameters      corner;
     UncertaintyParameters uncertainty;
 
     /// Name of the scene: the file's stem ("default" for params/default.prm).

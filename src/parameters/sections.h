@@ -3,11 +3,12 @@
 #include <contact/joint_law_kind.h>
 #include <geometry/bedding_kinds.h>
 #include <geometry/end_faces.h>
-#include <solver/solver_kinds.h>
 #include <parameters/uncertain_inputs.h>
-#include <strength/hoek_brown.h>
+#include <solver/solver_kinds.h>
 
 #include <deal.II/base/parameter_handler.h>
+
+#include <strength/hoek_brown.h>
 
 #include <optional>
 #include <string>
@@ -423,6 +424,10 @@ namespace FloorBlock::Parameters
     unsigned int seed;
     /** Wall time of the whole command (s). */
     double time_budget;
+    /** Path of the input the design limit curve runs over ("" = none). */
+    std::string design_limit_input;
+    /** Failure probabilities whose design limit is reported (-). */
+    std::vector<double> design_limit_probabilities;
 
     static void
     declare_parameters(dealii::ParameterHandler &prm);

@@ -102,7 +102,8 @@ namespace FloorBlock::Parameters
               name += ' ';
           }
         else
-          name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+          name +=
+            static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       return name;
     }
 
@@ -117,7 +118,7 @@ namespace FloorBlock::Parameters
     check_arguments(const UncertainInput &input)
     {
       const std::vector<double> &a = input.arguments;
-      const auto                 bounds_in_order = [&](double low, double high) {
+      const auto bounds_in_order   = [&](double low, double high) {
         if (!(low < high))
           refuse_input(input.text,
                        "bounds in increasing order: min = " + number(low) +
@@ -150,7 +151,8 @@ namespace FloorBlock::Parameters
             bounds_in_order(a[0], a[2]);
             if (!(a[0] <= a[1] && a[1] <= a[2]))
               refuse_input(input.text,
-                           "min <= mode <= max (mode = " + number(a[1]) + " here)");
+                           "min <= mode <= max (mode = " + number(a[1]) +
+                             " here)");
             break;
           case DistributionFamily::beta:
             if (!(a[0] > 0 && a[1] > 0))
@@ -208,8 +210,8 @@ namespace FloorBlock::Parameters
       if (!count_fits)
         refuse_input(entry,
                      name + "(" + syntax.arguments +
-                       (syntax.may_truncate ? "[, min, max]" : "") + "): " +
-                       std::to_string(syntax.n_required) + " numbers" +
+                       (syntax.may_truncate ? "[, min, max]" : "") +
+                       "): " + std::to_string(syntax.n_required) + " numbers" +
                        (syntax.may_truncate ?
                           " or, truncated, " +
                             std::to_string(syntax.n_required + 2) :
@@ -220,9 +222,8 @@ namespace FloorBlock::Parameters
           double value = 0;
           if (!read_number(argument, value))
             refuse_input(entry,
-                         "finite numbers as the arguments of " + name +
-                           "(" + syntax.arguments + ") (got '" + argument +
-                           "')");
+                         "finite numbers as the arguments of " + name + "(" +
+                           syntax.arguments + ") (got '" + argument + "')");
           input.arguments.push_back(value);
         }
       check_arguments(input);
@@ -248,8 +249,9 @@ namespace FloorBlock::Parameters
           return truncated() ? std::pair{arguments[2], arguments[3]} :
                                std::pair{-infinity, infinity};
         case DistributionFamily::lognormal:
-          return truncated() ? std::pair{std::max(arguments[2], 0.), arguments[3]} :
-                               std::pair{0., infinity};
+          return truncated() ?
+                   std::pair{std::max(arguments[2], 0.), arguments[3]} :
+                   std::pair{0., infinity};
         case DistributionFamily::uniform:
           return {arguments[0], arguments[1]};
         case DistributionFamily::triangular:
@@ -316,9 +318,10 @@ namespace FloorBlock::Parameters
           refuse("entries \"Subsection/Entry, Subsection/Entry: value\" "
                  "separated by ';'");
         InputCorrelation correlation;
-        correlation.text   = entry;
-        correlation.first  = trimmed(entry.substr(0, comma));
-        correlation.second = trimmed(entry.substr(comma + 1, colon - comma - 1));
+        correlation.text  = entry;
+        correlation.first = trimmed(entry.substr(0, comma));
+        correlation.second =
+          trimmed(entry.substr(comma + 1, colon - comma - 1));
         for (const std::string &path : {correlation.first, correlation.second})
           if (uncertain.count(path) == 0)
             refuse("paths of Uncertainty/Inputs; '" + path +

@@ -17,6 +17,7 @@ namespace FloorBlock::Parameters
   using dealii::Patterns::Anything;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
+  using dealii::Patterns::List;
 
   namespace
   {
@@ -169,11 +170,11 @@ namespace FloorBlock::Parameters
       // entry (a block count) refuses it, as it would a drawn value.
       const auto [low, high] = input.support();
       const double typical   = input.typical_value();
-      const double nudge = 1e-6 * std::max(1., std::abs(typical));
-      const double real_value = typical < high ? typical + nudge : typical - nudge;
+      const double nudge     = 1e-6 * std::max(1., std::abs(typical));
+      const double real_value =
+        typical < high ? typical + nudge : typical - nudge;
       EntryProbe        probe(prm, input.path);
-      const std::string numeric =
-        probe.refusal(input.path, number(real_value));
+      const std::string numeric = probe.refusal(input.path, number(real_value));
       if (!numeric.empty())
         refuse("a scene parameter that takes real numbers; " + input.path +
                " allows " + allowed_values(numeric));
@@ -190,8 +191,9 @@ namespace FloorBlock::Parameters
             refuse("a distribution inside the parameter's range, " +
                    allowed_values(reason) + ": " + to_string(input.family) +
                    " takes values " + (end == low ? "down" : "up") + " to " +
-                   (std::isfinite(end) ? number(end) :
-                                         (end < 0 ? "-infinity" : "+infinity")) +
+                   (std::isfinite(end) ?
+                      number(end) :
+                      (end < 0 ? "-infinity" : "+infinity")) +
                    " with non-zero probability. Truncate it (normal(mean, "
                    "sd, min, max), lognormal(mean, sd, min, max)) or choose "
                    "bounds within the range");
@@ -259,6 +261,22 @@ namespace FloorBlock::Parameters
       Double(1, 1e7),
       "Wall time of the whole `assess` command: past it no new FEM case "
       "starts, finished cases are kept and a rerun resumes. Units: s.");
+    prm.declare_entry(
+      "Design limit input",
+      "Loading/Support load",
+      Anything(),
+      "The uncertain input (a path of Inputs) over which `assess` draws "
+      "the design limit curve: P(FS < 1) with that input fixed, over its "
+      "1 % to 99 % quantiles, and the values at which P(FS < 1) reaches "
+      "Design limit probabilities. It must not be correlated with another "
+      "input. Empty, or not among the Inputs: no curve. Units: none.");
+    prm.declare_entry(
+      "Design limit probabilities",
+      "0.01, 0.1",
+      List(Double(1e-6, 0.999), 1, 10),
+      "Failure probabilities P(FS < 1) whose design limit (the value of "
+      "Design limit input at which they are reached) is reported. Units: "
+      "none (probability).");
     prm.leave_subsection();
   }
 
@@ -268,17 +286,37 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Uncertainty");
     const std::string inputs_text       = prm.get("Inputs");
     const std::string correlations_text = prm.get("Correlations");
-    half_width                          = prm.get_double("Failure probability half width");
-    training_cases   = prm.get_integer("Training cases");
-    validation_cases = prm.get_integer("Validation cases");
-    seed             = prm.get_integer("Seed");
-    time_budget      = prm.get_double("Time budget");
+    half_width         = prm.get_double("Failure probability half width");
+    training_cases     = prm.get_integer("Training cases");
+    validation_cases   = prm.get_integer("Validation cases");
+    seed               = prm.get_integer("Seed");
+    time_budget        = prm.get_double("Time budget");
+    design_limit_input = dealii::Utilities::trim(prm.get("Design limit input"));
+    design_limit_probabilities.clear();
+    for (const std::string &value : dealii::Utilities::split_string_list(
+           prm.get("Design limit probabilities")))
+      design_limit_probabilities.push_back(std::stod(value));
     prm.leave_subsection();
 
     inputs       = parse_uncertain_inputs(inputs_text);
     correlations = parse_input_correlations(correlations_text, inputs);
     if (inputs.empty())
       return;
+    const auto named = [&](const std::string &path) {
+      return std::any_of(inputs.begin(), inputs.end(), [&](const auto &input) {
+        return input.path == path;
+      });
+    };
+    if (named(design_limit_input))
+      for (const InputCorrelation &correlation : correlations)
+        if (correlation.first == design_limit_input ||
+            correlation.second == design_limit_input)
+          throw InputError("Uncertainty/Design limit input",
+                           design_limit_input,
+                           "an input without correlations (the curve fixes "
+                           "it and draws the others from their own "
+                           "distribution); it is correlated in '" +
+                             correlation.text + "'");
     if (training_cases < inputs.size() + 2)
       throw InputError("Uncertainty/Training cases",
                        std::to_string(training_cases),

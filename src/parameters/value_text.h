@@ -17,8 +17,8 @@ namespace FloorBlock::Parameters
   /**
    * @brief A count chosen from a Selection pattern ("2|3", "auto|0|1|...")
    * as a number. Throws InputError naming @p parameter and @p allowed if @p
-   * value is not a plain decimal number: a Selection can pass text it was not declared
-   * with (a value with control bytes in a fuzzed file did).
+   * value is not a plain decimal number: a Selection can pass text it was not
+   * declared with (a value with control bytes in a fuzzed file did).
    */
   unsigned int
   selected_count(const std::string &value,

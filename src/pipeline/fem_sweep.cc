@@ -27,7 +27,7 @@ namespace FloorBlock::Pipeline
     fem_case(const Scene::FigurePoint &point, const Output::CaseStore &store)
     {
       const ScratchFolder scratch(point.id());
-      const FemOutcome outcome =
+      const FemOutcome    outcome =
         solve_scene(point.scene,
                     Output::ResultFolder(scratch.path.string()),
                     false);

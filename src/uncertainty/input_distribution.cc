@@ -1,5 +1,4 @@
 #include <common/input_error.h>
-#include <uncertainty/input_distribution.h>
 
 #include <openturns/Beta.hxx>
 #include <openturns/ComposedDistribution.hxx>
@@ -12,6 +11,7 @@
 #include <openturns/TruncatedDistribution.hxx>
 #include <openturns/TruncatedNormal.hxx>
 #include <openturns/Uniform.hxx>
+#include <uncertainty/input_distribution.h>
 
 #include <algorithm>
 
@@ -27,12 +27,12 @@ namespace FloorBlock::Uncertainty
     switch (input.family)
       {
         case DistributionFamily::normal:
-          marginal = input.truncated() ?
-                       OT::Distribution(OT::TruncatedNormal(a[0], a[1], a[2], a[3])) :
-                       OT::Distribution(OT::Normal(a[0], a[1]));
+          marginal =
+            input.truncated() ?
+              OT::Distribution(OT::TruncatedNormal(a[0], a[1], a[2], a[3])) :
+              OT::Distribution(OT::Normal(a[0], a[1]));
           break;
-        case DistributionFamily::lognormal:
-          {
+          case DistributionFamily::lognormal: {
             // The user gives the value's mean and standard deviation.
             const OT::Distribution lognormal =
               OT::LogNormalMuSigma(a[0], a[1]).getDistribution();

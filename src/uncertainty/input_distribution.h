@@ -19,8 +19,9 @@ namespace FloorBlock::Uncertainty
    *   -0.9 and 0.9).
    */
   OT::Distribution
-  input_distribution(const std::vector<Parameters::UncertainInput>   &inputs,
-                     const std::vector<Parameters::InputCorrelation> &correlations);
+  input_distribution(
+    const std::vector<Parameters::UncertainInput>   &inputs,
+    const std::vector<Parameters::InputCorrelation> &correlations);
 
   /** @brief One input's marginal distribution, as input_distribution() uses
    * it. */

@@ -36,7 +36,7 @@ namespace FloorBlock::Uncertainty
         OT::LinearEnumerateFunction(dimension));
       const OT::UnsignedInteger n_candidates =
         basis.getEnumerateFunction().getStrataCumulatedCardinal(degree);
-      const OT::FixedStrategy adaptive(basis, n_candidates);
+      const OT::FixedStrategy        adaptive(basis, n_candidates);
       const OT::LARS                 lars;
       const OT::CorrectedLeaveOneOut leave_one_out;
       const OT::LeastSquaresStrategy projection{
@@ -48,8 +48,7 @@ namespace FloorBlock::Uncertainty
       // The relative error is the leave-one-out mean square over the
       // outputs' variance.
       const double variance = outputs.computeVariance()[0];
-      return {result,
-              std::sqrt(result.getRelativeErrors()[0] * variance)};
+      return {result, std::sqrt(result.getRelativeErrors()[0] * variance)};
     }
 
     /** The best degree's fit, by the leave-one-out error. */
@@ -94,8 +93,7 @@ namespace FloorBlock::Uncertainty
       throw std::invalid_argument(
         "uncertainty: a surrogate needs at least inputs + 2 points");
 
-    Surrogate surrogate =
-      best_fit(inputs, outputs, distribution, max_degree);
+    Surrogate surrogate = best_fit(inputs, outputs, distribution, max_degree);
 
     const OT::UnsignedInteger n_points = inputs.getSize();
     surrogate.n_folds = std::min<std::uint64_t>(n_folds, n_points);
@@ -117,7 +115,7 @@ namespace FloorBlock::Uncertainty
           best_fit(train_x, train_y, distribution, max_degree);
         residuals.add(refitted.model(test_x) - test_y);
       }
-    double sum_of_squares = 0.;
+    double     sum_of_squares = 0.;
     OT::Sample magnitudes(residuals.getSize(), 1);
     for (OT::UnsignedInteger i = 0; i < residuals.getSize(); ++i)
       {
@@ -143,7 +141,7 @@ namespace FloorBlock::Uncertainty
     errors.n_points = inputs.getSize();
     if (errors.n_points == 0)
       return errors;
-    const OT::Sample predicted = surrogate(inputs);
+    const OT::Sample predicted      = surrogate(inputs);
     double           sum_of_squares = 0.;
     std::uint64_t    n_within       = 0;
     for (OT::UnsignedInteger i = 0; i < errors.n_points; ++i)

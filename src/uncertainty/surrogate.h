@@ -35,8 +35,8 @@ namespace FloorBlock::Uncertainty
      * of the selected terms is optimistic (the terms were chosen to make
      * it small), the refitted folds are not.
      */
-    double stated_error = 0.;
-    std::uint64_t n_folds = 0;
+    double        stated_error = 0.;
+    std::uint64_t n_folds      = 0;
   };
 
   /**

@@ -60,9 +60,9 @@ TEST(Assess, WritesTheProbabilityWithItsIntervalAndTheCases)
     run_floorblock(assess_arguments + " --output " + shell_quoted(output));
   ASSERT_EQ(run.exit_code, 0) << run.output;
 
-  const json  answer = read_json(output + "/assess.json");
-  const json &pf     = answer.at("failure_probability");
-  const double p     = pf.at("estimate").get<double>();
+  const json   answer = read_json(output + "/assess.json");
+  const json  &pf     = answer.at("failure_probability");
+  const double p      = pf.at("estimate").get<double>();
   EXPECT_GE(p, 0.);
   EXPECT_LE(p, 1.);
   EXPECT_LE(pf.at("half_width_95").get<double>(), 0.01);
@@ -71,8 +71,8 @@ TEST(Assess, WritesTheProbabilityWithItsIntervalAndTheCases)
   EXPECT_GE(pf.at("interval_95")[1].get<double>(), p);
   // Shifting FS by the surrogate's error moves P_f to either side of it.
   const json &shifted = pf.at("with_surrogate_error");
-  EXPECT_LE(shifted.at("P_FS_below_1_minus_error").get<double>(), p);
-  EXPECT_GE(shifted.at("P_FS_below_1_plus_error").get<double>(), p);
+  EXPECT_LE(shifted.at("P_FS_times_exp_error_below_1").get<double>(), p);
+  EXPECT_GE(shifted.at("P_FS_over_exp_error_below_1").get<double>(), p);
 
   for (const std::string order : {"first_order", "total_order"})
     for (const std::string input :
@@ -117,11 +117,10 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
   ASSERT_EQ(case_files(reference).size(), 8u);
 
   const std::string interrupted = fresh_output_folder("assess_interrupted");
-  const int         process =
-    start_floorblock(assess_arguments + " --output " +
-                       shell_quoted(interrupted),
-                     interrupted + ".log");
-  const auto give_up =
+  const int         process = start_floorblock(assess_arguments + " --output " +
+                                         shell_quoted(interrupted),
+                                       interrupted + ".log");
+  const auto        give_up =
     std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (case_files(interrupted).size() < 3 &&
          std::chrono::steady_clock::now() < give_up)

@@ -16,7 +16,7 @@ TEST(AssessMpi, TwoProcessesGiveTheOneProcessAnswer)
   const std::string arguments = "assess tests/cli/assess_scene.prm --output ";
   const std::string folder_1  = fresh_output_folder("assess_mpi_1");
   const std::string folder_2  = fresh_output_folder("assess_mpi_2");
-  const auto one = run_floorblock(arguments + shell_quoted(folder_1));
+  const auto        one = run_floorblock(arguments + shell_quoted(folder_1));
   ASSERT_EQ(one.exit_code, 0) << one.output;
   const auto two =
     run_floorblock_on_processes(2, arguments + shell_quoted(folder_2), 600);

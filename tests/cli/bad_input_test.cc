@@ -192,7 +192,7 @@ namespace
     {"uncertain_input_unknown_path",
      "",
      "",
-     "--set 'Uncertainty/Inputs=Joints/Bedding fricton angle: normal(30, 3, "
+     "--set 'Uncertainty/Correlations=' --set 'Uncertainty/Inputs=Joints/Bedding fricton angle: normal(30, 3, "
      "15, 45)'",
      "there is no 'Joints/Bedding fricton angle' (did you mean "
      "Joints/Bedding friction angle",
@@ -200,7 +200,7 @@ namespace
     {"uncertain_input_negative_standard_deviation",
      "",
      "",
-     "--set 'Uncertainty/Inputs=Loading/Support load: normal(650, -65, 300, "
+     "--set 'Uncertainty/Correlations=' --set 'Uncertainty/Inputs=Loading/Support load: normal(650, -65, 300, "
      "1000)'",
      "'Uncertainty/Inputs' = 'Loading/Support load: normal(650, -65, 300, "
      "1000)': a standard deviation sd > 0",
@@ -208,20 +208,20 @@ namespace
     {"uncertain_input_inverted_bounds",
      "",
      "",
-     "--set 'Uncertainty/Inputs=Strength/Intact UCS: uniform(60e6, 20e6)'",
+     "--set 'Uncertainty/Correlations=' --set 'Uncertainty/Inputs=Strength/Intact UCS: uniform(60e6, 20e6)'",
      "min = 6e+07 must be below max = 2e+07",
      "assess params/default.prm"},
     {"uncertain_friction_above_90_deg",
      "",
      "",
-     "--set 'Uncertainty/Inputs=Joints/Vertical friction angle: normal(80, "
+     "--set 'Uncertainty/Correlations=' --set 'Uncertainty/Inputs=Joints/Vertical friction angle: normal(80, "
      "5, 60, 95)'",
      "[Double 0...89.9 (inclusive)]: normal takes values up to 95",
      "assess params/default.prm"},
     {"uncertain_negative_stiffness",
      "",
      "",
-     "--set 'Uncertainty/Inputs=Joints/Normal stiffness: normal(9e9, 3e9)'",
+     "--set 'Uncertainty/Correlations=' --set 'Uncertainty/Inputs=Joints/Normal stiffness: normal(9e9, 3e9)'",
      "normal takes values down to -infinity",
      "assess params/default.prm"},
     {"uncertain_correlations_not_positive_definite",
@@ -238,14 +238,14 @@ namespace
     {"assess_without_uncertain_inputs",
      "",
      "",
-     "",
+     "--set 'Uncertainty/Inputs=' --set 'Uncertainty/Correlations='",
      "'Uncertainty/Inputs' = '': at least one uncertain scene parameter",
      "assess params/default.prm"},
     {"assess_with_rigid_blocks",
      "",
      "",
-     "--set 'Model/Blocks=rigid' --set 'Uncertainty/Inputs=Joints/Bedding "
-     "friction angle: uniform(20, 40)'",
+     "--set 'Model/Blocks=rigid' --set 'Uncertainty/Correlations=' --set "
+     "'Uncertainty/Inputs=Joints/Bedding friction angle: uniform(20, 40)'",
      "elastic (or auto) for `assess`",
      "assess params/default.prm"},
     {"critical_distance_beyond_the_block",

@@ -36,9 +36,8 @@ namespace
   std::string
   scene_refusal(const std::string &inputs)
   {
-    return refusal([&] {
-      read_defaults("uncertain", {"Uncertainty/Inputs=" + inputs});
-    });
+    return refusal(
+      [&] { read_defaults("uncertain", {"Uncertainty/Inputs=" + inputs}); });
   }
 } // namespace
 
@@ -103,9 +102,9 @@ TEST(UncertainInputs, RefusesMalformedEntriesNamingTheEntry)
 
 TEST(UncertainInputs, ReadsAndRefusesCorrelations)
 {
-  const auto inputs = parse_uncertain_inputs(
-    "Joints/Bedding friction angle: uniform(20, 40);"
-    "Joints/Vertical friction angle: uniform(20, 40)");
+  const auto inputs =
+    parse_uncertain_inputs("Joints/Bedding friction angle: uniform(20, 40);"
+                           "Joints/Vertical friction angle: uniform(20, 40)");
   const auto correlations = parse_input_correlations(
     "Joints/Bedding friction angle, Joints/Vertical friction angle: 0.5",
     inputs);

@@ -1,9 +1,8 @@
 #include <common/input_error.h>
-#include <uncertainty/input_distribution.h>
 
 #include <gtest/gtest.h>
-
 #include <openturns/CorrelationMatrix.hxx>
+#include <uncertainty/input_distribution.h>
 
 #include <cmath>
 
@@ -21,14 +20,14 @@ namespace
 
 TEST(InputDistribution, MarginalsHaveTheStatedMomentsAndRanges)
 {
-  const auto distribution = input_distribution(
-    inputs("A/normal: normal(30, 3);"
-           "A/lognormal: lognormal(40e6, 10e6);"
-           "A/uniform: uniform(500, 800);"
-           "A/triangular: triangular(0, 1e4, 5e4);"
-           "A/beta: beta(2, 3, 50, 90);"
-           "A/truncated: normal(30, 3, 27, 45)"),
-    {});
+  const auto distribution =
+    input_distribution(inputs("A/normal: normal(30, 3);"
+                              "A/lognormal: lognormal(40e6, 10e6);"
+                              "A/uniform: uniform(500, 800);"
+                              "A/triangular: triangular(0, 1e4, 5e4);"
+                              "A/beta: beta(2, 3, 50, 90);"
+                              "A/truncated: normal(30, 3, 27, 45)"),
+                       {});
   ASSERT_EQ(distribution.getDimension(), 6u);
   EXPECT_TRUE(distribution.hasIndependentCopula());
   const OT::Point mean = distribution.getMean();
@@ -65,8 +64,7 @@ TEST(InputDistribution, CorrelatesThroughAGaussianCopula)
   const auto distribution = input_distribution(in, correlations);
   EXPECT_FALSE(distribution.hasIndependentCopula());
   // The copula's own correlation matrix holds the stated values.
-  const OT::CorrelationMatrix shape =
-    distribution.getCopula().getShapeMatrix();
+  const OT::CorrelationMatrix shape = distribution.getCopula().getShapeMatrix();
   EXPECT_DOUBLE_EQ(shape(0, 1), 0.6);
   EXPECT_DOUBLE_EQ(shape(1, 0), 0.6);
   EXPECT_DOUBLE_EQ(shape(0, 2), 0.);

@@ -1,7 +1,4 @@
-#include <uncertainty/surrogate.h>
-
 #include <gtest/gtest.h>
-
 #include <openturns/ComposedDistribution.hxx>
 #include <openturns/LHSExperiment.hxx>
 #include <openturns/LogNormalMuSigma.hxx>
@@ -10,6 +7,7 @@
 #include <openturns/RandomGenerator.hxx>
 #include <openturns/SymbolicFunction.hxx>
 #include <openturns/Uniform.hxx>
+#include <uncertainty/surrogate.h>
 
 #include <cmath>
 
@@ -28,10 +26,10 @@ namespace
   }
 
   /** A smooth safety-factor-like function: x1 in degrees, x2 a stiffness. */
-  const OT::SymbolicFunction model(
-    OT::Description({"phi", "kn", "load"}),
-    OT::Description({"tan(phi * 3.14159265358979 / 180) * 2 - "
-                     "0.1 * log(kn / 9e9) - 0.0005 * (load - 650)"}));
+  const OT::SymbolicFunction
+    model(OT::Description({"phi", "kn", "load"}),
+          OT::Description({"tan(phi * 3.14159265358979 / 180) * 2 - "
+                           "0.1 * log(kn / 9e9) - 0.0005 * (load - 650)"}));
 } // namespace
 
 TEST(ChaosSurrogate, ReproducesAPolynomialInTheNormalScoresExactly)
@@ -41,19 +39,17 @@ TEST(ChaosSurrogate, ReproducesAPolynomialInTheNormalScoresExactly)
   marginals.add(OT::Normal(1., 2.));
   marginals.add(OT::Normal(-1., 0.5));
   const OT::ComposedDistribution distribution(marginals);
-  const OT::SymbolicFunction     polynomial(OT::Description({"x", "y"}),
-                                        OT::Description({"x^2 - 3 * x * y + y"}));
+  const OT::SymbolicFunction     polynomial(
+    OT::Description({"x", "y"}), OT::Description({"x^2 - 3 * x * y + y"}));
   OT::RandomGenerator::SetSeed(3);
   const OT::Sample x = OT::LHSExperiment(distribution, 40).generate();
   const Surrogate  surrogate =
     fit_chaos_surrogate(x, polynomial(x), distribution, 4);
   EXPECT_LT(surrogate.leave_one_out_rms, 1e-8);
   EXPECT_EQ(surrogate.degree, 2u);
-  const OT::Sample test  = distribution.getSample(100);
-  const auto       check = held_out_errors(surrogate.model,
-                                     test,
-                                     polynomial(test),
-                                     1e-7);
+  const OT::Sample test = distribution.getSample(100);
+  const auto       check =
+    held_out_errors(surrogate.model, test, polynomial(test), 1e-7);
   EXPECT_LT(check.largest, 1e-7);
   EXPECT_EQ(check.share_within_stated, 1.);
 }
@@ -62,14 +58,11 @@ TEST(ChaosSurrogate, CrossValidationForecastsTheHeldOutError)
 {
   OT::RandomGenerator::SetSeed(7);
   const OT::Distribution distribution = inputs();
-  const OT::Sample       x = OT::LHSExperiment(distribution, 60).generate();
-  const Surrogate        surrogate =
-    fit_chaos_surrogate(x, model(x), distribution, 4);
-  const OT::Sample test   = distribution.getSample(2000);
-  const auto       errors = held_out_errors(surrogate.model,
-                                      test,
-                                      model(test),
-                                      surrogate.stated_error);
+  const OT::Sample       x  = OT::LHSExperiment(distribution, 60).generate();
+  const Surrogate surrogate = fit_chaos_surrogate(x, model(x), distribution, 4);
+  const OT::Sample test     = distribution.getSample(2000);
+  const auto       errors =
+    held_out_errors(surrogate.model, test, model(test), surrogate.stated_error);
   // The function is smooth: the fit is good to a few thousandths of its
   // spread (about 0.25). The cross-validated error forecasts the error at
   // new points within a factor of two either way, and its 95 % quantile
@@ -87,9 +80,7 @@ TEST(ChaosSurrogate, RefusesMismatchedSamples)
   const OT::Sample       x            = distribution.getSample(10);
   EXPECT_THROW(fit_chaos_surrogate(x, OT::Sample(9, 1), distribution, 2),
                std::invalid_argument);
-  EXPECT_THROW(fit_chaos_surrogate(distribution.getSample(4),
-                                   OT::Sample(4, 1),
-                                   distribution,
-                                   2),
+  EXPECT_THROW(fit_chaos_surrogate(
+                 distribution.getSample(4), OT::Sample(4, 1), distribution, 2),
                std::invalid_argument);
 }

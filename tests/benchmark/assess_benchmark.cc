@@ -1,0 +1,196 @@
+// The probability of floor failure of a scene (`floorblock assess`)
+// against brute-force Monte Carlo over the FEM alone, under MPI:
+//
+//   mpirun -np 2 build/tests/benchmark/floorblock_assess_benchmark \
+//     [scene.prm] [--brute-force N] [--output DIR]
+//
+// 1. The study as `assess` runs it (FEM cases, surrogate, P(FS < 1), FORM,
+//    Sobol' indices), timed whole, with its cost by model.
+// 2. Monte Carlo over the FEM itself (Assessment::FemSafetyFactor): N draws
+//    (default 1000) of the same inputs, by OpenTURNS' simulation algorithm,
+//    P(FS < 1) with its 95 % interval.
+// 3. Whether the two estimates agree within their intervals (and within
+//    the range the surrogate's stated error allows), and how the surrogate
+//    predicts the held-out cases.
+//
+// Both studies keep their FEM cases under DIR (default
+// results/<scene>/assess_benchmark/), so a rerun resumes. Rank 0 prints a
+// markdown table labelled with the commit and writes it to
+// DIR/assess_benchmark.md.
+#include <common/input_error.h>
+#include <common/singleton_mpi_environment.h>
+#include <parameters/scenario_parameters.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <assessment/assessment.h>
+#include <assessment/fem_safety_function.h>
+#include <fmt/format.h>
+#include <openturns/Function.hxx>
+#include <uncertainty/reliability.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+using namespace FloorBlock;
+
+namespace
+{
+  std::string
+  commit_of_tree()
+  {
+    std::string commit;
+    if (FILE *git = ::popen("git rev-parse --short HEAD 2>/dev/null", "r"))
+      {
+        char line[64] = {};
+        if (std::fgets(line, sizeof(line), git) != nullptr)
+          commit = line;
+        ::pclose(git);
+      }
+    while (!commit.empty() && (commit.back() == '\n' || commit.back() == ' '))
+      commit.pop_back();
+    return commit.empty() ? "unknown" : commit;
+  }
+
+  std::string
+  interval_text(const Uncertainty::FailureProbability &p)
+  {
+    return fmt::format("{:.4f} +- {:.4f}", p.probability, p.half_width);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  SingletonMpiEnvironment                  environment;
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool                               first =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  std::string  scene_path = "params/default.prm";
+  std::string  output;
+  unsigned int n_brute_force = 1000;
+  for (int k = 1; k < argc; ++k)
+    {
+      const std::string argument = argv[k];
+      if (argument == "--brute-force" && k + 1 < argc)
+        n_brute_force = std::stoul(argv[++k]);
+      else if (argument == "--output" && k + 1 < argc)
+        output = argv[++k];
+      else
+        scene_path = argument;
+    }
+
+  try
+    {
+      const auto scene = Parameters::read_scenario(scene_path, {});
+      if (output.empty())
+        output = "results/" + scene.scene_name + "/assess_benchmark";
+      const Assessment::SceneSource source{scene_path,
+                                           {},
+                                           scene.uncertainty.inputs};
+      std::ostringstream            quiet;
+
+      dealii::Timer                    study_timer;
+      Assessment::AssessmentResult     study;
+      Assessment::AssessmentIncomplete incomplete;
+      if (!Assessment::run_assessment(scene,
+                                      source,
+                                      output + "/assess_cases",
+                                      first ? std::cout : quiet,
+                                      study,
+                                      incomplete))
+        throw std::runtime_error("the study stopped at its time budget");
+      const double study_seconds = study_timer.wall_time();
+
+      // Brute force: the same inputs, another seed, the FEM on every draw.
+      const OT::Distribution distribution =
+        Assessment::checked_input_distribution(scene);
+      const Assessment::FemSafetyFactor     fem(source,
+                                            output + "/brute_force_cases",
+                                            "mc",
+                                            first ? std::cout : quiet);
+      dealii::Timer                         brute_force_timer;
+      const Uncertainty::FailureProbability brute_force =
+        Uncertainty::monte_carlo_failure_probability(
+          OT::Function(fem),
+          distribution,
+          {0., n_brute_force, 100, scene.uncertainty.seed + 100});
+      const double brute_force_seconds = brute_force_timer.wall_time();
+
+      if (!first)
+        return 0;
+      const auto  &surrogate = study.failure.monte_carlo;
+      const double gap =
+        std::abs(surrogate.probability - brute_force.probability);
+      const bool agree = gap <= surrogate.half_width + brute_force.half_width;
+      std::ostringstream table;
+      table << fmt::format(
+        "Measured at {} on {} MPI processes: `mpirun -np {} "
+        "build/tests/benchmark/floorblock_assess_benchmark {} --brute-force "
+        "{}`\n\n",
+        commit_of_tree(),
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+        scene_path,
+        n_brute_force);
+      table << "| | assess (surrogate) | brute force (FEM only) |\n"
+            << "|---|---|---|\n";
+      table << fmt::format("| P(FS < 1), 95 % | {} | {} |\n",
+                           interval_text(surrogate),
+                           interval_text(brute_force));
+      table << fmt::format(
+        "| P_f if the surrogate errs by its stated factor {:.3f} | {:.4f} "
+        "to {:.4f} | |\n",
+        std::exp(study.surrogate.stated_error),
+        study.failure.lower_with_surrogate_error,
+        study.failure.upper_with_surrogate_error);
+      table << fmt::format("| FEM solves | {} ({} from an earlier run) | {} "
+                           "({} from an earlier run) |\n",
+                           study.costs.at(0).evaluations,
+                           study.costs.at(0).from_earlier_runs,
+                           fem.cases().size(),
+                           fem.n_from_earlier_runs());
+      table << fmt::format("| surrogate evaluations | {} | |\n",
+                           study.costs.at(1).evaluations);
+      table << fmt::format("| wall time (s) | {:.0f} | {:.0f} |\n",
+                           study_seconds,
+                           brute_force_seconds);
+      table << fmt::format(
+        "\nThe estimates differ by {:.4f}: {} the sum of their half-widths "
+        "({:.4f}).\n",
+        gap,
+        agree ? "within" : "OUTSIDE",
+        surrogate.half_width + brute_force.half_width);
+      table << fmt::format(
+        "Surrogate (ln FS, degree {}, {} terms): stated error {:.2f} % of "
+        "FS; on {} held-out FEM cases rms {:.2f} %, largest {:.2f} %, "
+        "{:.0f} % within the stated error.\n",
+        study.surrogate.degree,
+        study.surrogate.n_terms,
+        100. * std::expm1(study.surrogate.stated_error),
+        study.held_out.n_points,
+        100. * std::expm1(study.held_out.rms),
+        100. * std::expm1(study.held_out.largest),
+        100. * study.held_out.share_within_stated);
+      std::cout << table.str();
+      std::filesystem::create_directories(output);
+      std::ofstream(output + "/assess_benchmark.md") << table.str();
+      return agree ? 0 : 1;
+    }
+  catch (const InputError &error)
+    {
+      std::cerr << "error: " << error.what() << std::endl;
+      return 2;
+    }
+  catch (const std::exception &error)
+    {
+      std::cerr << "failed: " << error.what() << std::endl;
+      return 1;
+    }
+}
