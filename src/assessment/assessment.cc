@@ -13,7 +13,9 @@
 #include <openturns/SymbolicFunction.hxx>
 #include <uncertainty/input_distribution.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <ostream>
 
 namespace FloorBlock::Assessment
@@ -29,6 +31,8 @@ namespace FloorBlock::Assessment
     constexpr std::uint64_t max_surrogate_evaluations = 20000000;
     constexpr std::uint64_t sobol_base_size           = 20000;
     constexpr std::uint64_t fs_sample_size            = 20000;
+    /** Uncertainty/Refinement cases are solved in this many rounds. */
+    constexpr unsigned int refinement_rounds = 2;
 
     CaseDraws
     draws_of(const std::string &prefix, const OT::Sample &sample)
@@ -164,6 +168,33 @@ namespace FloorBlock::Assessment
         }
       return limit;
     }
+
+    /**
+     * @p n_cases random draws whose surrogate FS lies within the stated
+     * error of 1 (|ln FS| <= e), in the order drawn; where too few of
+     * 20,000 do, the nearest to FS = 1 fill the rest.
+     */
+    OT::Sample
+    draws_near_failure(const Uncertainty::Surrogate &surrogate,
+                       const OT::Distribution       &distribution,
+                       const unsigned int            n_cases)
+    {
+      const OT::Sample candidates = distribution.getSample(20000);
+      const OT::Sample log_fs     = surrogate.model(candidates);
+      std::vector<OT::UnsignedInteger> order(candidates.getSize());
+      std::iota(order.begin(), order.end(), 0);
+      std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) {
+        const bool a_in = std::abs(log_fs(a, 0)) <= surrogate.stated_error;
+        const bool b_in = std::abs(log_fs(b, 0)) <= surrogate.stated_error;
+        if (a_in != b_in)
+          return a_in;
+        return !a_in && std::abs(log_fs(a, 0)) < std::abs(log_fs(b, 0));
+      });
+      OT::Sample chosen(0, candidates.getDimension());
+      for (unsigned int k = 0; k < n_cases && k < order.size(); ++k)
+        chosen.add(candidates[order[k]]);
+      return chosen;
+    }
   } // namespace
 
   OT::Distribution
@@ -224,20 +255,62 @@ namespace FloorBlock::Assessment
                             batch.n_from_earlier_runs,
                             summed_wall_time(batch.cases)});
 
-    const auto [x, y] = solved_samples(result.training, dimension);
-    if (x.getSize() < dimension + 2)
-      throw std::runtime_error(fmt::format(
-        "only {} of {} training cases solved (the others were refused or "
-        "did not converge; cases.csv says why): a surrogate of {} inputs "
-        "needs at least {}",
-        x.getSize(),
-        result.training.size(),
-        dimension,
-        dimension + 2));
-
+    const auto fit = [&] {
+      const auto [x, y] = solved_samples(result.training, dimension);
+      if (x.getSize() < dimension + 2)
+        throw std::runtime_error(fmt::format(
+          "only {} of {} training cases solved (the others were refused or "
+          "did not converge; cases.csv says why): a surrogate of {} inputs "
+          "needs at least {}",
+          x.getSize(),
+          result.training.size(),
+          dimension,
+          dimension + 2));
+      return Uncertainty::fit_chaos_surrogate(x,
+                                              y,
+                                              distribution,
+                                              max_chaos_degree);
+    };
     dealii::Timer surrogate_timer;
-    result.surrogate =
-      Uncertainty::fit_chaos_surrogate(x, y, distribution, max_chaos_degree);
+    result.surrogate = fit();
+
+    // Where the surrogate's error can change the answer, FS within its
+    // stated error of 1, more FEM cases sharpen it: rounds of draws in that
+    // band join the training cases and the surrogate is fitted again.
+    for (unsigned int round = 0; round < refinement_rounds; ++round)
+      {
+        const unsigned int n_cases =
+          settings.refinement_cases / refinement_rounds +
+          (round < settings.refinement_cases % refinement_rounds ? 1 : 0);
+        if (n_cases == 0)
+          continue;
+        OT::RandomGenerator::SetSeed(settings.seed + 10 + round);
+        const CaseDraws draws =
+          draws_of(fmt::format("refinement{}", round + 1),
+                   draws_near_failure(result.surrogate, distribution, n_cases));
+        const CaseBatch refinement =
+          solve_safety_cases(source,
+                             draws,
+                             Output::CaseStore(case_folder),
+                             MPI_COMM_WORLD,
+                             progress);
+        if (!refinement.complete)
+          {
+            incomplete.n_cases_done =
+              batch.cases.size() + refinement.cases.size();
+            incomplete.n_cases_total =
+              all.ids.size() + settings.refinement_cases;
+            return false;
+          }
+        result.training.insert(result.training.end(),
+                               refinement.cases.begin(),
+                               refinement.cases.end());
+        result.costs[0].evaluations += refinement.cases.size();
+        result.costs[0].from_earlier_runs += refinement.n_from_earlier_runs;
+        result.costs[0].wall_time += summed_wall_time(refinement.cases);
+        result.surrogate = fit();
+      }
+
     const auto [x_check, y_check] =
       solved_samples(result.validation, dimension);
     result.held_out = Uncertainty::held_out_errors(

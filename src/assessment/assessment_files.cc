@@ -195,7 +195,11 @@ namespace FloorBlock::Assessment
       for (std::size_t k = 0; k < cases.size(); ++k)
         {
           const SafetyCase &c = cases[k];
-          csv += c.id + "," + role + ",fem," + field(c.status);
+          // Training cases are of the Latin hypercube or of a refinement
+          // round: the id's prefix says which.
+          csv += c.id + "," +
+                 (role == "training" ? c.id.substr(0, c.id.find('_')) : role) +
+                 ",fem," + field(c.status);
           for (const double value : c.inputs)
             csv += fmt::format(",{}", value);
           if (c.solved())

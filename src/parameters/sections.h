@@ -415,15 +415,17 @@ namespace FloorBlock::Parameters
     /** Correlations of their Gaussian copula (others independent). */
     std::vector<InputCorrelation> correlations;
     /** Largest half-width of P_f's 95 % confidence interval (-). */
-    double half_width;
+    double half_width = 0;
     /** FEM cases the surrogate is fitted on. */
-    unsigned int training_cases;
+    unsigned int training_cases = 0;
     /** FEM cases held out to check the surrogate. */
-    unsigned int validation_cases;
+    unsigned int validation_cases = 0;
+    /** FEM cases added where the surrogate's FS is near 1. */
+    unsigned int refinement_cases = 0;
     /** Seed of every random design and sample. */
-    unsigned int seed;
+    unsigned int seed = 0;
     /** Wall time of the whole command (s). */
-    double time_budget;
+    double time_budget = 0;
     /** Path of the input the design limit curve runs over ("" = none). */
     std::string design_limit_input;
     /** Failure probabilities whose design limit is reported (-). */

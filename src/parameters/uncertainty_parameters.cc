@@ -249,6 +249,14 @@ namespace FloorBlock::Parameters
       Integer(0, 100000),
       "FEM cases drawn at random and held out of the fit, on which the "
       "surrogate's error is measured. Units: none.");
+    prm.declare_entry(
+      "Refinement cases",
+      "40",
+      Integer(0, 100000),
+      "FEM cases added to the training cases where the surrogate's FS lies "
+      "within its stated error of 1 (where its error could change the "
+      "answer), in two rounds, the surrogate fitted again after each. "
+      "Units: none.");
     prm.declare_entry("Seed",
                       "1",
                       Integer(0, 2147483647),
@@ -289,6 +297,7 @@ namespace FloorBlock::Parameters
     half_width         = prm.get_double("Failure probability half width");
     training_cases     = prm.get_integer("Training cases");
     validation_cases   = prm.get_integer("Validation cases");
+    refinement_cases   = prm.get_integer("Refinement cases");
     seed               = prm.get_integer("Seed");
     time_budget        = prm.get_double("Time budget");
     design_limit_input = dealii::Utilities::trim(prm.get("Design limit input"));

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <thread>
 
 #include "process.h"
@@ -15,8 +16,9 @@ using nlohmann::json;
 
 namespace
 {
-  // Eight FEM cases (six training, two held out) of two uncertain inputs
-  // on a three-block scene: about a second each.
+  // Ten FEM cases (six on a Latin hypercube, two near FS = 1, two held
+  // out) of two uncertain inputs on a three-block scene: about a second
+  // each.
   const std::string assess_arguments = "assess tests/cli/assess_scene.prm";
 
   std::vector<std::filesystem::path>
@@ -82,17 +84,25 @@ TEST(Assess, WritesTheProbabilityWithItsIntervalAndTheCases)
         EXPECT_LE(index.at("interval_95")[0].get<double>(),
                   index.at("interval_95")[1].get<double>());
       }
-  EXPECT_EQ(answer.at("fem_cases").at("training").at("total"), 6);
+  EXPECT_EQ(answer.at("fem_cases").at("training").at("total"), 8);
   EXPECT_EQ(answer.at("fem_cases").at("validation").at("total"), 2);
   EXPECT_EQ(answer.at("surrogate").at("held_out").at("cases"), 2);
   EXPECT_GT(answer.at("surrogate").at("stated_error").get<double>(), 0.);
 
   const CsvTable cases = read_csv(output + "/cases.csv");
-  ASSERT_EQ(cases.rows.size(), 8u);
+  ASSERT_EQ(cases.rows.size(), 10u);
   EXPECT_NE(std::find(cases.columns.begin(),
                       cases.columns.end(),
                       "Strength/Intact UCS (Pa)"),
             cases.columns.end());
+  std::map<std::string, int> roles;
+  for (const CsvRow &row : cases.rows)
+    ++roles[row.at("role")];
+  EXPECT_EQ(roles,
+            (std::map<std::string, int>{{"training", 6},
+                                        {"refinement1", 1},
+                                        {"refinement2", 1},
+                                        {"validation", 2}}));
   for (const CsvRow &row : cases.rows)
     {
       EXPECT_EQ(row.at("model"), "fem");
@@ -114,7 +124,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
   const auto        full =
     run_floorblock(assess_arguments + " --output " + shell_quoted(reference));
   ASSERT_EQ(full.exit_code, 0) << full.output;
-  ASSERT_EQ(case_files(reference).size(), 8u);
+  ASSERT_EQ(case_files(reference).size(), 10u);
 
   const std::string interrupted = fresh_output_folder("assess_interrupted");
   const int         process = start_floorblock(assess_arguments + " --output " +
@@ -129,7 +139,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
   EXPECT_EQ(wait_for_exit(process), 130) << read_text(interrupted + ".log");
   const std::size_t kept = case_files(interrupted).size();
   EXPECT_GE(kept, 3u);
-  EXPECT_LT(kept, 8u) << "the study finished before the signal took effect";
+  EXPECT_LT(kept, 10u) << "the study finished before the signal took effect";
   EXPECT_FALSE(std::filesystem::exists(interrupted + "/assess.json"));
 
   const auto resumed =
@@ -140,7 +150,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
        at != std::string::npos;
        at = resumed.output.find("cases done", at + 1))
     ++computed;
-  EXPECT_EQ(computed, 8u - kept) << resumed.output;
+  EXPECT_EQ(computed, 10u - kept) << resumed.output;
   EXPECT_EQ(read_json(interrupted + "/assess.json")
               .at("cost_by_model")[0]
               .at("from_earlier_runs"),
