@@ -358,7 +358,7 @@ namespace FloorBlock::Assessment
                        distribution,
                        i,
                        settings.design_limit_probabilities,
-                       {0.002, 100000, 1000, settings.seed + 5});
+                       {0.005, 20000, 1000, settings.seed + 5});
 
     OT::ComposedDistribution::DistributionCollection marginals;
     for (std::size_t i = 0; i < dimension; ++i)

@@ -27,6 +27,7 @@ namespace FloorBlock::Assessment
       nlohmann::json counts = {{"total", cases.size()},
                                {"solved", 0},
                                {"not_converged", 0},
+                               {"failed", 0},
                                {"refused", 0}};
       for (const SafetyCase &c : cases)
         {

@@ -47,10 +47,24 @@ namespace FloorBlock::Assessment
       }
 
     const Pipeline::ScratchFolder scratch(id);
-    const Pipeline::FemOutcome    outcome =
-      Pipeline::solve_scene(scene,
-                            Output::ResultFolder(scratch.path.string()),
-                            false);
+    Pipeline::FemOutcome          outcome;
+    try
+      {
+        outcome =
+          Pipeline::solve_scene(scene,
+                                Output::ResultFolder(scratch.path.string()),
+                                false);
+      }
+    catch (const std::exception &error)
+      {
+        // The mesher or a solver gave up on this draw (not a cutback's
+        // failure, which solve_scene reports): the case says so and the
+        // study goes on without it.
+        result.status    = "failed";
+        result.message   = error.what();
+        result.wall_time = timer.wall_time();
+        return result;
+      }
     result.n_dofs          = outcome.result.n_dofs;
     const auto &increments = outcome.result.increments;
     if (!outcome.converged || increments.empty() ||

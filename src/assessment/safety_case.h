@@ -24,7 +24,8 @@ namespace FloorBlock::Assessment
     std::string         id;     ///< "training_0007"
     std::vector<double> inputs; ///< as set, in each parameter's units
     /**
-     * "solved"; "not converged" (the solve failed after its cutbacks); or
+     * "solved"; "not converged" (the solve failed after its cutbacks);
+     * "failed" (the mesher or a solver threw: message says what); or
      * "refused": the drawn scene is inadmissible (message says why).
      */
     std::string status;

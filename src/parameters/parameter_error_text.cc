@@ -120,31 +120,73 @@ namespace FloorBlock::Parameters
     return "parameter '" + parameter_path + "' = '" + value + "': " + text;
   }
 
+  namespace
+  {
+    /**
+     * Calls @p visit(path, documentation) for every entry of @p prm, from
+     * the parameter file deal.II prints, where each entry's documentation
+     * stands as comments above its `set` line.
+     */
+    template <typename Visit>
+    void
+    for_each_entry(const dealii::ParameterHandler &prm, Visit &&visit)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, dealii::ParameterHandler::PRM);
+      std::istringstream       lines(text.str());
+      std::string              line, comment;
+      std::vector<std::string> open;
+      while (std::getline(lines, line))
+        {
+          const std::string trimmed = dealii::Utilities::trim(line);
+          if (trimmed.rfind("#", 0) == 0)
+            comment += " " + dealii::Utilities::trim(trimmed.substr(1));
+          else if (trimmed.rfind("subsection ", 0) == 0)
+            {
+              open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+              comment.clear();
+            }
+          else if (trimmed == "end" && !open.empty())
+            open.pop_back();
+          else if (trimmed.rfind("set ", 0) == 0)
+            {
+              std::string path;
+              for (const std::string &subsection : open)
+                path += subsection + "/";
+              visit(path + dealii::Utilities::trim(
+                             trimmed.substr(4, trimmed.find('=') - 4)),
+                    comment);
+              comment.clear();
+            }
+        }
+    }
+  } // namespace
+
   std::vector<std::string>
   entry_paths(const dealii::ParameterHandler &prm)
   {
-    std::ostringstream text;
-    prm.print_parameters(text, dealii::ParameterHandler::ShortPRM);
-    std::istringstream       lines(text.str());
-    std::string              line;
-    std::vector<std::string> open, paths;
-    while (std::getline(lines, line))
-      {
-        const std::string trimmed = dealii::Utilities::trim(line);
-        if (trimmed.rfind("subsection ", 0) == 0)
-          open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
-        else if (trimmed == "end" && !open.empty())
-          open.pop_back();
-        else if (trimmed.rfind("set ", 0) == 0)
-          {
-            std::string path;
-            for (const std::string &subsection : open)
-              path += subsection + "/";
-            paths.push_back(path + dealii::Utilities::trim(
-                                     trimmed.substr(4, trimmed.find('=') - 4)));
-          }
-      }
+    std::vector<std::string> paths;
+    for_each_entry(prm, [&](const std::string &path, const std::string &) {
+      paths.push_back(path);
+    });
     return paths;
+  }
+
+  std::map<std::string, std::string>
+  entry_units(const dealii::ParameterHandler &prm)
+  {
+    std::map<std::string, std::string> units;
+    for_each_entry(prm,
+                   [&](const std::string &path, const std::string &comment) {
+                     const auto start = comment.rfind("Units: ");
+                     if (start == std::string::npos)
+                       return;
+                     std::string unit = comment.substr(start + 7);
+                     if (!unit.empty() && unit.back() == '.')
+                       unit.pop_back();
+                     units[path] = dealii::Utilities::trim(unit);
+                   });
+    return units;
   }
 
   std::vector<std::string>

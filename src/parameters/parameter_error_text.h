@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ namespace FloorBlock::Parameters
    */
   std::vector<std::string>
   entry_paths(const dealii::ParameterHandler &prm);
+
+  /**
+   * @brief The unit each entry of @p prm documents ("... Units: Pa."), by
+   * path; entries whose documentation names none are left out.
+   */
+  std::map<std::string, std::string>
+  entry_units(const dealii::ParameterHandler &prm);
 
   /**
    * @brief Up to three declared "Subsection/Entry" paths whose entry name

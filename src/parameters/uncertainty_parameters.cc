@@ -9,7 +9,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <sstream>
 
 namespace FloorBlock::Parameters
 {
@@ -81,53 +80,6 @@ namespace FloorBlock::Parameters
       const std::vector<std::string> levels;
       std::string                    saved;
     };
-
-    /**
-     * The unit each entry's documentation ends with ("... Units: Pa."), by
-     * path: from the parameter file deal.II prints, where each entry's
-     * documentation stands as comments above its `set` line.
-     */
-    std::map<std::string, std::string>
-    entry_units(const ParameterHandler &prm)
-    {
-      std::ostringstream printed;
-      prm.print_parameters(printed, ParameterHandler::PRM);
-      std::istringstream                 lines(printed.str());
-      std::string                        line, comment;
-      std::vector<std::string>           open;
-      std::map<std::string, std::string> units;
-      while (std::getline(lines, line))
-        {
-          const std::string trimmed = dealii::Utilities::trim(line);
-          if (trimmed.rfind("#", 0) == 0)
-            comment += " " + dealii::Utilities::trim(trimmed.substr(1));
-          else if (trimmed.rfind("subsection ", 0) == 0)
-            {
-              open.push_back(dealii::Utilities::trim(trimmed.substr(11)));
-              comment.clear();
-            }
-          else if (trimmed == "end" && !open.empty())
-            open.pop_back();
-          else if (trimmed.rfind("set ", 0) == 0)
-            {
-              std::string path;
-              for (const std::string &subsection : open)
-                path += subsection + "/";
-              path += dealii::Utilities::trim(
-                trimmed.substr(4, trimmed.find('=') - 4));
-              const auto start = comment.rfind("Units: ");
-              if (start != std::string::npos)
-                {
-                  std::string unit = comment.substr(start + 7);
-                  if (!unit.empty() && unit.back() == '.')
-                    unit.pop_back();
-                  units[path] = dealii::Utilities::trim(unit);
-                }
-              comment.clear();
-            }
-        }
-      return units;
-    }
 
     /** The pattern a ParameterHandler refusal quotes, or the refusal. */
     std::string

@@ -51,28 +51,49 @@ namespace FloorBlock::Uncertainty
       return {result, std::sqrt(result.getRelativeErrors()[0] * variance)};
     }
 
-    /** The best degree's fit, by the leave-one-out error. */
-    Surrogate
-    best_fit(const OT::Sample       &inputs,
-             const OT::Sample       &outputs,
-             const OT::Distribution &distribution,
-             const std::uint64_t     max_degree)
+    /**
+     * Residuals of @p n_folds-fold cross validation of the fit of
+     * @p degree: each fold predicted by a fit on the others (terms selected
+     * anew), points dealt to the folds in turn.
+     */
+    OT::Sample
+    cross_validation_residuals(const OT::Sample       &inputs,
+                               const OT::Sample       &outputs,
+                               const OT::Distribution &distribution,
+                               const std::uint64_t     degree,
+                               const std::uint64_t     n_folds)
     {
-      Surrogate best;
-      double    best_error = HUGE_VAL;
-      for (std::uint64_t degree = 1; degree <= max_degree; ++degree)
+      const OT::UnsignedInteger n_points = inputs.getSize();
+      OT::Sample                residuals(0, 1);
+      for (std::uint64_t fold = 0; fold < n_folds; ++fold)
         {
-          const Fit fit = fit_of_degree(inputs, outputs, distribution, degree);
-          if (fit.leave_one_out_rms < best_error)
+          OT::Sample train_x(0, inputs.getDimension()), train_y(0, 1);
+          OT::Sample test_x(0, inputs.getDimension()), test_y(0, 1);
+          for (OT::UnsignedInteger i = 0; i < n_points; ++i)
             {
-              best_error             = fit.leave_one_out_rms;
-              best.model             = fit.result.getMetaModel();
-              best.degree            = degree;
-              best.n_terms           = fit.result.getIndices().getSize();
-              best.leave_one_out_rms = fit.leave_one_out_rms;
+              OT::Sample &x = i % n_folds == fold ? test_x : train_x;
+              OT::Sample &y = i % n_folds == fold ? test_y : train_y;
+              x.add(inputs[i]);
+              y.add(outputs[i]);
             }
+          if (train_x.getSize() < inputs.getDimension() + 2 ||
+              test_x.getSize() == 0)
+            continue;
+          const Fit fit = fit_of_degree(train_x, train_y, distribution, degree);
+          residuals.add(fit.result.getMetaModel()(test_x) - test_y);
         }
-      return best;
+      return residuals;
+    }
+
+    double
+    root_mean_square(const OT::Sample &residuals)
+    {
+      double sum_of_squares = 0.;
+      for (OT::UnsignedInteger i = 0; i < residuals.getSize(); ++i)
+        sum_of_squares += residuals(i, 0) * residuals(i, 0);
+      return residuals.getSize() == 0 ?
+               HUGE_VAL :
+               std::sqrt(sum_of_squares / residuals.getSize());
     }
   } // namespace
 
@@ -93,41 +114,38 @@ namespace FloorBlock::Uncertainty
       throw std::invalid_argument(
         "uncertainty: a surrogate needs at least inputs + 2 points");
 
-    Surrogate surrogate = best_fit(inputs, outputs, distribution, max_degree);
-
-    const OT::UnsignedInteger n_points = inputs.getSize();
-    surrogate.n_folds = std::min<std::uint64_t>(n_folds, n_points);
-    OT::Sample residuals(0, 1);
-    for (std::uint64_t fold = 0; fold < surrogate.n_folds; ++fold)
+    // The degree is chosen by the cross-validation error: the
+    // leave-one-out error of LARS's own selection favours the largest
+    // degree, whose extra terms then miss new points.
+    const std::uint64_t folds =
+      std::min<std::uint64_t>(n_folds, inputs.getSize());
+    Surrogate  surrogate;
+    OT::Sample best_residuals(0, 1);
+    double     best_error = HUGE_VAL;
+    for (std::uint64_t degree = 1; degree <= max_degree; ++degree)
       {
-        OT::Sample train_x(0, inputs.getDimension()), train_y(0, 1);
-        OT::Sample test_x(0, inputs.getDimension()), test_y(0, 1);
-        for (OT::UnsignedInteger i = 0; i < n_points; ++i)
+        const OT::Sample residuals = cross_validation_residuals(
+          inputs, outputs, distribution, degree, folds);
+        const double error = root_mean_square(residuals);
+        if (error < best_error)
           {
-            OT::Sample &x = i % surrogate.n_folds == fold ? test_x : train_x;
-            OT::Sample &y = i % surrogate.n_folds == fold ? test_y : train_y;
-            x.add(inputs[i]);
-            y.add(outputs[i]);
+            best_error       = error;
+            best_residuals   = residuals;
+            surrogate.degree = degree;
           }
-        if (train_x.getSize() < inputs.getDimension() + 2)
-          continue;
-        const Surrogate refitted =
-          best_fit(train_x, train_y, distribution, max_degree);
-        residuals.add(refitted.model(test_x) - test_y);
       }
-    double     sum_of_squares = 0.;
-    OT::Sample magnitudes(residuals.getSize(), 1);
-    for (OT::UnsignedInteger i = 0; i < residuals.getSize(); ++i)
-      {
-        sum_of_squares += residuals(i, 0) * residuals(i, 0);
-        magnitudes(i, 0) = std::abs(residuals(i, 0));
-      }
-    if (residuals.getSize() > 0)
-      {
-        surrogate.cross_validation_rms =
-          std::sqrt(sum_of_squares / residuals.getSize());
-        surrogate.stated_error = magnitudes.computeQuantile(0.95)[0];
-      }
+    const Fit fit =
+      fit_of_degree(inputs, outputs, distribution, surrogate.degree);
+    surrogate.model                = fit.result.getMetaModel();
+    surrogate.n_terms              = fit.result.getIndices().getSize();
+    surrogate.leave_one_out_rms    = fit.leave_one_out_rms;
+    surrogate.n_folds              = folds;
+    surrogate.cross_validation_rms = best_error;
+    OT::Sample magnitudes(best_residuals.getSize(), 1);
+    for (OT::UnsignedInteger i = 0; i < best_residuals.getSize(); ++i)
+      magnitudes(i, 0) = std::abs(best_residuals(i, 0));
+    if (magnitudes.getSize() > 0)
+      surrogate.stated_error = magnitudes.computeQuantile(0.95)[0];
     return surrogate;
   }
 

@@ -44,10 +44,10 @@ namespace FloorBlock::Uncertainty
    * FunctionalChaosAlgorithm): Hermite polynomials of the inputs' normal
    * scores (the iso-probabilistic transformation of @p distribution, so a
    * lognormal stiffness enters through its logarithm), terms chosen by
-   * LARS under the corrected leave-one-out error, for each total degree
-   * from 1 to @p max_degree; the degree with the smallest leave-one-out
-   * error wins. Its error is then measured by @p n_folds-fold cross
-   * validation (points dealt to the folds in turn).
+   * LARS under the corrected leave-one-out error, of the total degree from
+   * 1 to @p max_degree whose @p n_folds-fold cross-validation error (points
+   * dealt to the folds in turn, every fold refitted) is smallest; that
+   * error is the surrogate's.
    * @throws std::invalid_argument if the samples' sizes or dimensions do
    *   not match @p distribution, or there are fewer points than inputs + 2.
    */

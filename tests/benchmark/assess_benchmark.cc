@@ -6,9 +6,10 @@
 //
 // 1. The study as `assess` runs it (FEM cases, surrogate, P(FS < 1), FORM,
 //    Sobol' indices), timed whole, with its cost by model.
-// 2. Monte Carlo over the FEM itself (Assessment::FemSafetyFactor): N draws
-//    (default 1000) of the same inputs, by OpenTURNS' simulation algorithm,
-//    P(FS < 1) with its 95 % interval.
+// 2. Monte Carlo over the FEM itself: N random draws (default 1000) of the
+//    same inputs, one batch of FEM cases (Assessment::solve_safety_cases),
+//    P(FS < 1) over the solved ones with its 95 % interval (OpenTURNS'
+//    Bernoulli estimator); cases without FS are counted.
 // 3. Whether the two estimates agree within their intervals (and within
 //    the range the surrogate's stated error allows), and how the surrogate
 //    predicts the held-out cases.
@@ -25,9 +26,10 @@
 #include <deal.II/base/timer.h>
 
 #include <assessment/assessment.h>
-#include <assessment/fem_safety_function.h>
+#include <assessment/safety_cases.h>
 #include <fmt/format.h>
-#include <openturns/Function.hxx>
+#include <openturns/BernoulliFactory.hxx>
+#include <openturns/RandomGenerator.hxx>
 #include <uncertainty/reliability.h>
 
 #include <cmath>
@@ -55,6 +57,16 @@ namespace
     while (!commit.empty() && (commit.back() == '\n' || commit.back() == ' '))
       commit.pop_back();
     return commit.empty() ? "unknown" : commit;
+  }
+
+  /** A process that fails ends the others, which may wait for it in a
+   * collective call. */
+  int
+  end_all_processes(const int code)
+  {
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      MPI_Abort(MPI_COMM_WORLD, code);
+    return code;
   }
 
   std::string
@@ -111,17 +123,41 @@ main(int argc, char **argv)
       // Brute force: the same inputs, another seed, the FEM on every draw.
       const OT::Distribution distribution =
         Assessment::checked_input_distribution(scene);
-      const Assessment::FemSafetyFactor     fem(source,
-                                            output + "/brute_force_cases",
-                                            "mc",
-                                            first ? std::cout : quiet);
-      dealii::Timer                         brute_force_timer;
-      const Uncertainty::FailureProbability brute_force =
-        Uncertainty::monte_carlo_failure_probability(
-          OT::Function(fem),
-          distribution,
-          {0., n_brute_force, 100, scene.uncertainty.seed + 100});
+      OT::RandomGenerator::SetSeed(scene.uncertainty.seed + 100);
+      const OT::Sample      draws = distribution.getSample(n_brute_force);
+      Assessment::CaseDraws brute_force_draws;
+      for (OT::UnsignedInteger i = 0; i < draws.getSize(); ++i)
+        {
+          brute_force_draws.ids.push_back(fmt::format("mc_{:06d}", i + 1));
+          brute_force_draws.points.emplace_back(draws[i].begin(),
+                                                draws[i].end());
+        }
+      dealii::Timer               brute_force_timer;
+      const Assessment::CaseBatch fem =
+        Assessment::solve_safety_cases(source,
+                                       brute_force_draws,
+                                       Output::CaseStore(output +
+                                                         "/brute_force_cases"),
+                                       MPI_COMM_WORLD,
+                                       first ? std::cout : quiet);
       const double brute_force_seconds = brute_force_timer.wall_time();
+      OT::Sample   failed(0, 1);
+      unsigned int n_without_fs = 0;
+      for (const auto &c : fem.cases)
+        if (c.solved())
+          failed.add(OT::Point(1, c.safety_factor < 1. ? 1. : 0.));
+        else
+          ++n_without_fs;
+      const OT::DistributionFactoryResult estimate =
+        OT::BernoulliFactory().buildEstimator(failed);
+      const OT::Interval interval =
+        estimate.getParameterDistribution().computeBilateralConfidenceInterval(
+          0.95);
+      Uncertainty::FailureProbability brute_force;
+      brute_force.probability = estimate.getDistribution().getParameter()[0];
+      brute_force.half_width =
+        0.5 * (interval.getUpperBound()[0] - interval.getLowerBound()[0]);
+      brute_force.evaluations = failed.getSize();
 
       if (!first)
         return 0;
@@ -151,11 +187,13 @@ main(int argc, char **argv)
         study.failure.lower_with_surrogate_error,
         study.failure.upper_with_surrogate_error);
       table << fmt::format("| FEM solves | {} ({} from an earlier run) | {} "
-                           "({} from an earlier run) |\n",
+                           "({} from an earlier run; {} without FS, left "
+                           "out) |\n",
                            study.costs.at(0).evaluations,
                            study.costs.at(0).from_earlier_runs,
-                           fem.cases().size(),
-                           fem.n_from_earlier_runs());
+                           fem.cases.size(),
+                           fem.n_from_earlier_runs,
+                           n_without_fs);
       table << fmt::format("| surrogate evaluations | {} | |\n",
                            study.costs.at(1).evaluations);
       table << fmt::format("| wall time (s) | {:.0f} | {:.0f} |\n",
@@ -186,11 +224,11 @@ main(int argc, char **argv)
   catch (const InputError &error)
     {
       std::cerr << "error: " << error.what() << std::endl;
-      return 2;
+      return end_all_processes(2);
     }
   catch (const std::exception &error)
     {
       std::cerr << "failed: " << error.what() << std::endl;
-      return 1;
+      return end_all_processes(1);
     }
 }
