@@ -55,6 +55,9 @@ targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_st
 #   full contact solves of 2000+ cells, over the 900 s test limit under
 #   ASan): the same CSV writers run in ClosedFormStatus' analytic and sweep
 #   cases, which stay, and `run` itself in RunCommand's 3-block cases;
+# - assess's resume after SIGINT (three studies of ten FEM cases): the same
+#   case store and case runner as SweepInterrupt.ResumesWithOnlyTheMissing
+#   Cases, which stays, as do assess's own answer and folder check;
 # - hard cases that change only numbers of the same scene (friction, lift,
 #   support load, block shape, joint stiffness, the rigid law at three more
 #   angles): their stability is the Release suite's to check.
@@ -62,6 +65,7 @@ heavy_duplicates='Solve3d\.(PlaneStrainScene|FreeEndFaces|FaceContactAreaTable)'
 heavy_duplicates+='|Footprint3d\.(CentredFootprint|WholeFaceFootprint)'
 heavy_duplicates+='|RunCommand\.(DefaultSceneErrorEstimates|AccuracyLoopThatRunsOut)'
 heavy_duplicates+='|ConvergeCommand\.StudyOfTheThreeBlockScene'
+heavy_duplicates+='|Assess\.ResumesAfterAnInterruption'
 heavy_duplicates+='|ClosedFormStatus\.RunCsvHoldsOnlyAdmissibleValues'
 heavy_duplicates+='|HardCases\.(FrictionNearSelfLocking|TinyFloorLift|LargeFloorLift'
 heavy_duplicates+='|VeryHighSupportLoad|NoSupportLoad|SlenderBlocks|SquatBlocks'
