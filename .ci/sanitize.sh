@@ -55,7 +55,7 @@ targets=(${SANITIZE_TARGETS:-unit_tests_common unit_tests_analytic unit_tests_st
 #   full contact solves of 2000+ cells, over the 900 s test limit under
 #   ASan): the same CSV writers run in ClosedFormStatus' analytic and sweep
 #   cases, which stay, and `run` itself in RunCommand's 3-block cases;
-# - assess's resume after SIGINT (three studies of ten FEM cases): the same
+# - assess's resume after SIGINT (three studies of six FEM cases): the same
 #   case store and case runner as SweepInterrupt.ResumesWithOnlyTheMissing
 #   Cases, which stays, as do assess's own answer and folder check;
 # - hard cases that change only numbers of the same scene (friction, lift,

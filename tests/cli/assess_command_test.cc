@@ -16,8 +16,8 @@ using nlohmann::json;
 
 namespace
 {
-  // Ten FEM cases (six on a Latin hypercube, two near FS = 1, two held
-  // out) of two uncertain inputs on a three-block scene: about a second
+  // Six FEM cases (four on a Latin hypercube, one near FS = 1, one held
+  // out) of two uncertain inputs on a three-block scene: under a second
   // each.
   const std::string assess_arguments = "assess tests/cli/assess_scene.prm";
 
@@ -84,13 +84,13 @@ TEST(Assess, WritesTheProbabilityWithItsIntervalAndTheCases)
         EXPECT_LE(index.at("interval_95")[0].get<double>(),
                   index.at("interval_95")[1].get<double>());
       }
-  EXPECT_EQ(answer.at("fem_cases").at("training").at("total"), 8);
-  EXPECT_EQ(answer.at("fem_cases").at("validation").at("total"), 2);
-  EXPECT_EQ(answer.at("surrogate").at("held_out").at("cases"), 2);
+  EXPECT_EQ(answer.at("fem_cases").at("training").at("total"), 5);
+  EXPECT_EQ(answer.at("fem_cases").at("validation").at("total"), 1);
+  EXPECT_EQ(answer.at("surrogate").at("held_out").at("cases"), 1);
   EXPECT_GT(answer.at("surrogate").at("stated_error").get<double>(), 0.);
 
   const CsvTable cases = read_csv(output + "/cases.csv");
-  ASSERT_EQ(cases.rows.size(), 10u);
+  ASSERT_EQ(cases.rows.size(), 6u);
   EXPECT_NE(std::find(cases.columns.begin(),
                       cases.columns.end(),
                       "Strength/Intact UCS (Pa)"),
@@ -99,10 +99,9 @@ TEST(Assess, WritesTheProbabilityWithItsIntervalAndTheCases)
   for (const CsvRow &row : cases.rows)
     ++roles[row.at("role")];
   EXPECT_EQ(roles,
-            (std::map<std::string, int>{{"training", 6},
+            (std::map<std::string, int>{{"training", 4},
                                         {"refinement1", 1},
-                                        {"refinement2", 1},
-                                        {"validation", 2}}));
+                                        {"validation", 1}}));
   for (const CsvRow &row : cases.rows)
     {
       EXPECT_EQ(row.at("model"), "fem");
@@ -124,7 +123,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
   const auto        full =
     run_floorblock(assess_arguments + " --output " + shell_quoted(reference));
   ASSERT_EQ(full.exit_code, 0) << full.output;
-  ASSERT_EQ(case_files(reference).size(), 10u);
+  ASSERT_EQ(case_files(reference).size(), 6u);
 
   const std::string interrupted = fresh_output_folder("assess_interrupted");
   const int         process = start_floorblock(assess_arguments + " --output " +
@@ -139,7 +138,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
   EXPECT_EQ(wait_for_exit(process), 130) << read_text(interrupted + ".log");
   const std::size_t kept = case_files(interrupted).size();
   EXPECT_GE(kept, 3u);
-  EXPECT_LT(kept, 10u) << "the study finished before the signal took effect";
+  EXPECT_LT(kept, 6u) << "the study finished before the signal took effect";
   EXPECT_FALSE(std::filesystem::exists(interrupted + "/assess.json"));
 
   const auto resumed =
@@ -150,7 +149,7 @@ TEST(Assess, ResumesAfterAnInterruptionWithoutRecomputing)
        at != std::string::npos;
        at = resumed.output.find("cases done", at + 1))
     ++computed;
-  EXPECT_EQ(computed, 10u - kept) << resumed.output;
+  EXPECT_EQ(computed, 6u - kept) << resumed.output;
   EXPECT_EQ(read_json(interrupted + "/assess.json")
               .at("cost_by_model")[0]
               .at("from_earlier_runs"),

@@ -35,8 +35,8 @@ TEST(AssessMpi, TwoProcessesGiveTheOneProcessAnswer)
 
   const CsvTable cases_1 = read_csv(folder_1 + "/cases.csv");
   const CsvTable cases_2 = read_csv(folder_2 + "/cases.csv");
-  ASSERT_EQ(cases_1.rows.size(), 10u);
-  ASSERT_EQ(cases_2.rows.size(), 10u);
+  ASSERT_EQ(cases_1.rows.size(), 6u);
+  ASSERT_EQ(cases_2.rows.size(), 6u);
   for (std::size_t k = 0; k < cases_1.rows.size(); ++k)
     for (const auto &[column, value] : cases_1.rows[k])
       if (column != "wall_time_s")
