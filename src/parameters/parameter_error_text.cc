@@ -178,10 +178,10 @@ namespace FloorBlock::Parameters
     std::map<std::string, std::string> units;
     for_each_entry(prm,
                    [&](const std::string &path, const std::string &comment) {
-                     const auto start = comment.rfind("Units: ");
-                     if (start == std::string::npos)
-                       return;
-                     std::string unit = comment.substr(start + 7);
+                     const auto  start = comment.rfind("Units: ");
+                     std::string unit  = start == std::string::npos ?
+                                           "" :
+                                           comment.substr(start + 7);
                      if (!unit.empty() && unit.back() == '.')
                        unit.pop_back();
                      units[path] = dealii::Utilities::trim(unit);

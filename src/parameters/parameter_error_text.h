@@ -31,8 +31,8 @@ namespace FloorBlock::Parameters
   entry_paths(const dealii::ParameterHandler &prm);
 
   /**
-   * @brief The unit each entry of @p prm documents ("... Units: Pa."), by
-   * path; entries whose documentation names none are left out.
+   * @brief Every entry of @p prm by path, with the unit its documentation
+   * names ("... Units: Pa." gives "Pa"; "" where it names none).
    */
   std::map<std::string, std::string>
   entry_units(const dealii::ParameterHandler &prm);

@@ -285,13 +285,17 @@ namespace FloorBlock::Parameters
                          std::to_string(inputs.size() + 2) +
                          ", the fewest a surrogate can be fitted and "
                          "cross-validated on");
-    const std::vector<std::string>           paths = entry_paths(prm);
+    // One walk over the printed parameters gives both the declared paths
+    // and their units: this runs on every read of a scene with inputs.
     const std::map<std::string, std::string> units = entry_units(prm);
+    std::vector<std::string>                 paths;
+    for (const auto &[path, unit] : units)
+      paths.push_back(path);
     for (UncertainInput &input : inputs)
       {
         check_against_scene(prm, paths, input);
-        const auto unit = units.find(input.path);
-        input.unit      = unit == units.end() ? "none" : unit->second;
+        const std::string &unit = units.at(input.path);
+        input.unit              = unit.empty() ? "none" : unit;
       }
   }
 } // namespace FloorBlock::Parameters
