@@ -111,11 +111,10 @@ namespace FloorBlock::App
                                  result.sobol.first_order[i],
                                  result.sobol.total_order[i]);
       std::cout << fmt::format(
-        "surrogate: polynomial chaos of ln FS, degree {}, {} terms; stated "
-        "error {:.1f} % of FS (cross-validated), held-out rms {:.1f} % over "
-        "{} FEM cases, {:.0f} % of them within the stated error\n",
-        result.surrogate.degree,
-        result.surrogate.n_terms,
+        "surrogate of ln FS: {}; stated error {:.1f} % of FS (95 % of new "
+        "cases within, from cross validation), held-out rms {:.1f} % over {} "
+        "FEM cases, {:.0f} % of them within the stated error\n",
+        result.surrogate.kind,
         100. * std::expm1(result.surrogate.stated_error),
         100. * std::expm1(result.held_out.rms),
         result.held_out.n_points,

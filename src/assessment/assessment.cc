@@ -266,10 +266,7 @@ namespace FloorBlock::Assessment
           result.training.size(),
           dimension,
           dimension + 2));
-      return Uncertainty::fit_chaos_surrogate(x,
-                                              y,
-                                              distribution,
-                                              max_chaos_degree);
+      return Uncertainty::fit_surrogate(x, y, distribution, max_chaos_degree);
     };
     dealii::Timer surrogate_timer;
     result.surrogate = fit();

@@ -145,15 +145,18 @@ namespace FloorBlock::Assessment
                "the inputs' marginals taken independent (Saltelli "
                "estimators, bootstrap intervals, on the surrogate)"}}},
             {"surrogate",
-             {{"kind",
-               "sparse polynomial chaos of ln FS (Hermite in the "
-               "inputs' normal scores, LARS); errors are of ln FS, a "
-               "factor exp(error) on FS"},
-              {"degree", s.degree},
-              {"terms", s.n_terms},
-              {"leave_one_out_rms", s.leave_one_out_rms},
+             {{"output",
+               "ln FS; errors are of ln FS, a factor exp(error) on FS"},
+              {"kind", s.kind},
+              {"chosen_among",
+               "sparse polynomial chaos of each degree from 1, and kriging, by "
+               "the smallest cross-validation rms"},
               {"cross_validation_rms", s.cross_validation_rms},
               {"cross_validation_folds", s.n_folds},
+              {"stated_error_meaning",
+               "95 % split-conformal bound of the cross-validation "
+               "residuals: a new case drawn like the training cases lies "
+               "within it with probability at least 0.95"},
               {"stated_error", s.stated_error},
               {"held_out",
                {{"cases", result.held_out.n_points},

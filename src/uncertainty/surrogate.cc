@@ -1,33 +1,67 @@
+#include <openturns/ComposedFunction.hxx>
 #include <openturns/CorrectedLeaveOneOut.hxx>
 #include <openturns/FixedStrategy.hxx>
 #include <openturns/FunctionalChaosAlgorithm.hxx>
 #include <openturns/HermiteFactory.hxx>
+#include <openturns/Interval.hxx>
+#include <openturns/KrigingAlgorithm.hxx>
 #include <openturns/LARS.hxx>
 #include <openturns/LeastSquaresMetaModelSelectionFactory.hxx>
 #include <openturns/LeastSquaresStrategy.hxx>
+#include <openturns/LinearBasisFactory.hxx>
 #include <openturns/LinearEnumerateFunction.hxx>
+#include <openturns/Log.hxx>
+#include <openturns/MaternModel.hxx>
 #include <openturns/OrthogonalProductPolynomialFactory.hxx>
 #include <uncertainty/surrogate.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+#include <vector>
 
 namespace FloorBlock::Uncertainty
 {
   namespace
   {
-    struct Fit
+    /** Fits one kind of surrogate to (inputs, outputs). */
+    using Fitter =
+      std::function<OT::Function(const OT::Sample &, const OT::Sample &)>;
+
+    struct Candidate
     {
-      OT::FunctionalChaosResult result;
-      double                    leave_one_out_rms;
+      std::string   kind;
+      std::uint64_t chaos_degree;
+      Fitter        fit;
     };
 
-    Fit
-    fit_of_degree(const OT::Sample       &inputs,
-                  const OT::Sample       &outputs,
-                  const OT::Distribution &distribution,
-                  const std::uint64_t     degree)
+    /** Hides OpenTURNS' warnings while it lives. */
+    class QuietWarnings
+    {
+    public:
+      QuietWarnings()
+        : shown(OT::Log::Flags())
+      {
+        OT::Log::Show(shown & ~OT::Log::WARN);
+      }
+      ~QuietWarnings()
+      {
+        OT::Log::Show(shown);
+      }
+      QuietWarnings(const QuietWarnings &) = delete;
+      QuietWarnings &
+      operator=(const QuietWarnings &) = delete;
+
+    private:
+      const OT::Log::Severity shown;
+    };
+
+    OT::Function
+    chaos_of_degree(const OT::Sample       &inputs,
+                    const OT::Sample       &outputs,
+                    const OT::Distribution &distribution,
+                    const std::uint64_t     degree)
     {
       const OT::UnsignedInteger dimension = inputs.getDimension();
       const OT::OrthogonalProductPolynomialFactory basis(
@@ -44,65 +78,105 @@ namespace FloorBlock::Uncertainty
       OT::FunctionalChaosAlgorithm algorithm(
         inputs, outputs, distribution, adaptive, projection);
       algorithm.run();
-      const OT::FunctionalChaosResult result = algorithm.getResult();
-      // The relative error is the leave-one-out mean square over the
-      // outputs' variance.
-      const double variance = outputs.computeVariance()[0];
-      return {result, std::sqrt(result.getRelativeErrors()[0] * variance)};
+      return algorithm.getResult().getMetaModel();
+    }
+
+    OT::Function
+    kriging(const OT::Sample       &inputs,
+            const OT::Sample       &outputs,
+            const OT::Distribution &distribution)
+    {
+      // In the normal scores the inputs are independent standard normals,
+      // so one range of length scales suits every input: from a tenth of a
+      // standard deviation (an output that changes within a few cases'
+      // spacing is noise to a surrogate) to a hundred (an input it does
+      // not depend on).
+      const OT::Function to_scores =
+        distribution.getIsoProbabilisticTransformation();
+      const std::uint64_t   dimension = inputs.getDimension();
+      const OT::MaternModel covariance(OT::Point(dimension, 1.), 2.5);
+      // The constructor warns on every call that it sets default bounds
+      // of the scales (replaced below), and the likelihood's optimiser
+      // warns where it stops short of an optimum: the cross validation
+      // judges the fit whatever the optimiser reached.
+      const QuietWarnings  quiet;
+      OT::KrigingAlgorithm algorithm(to_scores(inputs),
+                                     outputs,
+                                     covariance,
+                                     OT::LinearBasisFactory(dimension).build());
+      algorithm.setOptimizationBounds(
+        OT::Interval(OT::Point(dimension, 0.1), OT::Point(dimension, 100.)));
+      algorithm.run();
+      return OT::ComposedFunction(algorithm.getResult().getMetaModel(),
+                                  to_scores);
     }
 
     /**
-     * Residuals of @p n_folds-fold cross validation of the fit of
-     * @p degree: each fold predicted by a fit on the others (terms selected
-     * anew), points dealt to the folds in turn.
+     * Residuals of @p n_folds-fold cross validation of @p fit, in the
+     * points' order: each fold predicted by a fit on the others, points
+     * dealt to the folds in turn.
      */
-    OT::Sample
-    cross_validation_residuals(const OT::Sample       &inputs,
-                               const OT::Sample       &outputs,
-                               const OT::Distribution &distribution,
-                               const std::uint64_t     degree,
-                               const std::uint64_t     n_folds)
+    std::vector<double>
+    cross_validation_residuals(const OT::Sample   &inputs,
+                               const OT::Sample   &outputs,
+                               const Fitter       &fit,
+                               const std::uint64_t n_folds)
     {
       const OT::UnsignedInteger n_points = inputs.getSize();
-      OT::Sample                residuals(0, 1);
+      std::vector<double>       residuals(n_points, 0.);
       for (std::uint64_t fold = 0; fold < n_folds; ++fold)
         {
           OT::Sample train_x(0, inputs.getDimension()), train_y(0, 1);
-          OT::Sample test_x(0, inputs.getDimension()), test_y(0, 1);
+          OT::Sample test_x(0, inputs.getDimension());
+          std::vector<OT::UnsignedInteger> tested;
           for (OT::UnsignedInteger i = 0; i < n_points; ++i)
-            {
-              OT::Sample &x = i % n_folds == fold ? test_x : train_x;
-              OT::Sample &y = i % n_folds == fold ? test_y : train_y;
-              x.add(inputs[i]);
-              y.add(outputs[i]);
-            }
-          if (train_x.getSize() < inputs.getDimension() + 2 ||
-              test_x.getSize() == 0)
-            continue;
-          const Fit fit = fit_of_degree(train_x, train_y, distribution, degree);
-          residuals.add(fit.result.getMetaModel()(test_x) - test_y);
+            if (i % n_folds == fold)
+              {
+                test_x.add(inputs[i]);
+                tested.push_back(i);
+              }
+            else
+              {
+                train_x.add(inputs[i]);
+                train_y.add(outputs[i]);
+              }
+          const OT::Sample predicted = fit(train_x, train_y)(test_x);
+          for (std::size_t k = 0; k < tested.size(); ++k)
+            residuals[tested[k]] = predicted(k, 0) - outputs(tested[k], 0);
         }
       return residuals;
     }
 
     double
-    root_mean_square(const OT::Sample &residuals)
+    root_mean_square(const std::vector<double> &residuals)
     {
       double sum_of_squares = 0.;
-      for (OT::UnsignedInteger i = 0; i < residuals.getSize(); ++i)
-        sum_of_squares += residuals(i, 0) * residuals(i, 0);
-      return residuals.getSize() == 0 ?
-               HUGE_VAL :
-               std::sqrt(sum_of_squares / residuals.getSize());
+      for (const double r : residuals)
+        sum_of_squares += r * r;
+      return std::sqrt(sum_of_squares / residuals.size());
+    }
+
+    /** The split-conformal 95 % bound of Surrogate::stated_error. */
+    double
+    conformal_bound(const std::vector<double> &residuals)
+    {
+      std::vector<double> magnitudes;
+      for (const double r : residuals)
+        magnitudes.push_back(std::abs(r));
+      std::sort(magnitudes.begin(), magnitudes.end());
+      const std::size_t n = magnitudes.size();
+      const auto        rank =
+        static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(n + 1)));
+      return magnitudes[std::min(rank, n) - 1];
     }
   } // namespace
 
   Surrogate
-  fit_chaos_surrogate(const OT::Sample       &inputs,
-                      const OT::Sample       &outputs,
-                      const OT::Distribution &distribution,
-                      const std::uint64_t     max_degree,
-                      const std::uint64_t     n_folds)
+  fit_surrogate(const OT::Sample       &inputs,
+                const OT::Sample       &outputs,
+                const OT::Distribution &distribution,
+                const std::uint64_t     max_chaos_degree,
+                const std::uint64_t     n_folds)
   {
     if (inputs.getSize() != outputs.getSize() ||
         inputs.getDimension() != distribution.getDimension() ||
@@ -114,38 +188,51 @@ namespace FloorBlock::Uncertainty
       throw std::invalid_argument(
         "uncertainty: a surrogate needs at least inputs + 2 points");
 
-    // The degree is chosen by the cross-validation error: the
-    // leave-one-out error of LARS's own selection favours the largest
-    // degree, whose extra terms then miss new points.
+    std::vector<Candidate> candidates;
+    for (std::uint64_t degree = 1; degree <= max_chaos_degree; ++degree)
+      candidates.push_back(
+        {"sparse polynomial chaos of degree " + std::to_string(degree) +
+           " (Hermite in the inputs' normal scores, LARS)",
+         degree,
+         [&distribution, degree](const OT::Sample &x, const OT::Sample &y) {
+           return chaos_of_degree(x, y, distribution, degree);
+         }});
+    candidates.push_back(
+      {"kriging in the inputs' normal scores (linear trend, Matern 5/2 "
+       "covariance, maximum likelihood)",
+       0,
+       [&distribution](const OT::Sample &x, const OT::Sample &y) {
+         return kriging(x, y, distribution);
+       }});
+
+    // Chosen by the cross-validation error: the leave-one-out error of
+    // LARS's own selection favours the largest degree, whose extra terms
+    // then miss new points, and kriging's likelihood says nothing of new
+    // points at all.
     const std::uint64_t folds =
       std::min<std::uint64_t>(n_folds, inputs.getSize());
-    Surrogate  surrogate;
-    OT::Sample best_residuals(0, 1);
-    double     best_error = HUGE_VAL;
-    for (std::uint64_t degree = 1; degree <= max_degree; ++degree)
+    Surrogate           surrogate;
+    const Candidate    *best = nullptr;
+    std::vector<double> best_residuals;
+    double              best_error = HUGE_VAL;
+    for (const Candidate &candidate : candidates)
       {
-        const OT::Sample residuals = cross_validation_residuals(
-          inputs, outputs, distribution, degree, folds);
+        const std::vector<double> residuals =
+          cross_validation_residuals(inputs, outputs, candidate.fit, folds);
         const double error = root_mean_square(residuals);
         if (error < best_error)
           {
-            best_error       = error;
-            best_residuals   = residuals;
-            surrogate.degree = degree;
+            best_error     = error;
+            best_residuals = residuals;
+            best           = &candidate;
           }
       }
-    const Fit fit =
-      fit_of_degree(inputs, outputs, distribution, surrogate.degree);
-    surrogate.model                = fit.result.getMetaModel();
-    surrogate.n_terms              = fit.result.getIndices().getSize();
-    surrogate.leave_one_out_rms    = fit.leave_one_out_rms;
+    surrogate.model                = best->fit(inputs, outputs);
+    surrogate.kind                 = best->kind;
+    surrogate.chaos_degree         = best->chaos_degree;
     surrogate.n_folds              = folds;
     surrogate.cross_validation_rms = best_error;
-    OT::Sample magnitudes(best_residuals.getSize(), 1);
-    for (OT::UnsignedInteger i = 0; i < best_residuals.getSize(); ++i)
-      magnitudes(i, 0) = std::abs(best_residuals(i, 0));
-    if (magnitudes.getSize() > 0)
-      surrogate.stated_error = magnitudes.computeQuantile(0.95)[0];
+    surrogate.stated_error         = conformal_bound(best_residuals);
     return surrogate;
   }
 

@@ -5,6 +5,7 @@
 #include <openturns/Sample.hxx>
 
 #include <cstdint>
+#include <string>
 
 namespace FloorBlock::Uncertainty
 {
@@ -13,50 +14,53 @@ namespace FloorBlock::Uncertainty
   struct Surrogate
   {
     OT::Function model; ///< inputs (their units) -> output
-    /** Largest total degree of its polynomials. */
-    std::uint64_t degree = 0;
-    /** Terms LARS kept. */
-    std::uint64_t n_terms = 0;
-    /**
-     * Root mean square of the corrected leave-one-out residuals of the fit
-     * (OpenTURNS' CorrectedLeaveOneOut relative error times the output's
-     * variance), in the output's units: the error expected at a new point.
-     */
-    double leave_one_out_rms = 0.;
+    /** Which candidate the cross validation chose, in words. */
+    std::string kind;
+    /** Total degree of the chaos; 0 for kriging. */
+    std::uint64_t chaos_degree = 0;
     /**
      * Root mean square of the k-fold cross-validation residuals: each
-     * fold predicted by a surrogate fitted (degree chosen and terms
-     * selected anew) on the other folds.
+     * fold predicted by a surrogate fitted (terms selected, kriging
+     * scales optimised anew) on the other folds.
      */
-    double cross_validation_rms = 0.;
+    double        cross_validation_rms = 0.;
+    std::uint64_t n_folds              = 0;
     /**
-     * The error the surrogate states for a new point: the 95 % quantile of
-     * the cross-validation residuals' magnitudes. The leave-one-out error
-     * of the selected terms is optimistic (the terms were chosen to make
-     * it small), the refitted folds are not.
+     * The error the surrogate states for a new point: a split-conformal
+     * bound, the ceil((n + 1) 0.95)-th smallest of the n cross-validation
+     * residuals' magnitudes. A new point drawn like the fitted ones lies
+     * within it with probability at least 95 % whatever the residuals'
+     * distribution (their largest magnitude when n < 19).
      */
-    double        stated_error = 0.;
-    std::uint64_t n_folds      = 0;
+    double stated_error = 0.;
   };
 
   /**
-   * @brief A sparse polynomial chaos of @p outputs over @p inputs (OpenTURNS'
-   * FunctionalChaosAlgorithm): Hermite polynomials of the inputs' normal
-   * scores (the iso-probabilistic transformation of @p distribution, so a
-   * lognormal stiffness enters through its logarithm), terms chosen by
-   * LARS under the corrected leave-one-out error, of the total degree from
-   * 1 to @p max_degree whose @p n_folds-fold cross-validation error (points
-   * dealt to the folds in turn, every fold refitted) is smallest; that
-   * error is the surrogate's.
+   * @brief The surrogate of @p outputs over @p inputs with the smallest
+   * @p n_folds-fold cross-validation error (points dealt to the folds in
+   * turn, every fold refitted) among:
+   * - sparse polynomial chaos (OpenTURNS' FunctionalChaosAlgorithm) of
+   *   total degree 1 to @p max_chaos_degree: Hermite polynomials of the
+   *   inputs' normal scores (the iso-probabilistic transformation of
+   *   @p distribution, so a lognormal stiffness enters through its
+   *   logarithm), terms chosen by LARS under the corrected leave-one-out
+   *   error;
+   * - kriging (OpenTURNS' KrigingAlgorithm) in the same normal scores: a
+   *   linear trend and a Matern 5/2 covariance whose scales and amplitude
+   *   are fitted by maximum likelihood. It follows an output whose slope
+   *   changes abruptly (a governing corner that switches, a joint that
+   *   starts to slip), which a polynomial spreads over the whole space.
+   *
+   * That error is the surrogate's.
    * @throws std::invalid_argument if the samples' sizes or dimensions do
    *   not match @p distribution, or there are fewer points than inputs + 2.
    */
   Surrogate
-  fit_chaos_surrogate(const OT::Sample       &inputs,
-                      const OT::Sample       &outputs,
-                      const OT::Distribution &distribution,
-                      std::uint64_t           max_degree,
-                      std::uint64_t           n_folds = 10);
+  fit_surrogate(const OT::Sample       &inputs,
+                const OT::Sample       &outputs,
+                const OT::Distribution &distribution,
+                std::uint64_t           max_chaos_degree,
+                std::uint64_t           n_folds = 10);
 
   /** @brief How a surrogate predicts points it was not fitted on. */
   struct HeldOutErrors
