@@ -285,12 +285,15 @@ namespace FloorBlock::Assessment
         const CaseDraws draws =
           draws_of(fmt::format("refinement{}", round + 1),
                    draws_near_failure(result.surrogate, distribution, n_cases));
+        // The FEM's time is the FEM's cost, not the surrogate's.
+        surrogate_timer.stop();
         const CaseBatch refinement =
           solve_safety_cases(source,
                              draws,
                              Output::CaseStore(case_folder),
                              MPI_COMM_WORLD,
                              progress);
+        surrogate_timer.start();
         if (!refinement.complete)
           {
             incomplete.n_cases_done =
