@@ -215,10 +215,23 @@ namespace FloorBlock::Uncertainty
     const Candidate    *best = nullptr;
     std::vector<double> best_residuals;
     double              best_error = HUGE_VAL;
+    std::string         failures;
     for (const Candidate &candidate : candidates)
       {
-        const std::vector<double> residuals =
-          cross_validation_residuals(inputs, outputs, candidate.fit, folds);
+        // A candidate the points cannot carry (a kriging whose covariance
+        // matrix is singular, a chaos with more terms than points) drops
+        // out; the others compete.
+        std::vector<double> residuals;
+        try
+          {
+            residuals =
+              cross_validation_residuals(inputs, outputs, candidate.fit, folds);
+          }
+        catch (const std::exception &error)
+          {
+            failures += "\n  " + candidate.kind + ": " + error.what();
+            continue;
+          }
         const double error = root_mean_square(residuals);
         if (error < best_error)
           {
@@ -227,6 +240,9 @@ namespace FloorBlock::Uncertainty
             best           = &candidate;
           }
       }
+    if (best == nullptr)
+      throw std::runtime_error(
+        "uncertainty: no surrogate could be fitted to the points:" + failures);
     surrogate.model                = best->fit(inputs, outputs);
     surrogate.kind                 = best->kind;
     surrogate.chaos_degree         = best->chaos_degree;

@@ -51,9 +51,12 @@ namespace FloorBlock::Uncertainty
    *   changes abruptly (a governing corner that switches, a joint that
    *   starts to slip), which a polynomial spreads over the whole space.
    *
-   * That error is the surrogate's.
+   * That error is the surrogate's. A candidate whose fit throws on some
+   * fold drops out.
    * @throws std::invalid_argument if the samples' sizes or dimensions do
    *   not match @p distribution, or there are fewer points than inputs + 2.
+   * @throws std::runtime_error if no candidate can be fitted, naming why
+   *   each failed.
    */
   Surrogate
   fit_surrogate(const OT::Sample       &inputs,
