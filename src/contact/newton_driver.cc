@@ -77,8 +77,20 @@ namespace FloorBlock::Contact
             return report;
           }
         const bool set_stable = current.set_signature == previous.set_signature;
-        if (set_stable &&
-            report.relative_residual <= settings.relative_tolerance)
+        const bool within_tolerance =
+          report.relative_residual <= settings.relative_tolerance;
+        if (set_stable && within_tolerance)
+          {
+            report.converged = true;
+            return report;
+          }
+        // A set that still changes while the residual is down to what
+        // round-off alone produces: the pairs that change sit on a kink of
+        // their law (a stuck pair exactly on the Coulomb cone with zero
+        // slip rate), where both states give the same residual and
+        // round-off picks one. Iterating on only flips them back and forth.
+        if (!set_stable && within_tolerance && callbacks.round_off_floor &&
+            current.residual_norm <= callbacks.round_off_floor())
           {
             report.converged = true;
             return report;

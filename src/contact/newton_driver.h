@@ -16,7 +16,10 @@ namespace FloorBlock::Contact
      * Converged when the l2 norm of the condensed residual (N) is below
      * this fraction of the reference force (the larger of the applied
      * load norm and the first residual of the increment) and the
-     * open/stick/slip set did not change in the last step.
+     * open/stick/slip set did not change in the last step, or the set
+     * changed but the residual is also at its round-off floor: the pairs
+     * that change then sit on a kink of their law, where either state
+     * gives the same residual and round-off picks one.
      */
     double relative_tolerance = 1e-10;
     /** Newton iterations allowed per solve. */

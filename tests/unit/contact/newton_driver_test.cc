@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace
@@ -27,6 +28,12 @@ namespace
      */
     bool                inexact = false;
     std::vector<double> forcings; ///< as passed to solve_update
+    /**
+     * A pair on a kink of its law: its state, and so the set's signature,
+     * changes with every Newton step while the residual does not notice.
+     */
+    bool          flipping  = false;
+    std::uint64_t signature = 0;
 
     NewtonCallbacks
     callbacks()
@@ -35,11 +42,14 @@ namespace
       result.assemble = [this]() {
         NewtonIterate iterate;
         iterate.residual_norm = std::max(std::abs(slope * x - load), noise);
-        return iterate; // one contact set throughout: signature 0
+        iterate.set_signature = signature; // one set unless flipping
+        return iterate;
       };
       result.round_off_floor = [this]() { return floor; };
       result.solve_update    = [this](const double forcing, std::string &) {
         forcings.push_back(forcing);
+        if (flipping)
+          signature = 1 - signature;
         update = -(slope * x - load) / slope * (inexact ? 1. - forcing : 1.);
         base   = x;
         return true;
@@ -141,5 +151,34 @@ namespace
     // accurate to about 1e-8 relative.
     EXPECT_NEAR(problem.forcings[1], 0.5 * 1e-10 * load / 8e-8, 1e-8 * 5e-3);
     EXPECT_LE(report.relative_residual, 1e-10);
+  }
+} // namespace
+
+namespace
+{
+  TEST(NewtonDriver, SetThatFlipsAtTheRoundOffFloorConverges)
+  {
+    NoisyScalarProblem problem;
+    problem.flipping = true;
+    problem.noise    = 1e-12 * load; // within the tolerance
+    problem.floor    = 1e-12 * load; // and all that round-off allows
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
+    EXPECT_TRUE(report.converged);
+    EXPECT_EQ(report.n_iterations, 1u);
+  }
+
+  TEST(NewtonDriver, SetThatFlipsAboveTheRoundOffFloorDoesNotConverge)
+  {
+    // Within the tolerance but above round-off: the set's change is real
+    // and must settle first; flipping between two sets is cycling.
+    NoisyScalarProblem problem;
+    problem.flipping = true;
+    problem.noise    = 1e-12 * load;
+    problem.floor    = 1e-14 * load;
+    const NewtonReport report =
+      solve_newton(settings(), load, problem.callbacks());
+    EXPECT_FALSE(report.converged);
+    EXPECT_EQ(report.failure_reason, "active-set cycling");
   }
 } // namespace
