@@ -62,27 +62,6 @@ namespace FloorBlock::Assessment
       return distribution.getInverseIsoProbabilisticTransformation()(u);
     }
 
-    /**
-     * The solved cases' inputs and ln FS. The surrogate models ln FS: a
-     * safety factor is a ratio of strength to stress, which the rock's
-     * strength and the loads scale, so its logarithm is nearly linear in
-     * the logarithms of lognormal inputs (their normal scores) where FS
-     * itself bends; its error is then a factor on FS.
-     */
-    std::pair<OT::Sample, OT::Sample>
-    solved_samples(const std::vector<SafetyCase> &cases,
-                   const std::size_t              dimension)
-    {
-      OT::Sample x(0, dimension), y(0, 1);
-      for (const SafetyCase &c : cases)
-        if (c.solved())
-          {
-            x.add(OT::Point(c.inputs.begin(), c.inputs.end()));
-            y.add(OT::Point(1, std::log(c.safety_factor)));
-          }
-      return {x, y};
-    }
-
     /** FS = exp(ln FS + @p log_shift) from the surrogate of ln FS. */
     OT::Function
     safety_factor_of(const OT::Function &log_model, const double log_shift)
@@ -196,6 +175,20 @@ namespace FloorBlock::Assessment
       return chosen;
     }
   } // namespace
+
+  std::pair<OT::Sample, OT::Sample>
+  solved_samples(const std::vector<SafetyCase> &cases,
+                 const std::size_t              dimension)
+  {
+    OT::Sample x(0, dimension), y(0, 1);
+    for (const SafetyCase &c : cases)
+      if (c.solved())
+        {
+          x.add(OT::Point(c.inputs.begin(), c.inputs.end()));
+          y.add(OT::Point(1, std::log(c.safety_factor)));
+        }
+    return {x, y};
+  }
 
   OT::Distribution
   checked_input_distribution(const Parameters::ScenarioParameters &scene)

@@ -4,6 +4,7 @@
 
 #include <assessment/safety_cases.h>
 #include <openturns/Distribution.hxx>
+#include <openturns/Sample.hxx>
 #include <uncertainty/reliability.h>
 #include <uncertainty/sensitivity.h>
 #include <uncertainty/surrogate.h>
@@ -11,6 +12,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FloorBlock::Assessment
@@ -82,6 +84,17 @@ namespace FloorBlock::Assessment
     unsigned int n_cases_done  = 0;
     unsigned int n_cases_total = 0;
   };
+
+  /**
+   * @brief The solved cases' inputs (in their units) and ln FS, as the
+   * surrogate is fitted and checked on. The surrogate models ln FS: a
+   * safety factor is a ratio of strength to stress, which the rock's
+   * strength and the loads scale, so its logarithm is nearly linear in the
+   * logarithms of lognormal inputs (their normal scores) where FS itself
+   * bends; its error is then a factor on FS.
+   */
+  std::pair<OT::Sample, OT::Sample>
+  solved_samples(const std::vector<SafetyCase> &cases, std::size_t dimension);
 
   /**
    * @brief Checks the study's inputs without computing: the joint

@@ -1,8 +1,8 @@
 // The probability of floor failure of a scene (`floorblock assess`)
 // against brute-force Monte Carlo over the FEM alone, under MPI:
 //
-//   mpirun -np 2 build/tests/benchmark/floorblock_assess_benchmark \
-//     [scene.prm] [--brute-force N] [--output DIR]
+//   mpirun -np 2 build/tests/benchmark/floorblock_assess_benchmark [scene.prm]
+//     [--brute-force N] [--output DIR]
 //
 // 1. The study as `assess` runs it (FEM cases, surrogate, P(FS < 1), FORM,
 //    Sobol' indices), timed whole, with its cost by model.
@@ -143,19 +143,15 @@ main(int argc, char **argv)
                                        first ? std::cout : quiet);
       const double brute_force_seconds = brute_force_timer.wall_time();
       OT::Sample   failed(0, 1);
-      OT::Sample   solved_inputs(0, distribution.getDimension());
-      OT::Sample   solved_log_fs(0, 1);
       unsigned int n_without_fs = 0;
       for (const auto &c : fem.cases)
         if (c.solved())
-          {
-            failed.add(OT::Point(1, c.safety_factor < 1. ? 1. : 0.));
-            solved_inputs.add(OT::Point(c.inputs.begin(), c.inputs.end()));
-            solved_log_fs.add(OT::Point(1, std::log(c.safety_factor)));
-          }
+          failed.add(OT::Point(1, c.safety_factor < 1. ? 1. : 0.));
         else
           ++n_without_fs;
       // Every brute-force case is one more held-out case of the surrogate.
+      const auto [solved_inputs, solved_log_fs] =
+        Assessment::solved_samples(fem.cases, distribution.getDimension());
       const Uncertainty::HeldOutErrors on_brute_force =
         Uncertainty::held_out_errors(study.surrogate.model,
                                      solved_inputs,
