@@ -25,7 +25,10 @@ namespace FloorBlock::Parameters
         "degree 2's loop joins, and the two loops take turns, the one with "
         "less time spent solving next, until one meets the target "
         "(src/studies/degree_race.h). Both loops share Mesh/Refinement "
-        "time budget. "
+        "time budget. Where the joints act as exact contact (the rigid law, "
+        "or E/kn below Geometry/Corner rounding radius) degree 1 runs alone: "
+        "the displacement is not smooth where contact zones end, and degree "
+        "2 converges no faster there. "
         "Degree 2's solves are under <output>/fe_degree_2/. Every other "
         "command solves with degree 1 when auto (verify hertz: degree 1 at "
         "32 cells per half-width meets its tolerances in less time than "
@@ -168,7 +171,9 @@ namespace FloorBlock::Parameters
     prm.enter_subsection("Solver");
     const std::string degree  = prm.get("FE degree");
     choose_fe_degree          = degree == "auto";
-    fe_degree                 = choose_fe_degree ? 1 : selected_count(degree, "Solver/FE degree", "auto, 1 or 2");
+    fe_degree                 = choose_fe_degree ?
+                                  1 :
+                                  selected_count(degree, "Solver/FE degree", "auto, 1 or 2");
     n_gravity_steps           = prm.get_integer("Gravity steps");
     gravity_with_support_load = prm.get_bool("Gravity with support load");
     n_support_steps           = prm.get_integer("Support load steps");

@@ -71,7 +71,7 @@ namespace FloorBlock::Scene
             std::upper_bound(profile.begin(),
                              profile.end(),
                              s,
-                             [](const double value,
+                             [](const double                    value,
                                 const Contact::JointNodeSample &node) {
                                return value < node.arc_position;
                              });
@@ -79,14 +79,15 @@ namespace FloorBlock::Scene
             after = std::prev(profile.end());
           if (after == profile.begin())
             after = std::next(profile.begin());
-          const auto  &a = *std::prev(after);
-          const auto  &b = *after;
+          const auto  &a    = *std::prev(after);
+          const auto  &b    = *after;
           const double span = b.arc_position - a.arc_position;
           const double t =
             span > 0. ? std::clamp((s - a.arc_position) / span, 0., 1.) : 0.;
-          sizes.push_back({{a.position[0] + t * (b.position[0] - a.position[0]),
-                            a.position[1] + t * (b.position[1] - a.position[1])},
-                           size});
+          sizes.push_back(
+            {{a.position[0] + t * (b.position[0] - a.position[0]),
+              a.position[1] + t * (b.position[1] - a.position[1])},
+             size});
         }
     }
   } // namespace
@@ -133,8 +134,7 @@ namespace FloorBlock::Scene
   }
 
   std::string
-  describe(const ContactZoneSizing &sizing,
-           const unsigned int       cells_per_length)
+  describe(const ContactZoneSizing &sizing, const unsigned int cells_per_length)
   {
     const auto sized = [&](const char *from) {
       return fmt::format("contact zones sized from {}: c = {:.1f} mm, "
@@ -177,7 +177,7 @@ namespace FloorBlock::Scene
                              *contact_length,
                              {},
                              {}};
-    const double size =
+    const double      size =
       std::max(*contact_length / n_cells, scene.mesh.corner_size);
     const double reach = contact_zone_reach * *contact_length;
 
@@ -218,13 +218,14 @@ namespace FloorBlock::Scene
         const auto is_closed = [](const Contact::JointNodeSample &node) {
           return node.state != Contact::JointState::open;
         };
-        const auto first = std::find_if(profile.begin(), profile.end(), is_closed);
+        const auto first =
+          std::find_if(profile.begin(), profile.end(), is_closed);
         const auto last =
           std::find_if(profile.rbegin(), profile.rend(), is_closed);
         if (first == profile.end())
           continue;
-        const double c    = joint.closed_length;
-        const double size = std::max(c / n_cells, scene.mesh.corner_size);
+        const double c      = joint.closed_length;
+        const double size   = std::max(c / n_cells, scene.mesh.corner_size);
         const double margin = (contact_zone_reach - 1.) * c;
         add_profile_points(profile,
                            first->arc_position - margin,
@@ -251,13 +252,20 @@ namespace FloorBlock::Scene
     return scene.material.youngs_modulus() / scene.joints.normal_stiffness;
   }
 
+  bool
+  contact_is_exact(const Parameters::ScenarioParameters &scene)
+  {
+    const double length = joint_compliance_length(scene);
+    return length == 0. || length < scene.geometry.corner_rounding_radius;
+  }
+
   unsigned int
   global_refinements(const Parameters::ScenarioParameters &scene)
   {
     if (scene.mesh.global_refinements)
       return *scene.mesh.global_refinements;
     const double radius = scene.geometry.corner_rounding_radius;
-    if (radius <= 0. || joint_compliance_length(scene) >= radius)
+    if (radius <= 0. || !contact_is_exact(scene))
       return 0;
     unsigned int n_halvings = 0;
     // 1e-9 relative: a corner size of exactly 2 r takes one halving.
@@ -278,11 +286,11 @@ namespace FloorBlock::Scene
     if (n_cells == 0 || scene.geometry.dimension == 3)
       return {};
     const double L    = scene.strength.critical_distance;
-    const double size = std::max(
-      L / n_cells,
-      Geometry::min_relative_local_size *
-        std::min(scene.geometry.block_width, scene.geometry.block_height));
-    const double r = scene.geometry.corner_rounding_radius;
+    const double size = std::max(L / n_cells,
+                                 Geometry::min_relative_local_size *
+                                   std::min(scene.geometry.block_width,
+                                            scene.geometry.block_height));
+    const double r    = scene.geometry.corner_rounding_radius;
 
     const Geometry::AssemblyOutline outline =
       Geometry::build_outline(assembly_description(scene));
@@ -299,8 +307,7 @@ namespace FloorBlock::Scene
         const Geometry::Point2 corner{upper.x, upper.y + r};
         for (const double direction : {+1., -1.})
           add_zone_points(corner,
-                          {corner.x + direction * 2. * L,
-                           corner.y - 2. * L},
+                          {corner.x + direction * 2. * L, corner.y - 2. * L},
                           critical_distance_reach * L + r,
                           size,
                           sizes);

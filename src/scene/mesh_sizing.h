@@ -26,6 +26,16 @@ namespace FloorBlock::Scene
   joint_compliance_length(const Parameters::ScenarioParameters &scene);
 
   /**
+   * @brief Whether the joints act as exact contact at the block corners:
+   * the rigid law, or springs whose compliance length E/kn is below the
+   * corner rounding radius. Then only the corner's own shape limits the
+   * contact pressure, and the displacement is not smooth at the corners
+   * and at the ends of the contact zones.
+   */
+  bool
+  contact_is_exact(const Parameters::ScenarioParameters &scene);
+
+  /**
    * @brief How many times the Gmsh mesh of @p scene is refined globally:
    * Mesh/Global refinements, or for "auto" the rule below.
    *
@@ -85,7 +95,7 @@ namespace FloorBlock::Scene
      * shortest the first solve computed; 0 without sizes. */
     double contact_length = 0.;
     /** Why there are no sizes (source none), in words. */
-    std::string reason;
+    std::string                      reason;
     std::vector<Geometry::LocalSize> sizes;
   };
 
@@ -135,7 +145,7 @@ namespace FloorBlock::Scene
    * no vertical joint is closed.
    */
   ContactZoneSizing
-  computed_contact_zones(const Parameters::ScenarioParameters   &scene,
+  computed_contact_zones(const Parameters::ScenarioParameters    &scene,
                          const std::vector<Contact::JointReport> &joints);
 
   /** How far along each corner's bisector the critical-distance cells

@@ -25,6 +25,25 @@ TEST(JointComplianceLength, IsYoungsModulusOverNormalStiffness)
   EXPECT_EQ(Scene::joint_compliance_length(scene), 0.);
 }
 
+// The rigid law always; springs only while E/kn (1.79 m at kn = 9e9 Pa/m,
+// 16.1 mm at 1e12, 0.16 mm at 1e14) is below the 10 mm fillet.
+TEST(ContactIsExact, RigidLawOrSpringsStifferThanTheFillet)
+{
+  auto scene = default_scene();
+  EXPECT_FALSE(Scene::contact_is_exact(scene));
+  scene.joints.normal_stiffness = 1e12;
+  EXPECT_FALSE(Scene::contact_is_exact(scene));
+  scene.joints.normal_stiffness = 1e14;
+  EXPECT_TRUE(Scene::contact_is_exact(scene));
+  scene.joints.normal_stiffness         = 9e9;
+  scene.geometry.corner_rounding_radius = 0.;
+  EXPECT_FALSE(Scene::contact_is_exact(scene));
+  scene.joints.law = Contact::JointLawKind::rigid;
+  EXPECT_TRUE(Scene::contact_is_exact(scene));
+  scene.geometry.corner_rounding_radius = 0.01;
+  EXPECT_TRUE(Scene::contact_is_exact(scene));
+}
+
 TEST(GlobalRefinements, AutoKeepsTheGmshMeshForCompliantJoints)
 {
   EXPECT_EQ(Scene::global_refinements(default_scene()), 0u);
