@@ -4,9 +4,41 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace FloorBlock::Contact
 {
+  namespace
+  {
+    /**
+     * Sets the entries of @p source in @p target, whose pattern holds
+     * them, one row at a time. Entry by entry through deal.II's matrix
+     * iterators (an Epetra row lookup and a one-entry insert each) took
+     * 27 s for the stiffness of 247k DoFs; row by row takes well under a
+     * second.
+     */
+    void
+    copy_rows(const dealii::TrilinosWrappers::SparseMatrix &source,
+              dealii::TrilinosWrappers::SparseMatrix       &target)
+    {
+      const Epetra_CrsMatrix &entries = source.trilinos_matrix();
+      std::vector<dealii::types::global_dof_index> columns;
+      for (int row = 0; row < entries.NumMyRows(); ++row)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          int    *indices   = nullptr;
+          entries.ExtractMyRowView(row, n_entries, values, indices);
+          columns.resize(n_entries);
+          for (int k = 0; k < n_entries; ++k)
+            columns[k] = entries.GCID64(indices[k]);
+          target.set(
+            entries.GRID64(row), n_entries, columns.data(), values, false);
+        }
+      target.compress(dealii::VectorOperation::insert);
+    }
+  } // namespace
+
   template <int dim>
   ExactFormulation<dim>::ExactFormulation(
     const ContactSystem<dim>                         &system,
@@ -41,10 +73,7 @@ namespace FloorBlock::Contact
     // at every Newton iteration before the equations of the pairs are
     // added.
     base_matrix.reinit(system_pattern);
-    const auto &stiffness = system.bulk.condensed_stiffness();
-    for (auto entry = stiffness.begin(); entry != stiffness.end(); ++entry)
-      base_matrix.set(entry->row(), entry->column(), entry->value());
-    base_matrix.compress(dealii::VectorOperation::insert);
+    copy_rows(system.bulk.condensed_stiffness(), base_matrix);
     exact->add_force_block(base_matrix);
     matrix.reinit(system_pattern);
     system_residual.reinit(all, communicator);
