@@ -200,8 +200,8 @@ namespace FloorBlock::Studies
       }
     // With exact contact the displacement is not smooth where a contact
     // zone ends and at the corners, so degree 2 converges no faster per
-    // DoF than degree 1 there, and each of its checks costs what degree
-    // 1's next check does. On the default scene with the rigid law degree
+    // DoF than degree 1 there, and each of its checks has four times the
+    // DoFs of degree 1's. On the default scene with the rigid law degree
     // 2's loop takes two thirds of a race's time and does not meet the
     // target (results/FINDINGS.md, section 7).
     if (scene.solver.choose_fe_degree && !Scene::contact_is_exact(scene))
