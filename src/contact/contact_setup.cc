@@ -163,29 +163,44 @@ namespace FloorBlock::Contact
 
   template <int dim>
   std::string
-  stiffness_hint(const Fem::FeSpace<dim>   &fe_space,
-                 const ContactProblem<dim> &problem)
+  stiffness_hint(const Fem::FeSpace<dim>             &fe_space,
+                 const ContactProblem<dim>           &problem,
+                 const std::vector<ContactNode<dim>> &nodes)
   {
     // Compliant joints much stiffer than the cells they join make the
     // Newton matrix ill-conditioned and the contact set flip (bug 3 of
     // tests/scenarios/HARD_CASES.md: kn h / E = 9 cycles, 0.9 converges);
-    // a failure then names the remedy.
-    const double smallest_cell =
-      smallest_in_plane_cell(fe_space.dof_handler().get_triangulation());
-    double stiffest = 0.;
-    for (const auto &joint : problem.joints)
-      if (joint.law == JointLawKind::compliant)
-        stiffest = std::max({stiffest,
-                             joint.parameters.normal_stiffness,
-                             joint.parameters.shear_stiffness});
-    const double ratio =
-      stiffest * smallest_cell / largest_youngs_modulus(problem);
+    // a failure then names the remedy. The worst pair is the one whose
+    // spring kn w is largest against the bulk's E: the longest pair along
+    // its joint, not the smallest cell of the mesh, which a refined corner
+    // (the critical-distance paths, a fillet) makes tiny while the
+    // joint's other cells stay long.
+    const std::vector<double> lengths =
+      weights_along_joint(nodes,
+                          problem.joints.size(),
+                          face_length_of(
+                            fe_space.dof_handler().get_triangulation()));
+    double ratio = 0., longest = 0.;
+    for (unsigned int p = 0; p < nodes.size(); ++p)
+      {
+        const JointDefinition<dim> &joint = problem.joints[nodes[p].joint];
+        if (joint.law != JointLawKind::compliant)
+          continue;
+        const double stiffness = std::max(joint.parameters.normal_stiffness,
+                                          joint.parameters.shear_stiffness);
+        if (stiffness * lengths[p] > ratio)
+          {
+            ratio   = stiffness * lengths[p];
+            longest = lengths[p];
+          }
+      }
+    ratio /= largest_youngs_modulus(problem);
     if (!(ratio > ill_conditioned_joint_ratio))
       return "";
     std::ostringstream hint;
     hint << "; note: the compliant joints are stiff against the "
             "blocks (kn h / E = "
-         << ratio << " with h the smallest cell, " << smallest_cell
+         << ratio << " with h the longest pair along a joint, " << longest
          << " m): use Joints/Law = rigid for joints this stiff";
     return hint.str();
   }
@@ -240,22 +255,23 @@ namespace FloorBlock::Contact
       }
   }
 
-#define FLOORBLOCK_INSTANTIATE(dim)                                            \
-  template std::vector<ContactNode<dim>> pair_all_joints(                      \
-    const Fem::FeSpace<dim> &, const ContactProblem<dim> &);                   \
-  template struct PairLaws<dim>;                                               \
-  template PairLaws<dim> make_pair_laws(const Fem::FeSpace<dim> &,             \
-                                        const ContactProblem<dim> &,           \
-                                        const std::vector<ContactNode<dim>> &, \
-                                        const dealii::IndexSet &,              \
-                                        const double);                         \
-  template std::string   stiffness_hint(const Fem::FeSpace<dim> &,             \
-                                        const ContactProblem<dim> &);          \
-  template std::vector<Fem::DirichletCondition<dim>> support_conditions(       \
-    const ContactProblem<dim> &, const std::optional<double>);                 \
-  template std::vector<JointState> states_of(                                  \
-    const std::vector<JointResponse<dim>> &);                                  \
-  template void commit_histories(const std::vector<JointResponse<dim>> &,      \
+#define FLOORBLOCK_INSTANTIATE(dim)                                             \
+  template std::vector<ContactNode<dim>> pair_all_joints(                       \
+    const Fem::FeSpace<dim> &, const ContactProblem<dim> &);                    \
+  template struct PairLaws<dim>;                                                \
+  template PairLaws<dim> make_pair_laws(const Fem::FeSpace<dim> &,              \
+                                        const ContactProblem<dim> &,            \
+                                        const std::vector<ContactNode<dim>> &,  \
+                                        const dealii::IndexSet &,               \
+                                        const double);                          \
+  template std::string   stiffness_hint(const Fem::FeSpace<dim> &,              \
+                                        const ContactProblem<dim> &,            \
+                                        const std::vector<ContactNode<dim>> &); \
+  template std::vector<Fem::DirichletCondition<dim>> support_conditions(        \
+    const ContactProblem<dim> &, const std::optional<double>);                  \
+  template std::vector<JointState> states_of(                                   \
+    const std::vector<JointResponse<dim>> &);                                   \
+  template void commit_histories(const std::vector<JointResponse<dim>> &,       \
                                  std::vector<JointHistory<dim>> &);
   FLOORBLOCK_INSTANTIATE(2)
   FLOORBLOCK_INSTANTIATE(3)

@@ -68,12 +68,15 @@ namespace FloorBlock::Contact
 
   /**
    * @brief What a failure message adds when the compliant joints are
-   * much stiffer than the cells they join (empty otherwise).
+   * much stiffer than the cells they join (empty otherwise): kn w / E
+   * above 3 for a compliant pair of @p nodes, w its length along its
+   * joint (weights_along_joint) and E the largest Young's modulus.
    */
   template <int dim>
   std::string
-  stiffness_hint(const Fem::FeSpace<dim>   &fe_space,
-                 const ContactProblem<dim> &problem);
+  stiffness_hint(const Fem::FeSpace<dim>             &fe_space,
+                 const ContactProblem<dim>           &problem,
+                 const std::vector<ContactNode<dim>> &nodes);
 
   /**
    * @brief The supports' Dirichlet conditions: zero, or with

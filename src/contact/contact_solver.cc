@@ -54,7 +54,7 @@ namespace FloorBlock::Contact
               << std::endl;
     committed_history.assign(nodes.size(), JointHistory<dim>());
     working_history = committed_history;
-    stiffness_hint  = Contact::stiffness_hint(fe_space, problem);
+    stiffness_hint  = Contact::stiffness_hint(fe_space, problem, nodes);
     readable_dofs   = fe_space.locally_relevant_dofs();
     readable_dofs.add_indices(
       pair_dofs(nodes, fe_space.dof_handler().n_dofs()));

@@ -622,6 +622,31 @@ TEST(HardCases, VeryStiffJoints)
   expect_honest_failure_counters(read_json(outcome.folder + "/fem.json"));
 }
 
+// The remedy is named however fine a corner is meshed: the ill-conditioning
+// is that of the joint's long cells (kn w / E), which a refined corner
+// (critical-distance paths of L/64: cells below half a millimetre, where
+// kn h / E < 3) does not shorten.
+// Sized by the mesh's smallest cell instead, kn h / E fell below the
+// threshold and the failure named nothing.
+TEST(HardCases, VeryStiffJointsNameTheRemedyWithAFinelyMeshedCorner)
+{
+  const std::string folder = fresh_output_folder("hard_stiff_fine_corner");
+  const auto        result = run_floorblock(
+    "solve tests/scenarios/hard_stiff_joints.prm --set \"Mesh/Cells per "
+           "critical distance=64\" --output " +
+    shell_quoted(folder));
+  ASSERT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("with h the longest pair along a joint"),
+            std::string::npos)
+    << result.output;
+  EXPECT_NE(result.output.find("use Joints/Law = rigid"), std::string::npos)
+    << result.output;
+  const json fem = read_json(folder + "/fem.json");
+  EXPECT_NE(fem["status_text"].get<std::string>().find(
+              "use Joints/Law = rigid"),
+            std::string::npos);
+}
+
 // The tool shall solve the scene with rigid joints.
 TEST(HardCases, RigidJointLaw)
 {
